@@ -1,0 +1,20 @@
+#pragma once
+// Every engine the harness knows: our own solvers and the adapters. Adding an engine is one folder
+// under adapters/ and one line in registry.cpp.
+#include <string>
+#include <vector>
+
+#include "engine.h"
+
+namespace ballbench {
+
+const std::vector<EngineEntry>& engine_registry();
+
+// By name; throws InputError naming the known engines.
+const EngineEntry& find_engine(const std::string& name);
+
+// "home,box2d" or "all" -> entries, in the order given; throws InputError for an unknown name or
+// a name given twice.
+std::vector<const EngineEntry*> parse_engine_list(const std::string& list);
+
+}  // namespace ballbench

@@ -1,0 +1,20 @@
+#include "engine.h"
+
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace ballbench {
+
+std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
+  const SceneFeatures f = scene.features();
+  std::vector<std::string> missing;
+  if (!f.walls && !info.caps.open_space) missing.push_back("open space (no container)");
+  if (f.gravity && !info.caps.gravity) missing.push_back("gravity");
+  if (!f.equal_radii && !info.caps.per_ball_radius) missing.push_back("balls of different radii");
+  if (!f.equal_masses && !info.caps.per_ball_mass) missing.push_back("balls of different masses");
+  if (missing.empty()) return "";
+  return fmt::format("{} cannot run scene '{}': it needs {}", info.name, scene.name, fmt::join(missing, ", "));
+}
+
+}  // namespace ballbench

@@ -1,0 +1,60 @@
+#pragma once
+// The one door between the harness and a solver: our own solvers and every adapter implement it.
+// An engine never reports metrics; the harness computes them from the states it reads back.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "scene.h"
+#include "state.h"
+
+namespace ballbench {
+
+// What an engine can simulate faithfully. The runner refuses, with the reason, a scene that needs
+// something the engine lacks.
+struct Capabilities {
+  bool open_space = true;          // no container
+  bool gravity = true;
+  bool per_ball_radius = true;     // radii may differ
+  bool per_ball_mass = true;       // masses may differ
+  bool any_restitution = true;     // restitution honoured at any impact speed (no threshold)
+  bool continuous_collision = false;  // fast balls cannot pass through walls or balls
+  bool deterministic = true;       // same build, scene and settings -> same trajectory
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  // Advances the world by dt seconds.
+  virtual void step(double dt) = 0;
+  // Writes positions and velocities (double, in scene order) and the engine's time into `out`.
+  virtual void read(State& out) const = 0;
+  // The effective settings, every knob with the value in force (defaults included).
+  virtual nlohmann::json settings() const = 0;
+};
+
+struct EngineInfo {
+  std::string name;        // as typed on the command line: "home", "box2d"
+  std::string version;     // of the engine library or our solver
+  std::string summary;     // one line for `ballbench list`
+  Capabilities caps;
+  std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
+};
+
+// Builds an engine for a scene. `settings` is a JSON object of overrides (from the scene's
+// [settings.NAME] table and --set); an unknown key or bad value throws InputError.
+using EngineFactory =
+    std::function<std::unique_ptr<Engine>(const Scene&, const std::string& profile, const nlohmann::json& settings)>;
+
+struct EngineEntry {
+  EngineInfo info;
+  EngineFactory create;
+};
+
+// Why `info` cannot run `scene` faithfully, or "" if it can.
+std::string unsupported_reason(const EngineInfo& info, const Scene& scene);
+
+}  // namespace ballbench

@@ -1,0 +1,63 @@
+#include "engine_settings.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+
+SettingsReader::SettingsReader(std::string engine, const nlohmann::json& overrides)
+    : engine_(std::move(engine)), overrides_(overrides.is_null() ? nlohmann::json::object() : overrides) {}
+
+void SettingsReader::fail(const std::string& key, const std::string& why) const {
+  throw InputError(fmt::format("settings.{}.{}: {}", engine_, key, why));
+}
+
+const nlohmann::json* SettingsReader::find(const char* key) {
+  known_.emplace_back(key);
+  const auto it = overrides_.find(key);
+  return it == overrides_.end() ? nullptr : &*it;
+}
+
+void SettingsReader::get(const char* key, double& value) {
+  if (const auto* v = find(key)) {
+    if (!v->is_number()) fail(key, fmt::format("expected a number, got {}", v->dump()));
+    value = v->get<double>();
+    if (!std::isfinite(value)) fail(key, "must be finite");
+  }
+}
+
+void SettingsReader::get(const char* key, int& value) {
+  if (const auto* v = find(key)) {
+    if (!v->is_number_integer()) fail(key, fmt::format("expected a whole number, got {}", v->dump()));
+    value = v->get<int>();
+  }
+}
+
+void SettingsReader::get(const char* key, bool& value) {
+  if (const auto* v = find(key)) {
+    if (!v->is_boolean()) fail(key, fmt::format("expected true or false, got {}", v->dump()));
+    value = v->get<bool>();
+  }
+}
+
+void SettingsReader::get(const char* key, std::string& value, std::initializer_list<const char*> choices) {
+  if (const auto* v = find(key)) {
+    if (!v->is_string()) fail(key, fmt::format("expected a string, got {}", v->dump()));
+    const std::string s = v->get<std::string>();
+    if (std::none_of(choices.begin(), choices.end(), [&](const char* c) { return s == c; }))
+      fail(key, fmt::format("'{}' is not one of: {}", s, fmt::join(choices, ", ")));
+    value = s;
+  }
+}
+
+void SettingsReader::finish() const {
+  for (const auto& [k, v] : overrides_.items())
+    if (std::find(known_.begin(), known_.end(), k) == known_.end())
+      fail(k, fmt::format("unknown setting{} (known: {})", did_you_mean(k, known_), fmt::join(known_, ", ")));
+}
+
+}  // namespace ballbench

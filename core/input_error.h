@@ -1,0 +1,29 @@
+#pragma once
+// An error in what the user gave us (a scene file, a flag, an engine name). The CLI prints its
+// message as one line and exits non-zero; library code never exits on its own.
+#include <stdexcept>
+#include <string>
+
+namespace ballbench {
+
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Levenshtein distance, for "did you mean" hints on unknown names.
+int edit_distance(const std::string& a, const std::string& b);
+
+// ", did you mean 'x'?" for the closest candidate within a small distance, or "".
+template <class Range>
+std::string did_you_mean(const std::string& word, const Range& candidates) {
+  std::string best;
+  int best_d = 3;  // more than two edits away is not a typo
+  for (const auto& c : candidates) {
+    const int d = edit_distance(word, std::string(c));
+    if (d < best_d) best_d = d, best = std::string(c);
+  }
+  return best.empty() ? std::string() : ", did you mean '" + best + "'?";
+}
+
+}  // namespace ballbench

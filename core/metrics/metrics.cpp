@@ -1,0 +1,70 @@
+#include "metrics/metrics.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "metrics/energy.h"
+#include "metrics/momentum.h"
+#include "metrics/tunnelling.h"
+
+namespace ballbench {
+
+MetricsAccumulator::MetricsAccumulator(const Scene& scene, MetricsConfig config)
+    : scene_(scene), cfg_(config), sticking_(scene.n(), config.stuck_samples), deep_in_wall_(scene.n(), 0) {
+  m_.energy.reference = energy_reference(scene);
+}
+
+void MetricsAccumulator::observe(const State& s) {
+  const double e = total_energy(s, scene_, m_.energy.reference);
+  const Eigen::Vector2d p = total_momentum(s, scene_.mass);
+  if (m_.samples == 0) {
+    m_.energy.initial = e;
+    m_.momentum.initial = p;
+    ke0_ = kinetic_energy(s, scene_.mass);
+  } else {
+    m_.tunnelling_wall += wall_escapes(prev_, s, scene_.container);
+    m_.tunnelling_pair += pair_passthroughs(prev_, s, scene_.radius, cfg_.contact_tolerance, grid_);
+  }
+  m_.energy.final = e;
+  m_.energy.max_abs_drift = std::max(m_.energy.max_abs_drift, std::abs(e - m_.energy.initial));
+  if (m_.energy.initial > 0) m_.energy.max_rel_drift = m_.energy.max_abs_drift / m_.energy.initial;
+  m_.momentum.final = p;
+  m_.momentum.max_abs_drift = std::max(m_.momentum.max_abs_drift, (p - m_.momentum.initial).norm());
+
+  // Overlaps: penetration (every depth) and sticking (deeper than the tolerance).
+  overlapping_pairs(s.pos, scene_.radius, grid_, overlaps_);
+  deep_.clear();
+  for (const Overlap& o : overlaps_) {
+    const double rel = o.depth / std::min(scene_.radius(o.i), scene_.radius(o.j));
+    penetration_sum_ += rel, ++penetration_count_;
+    m_.penetration_max = std::max(m_.penetration_max, rel);
+    if (o.depth > cfg_.contact_tolerance * (scene_.radius(o.i) + scene_.radius(o.j))) deep_.push_back(o);
+  }
+  if (scene_.container.kind == ContainerKind::Box) {
+    const Container& box = scene_.container;
+    for (int i = 0; i < s.n(); ++i) {
+      const double r = scene_.radius(i);
+      const double gap = std::min({s.pos(i, 0) - box.min.x(), box.max.x() - s.pos(i, 0), s.pos(i, 1) - box.min.y(),
+                                   box.max.y() - s.pos(i, 1)});
+      const double depth = r - gap;  // > 0: the ball is in a wall
+      if (depth > 0) {
+        penetration_sum_ += depth / r, ++penetration_count_;
+        m_.penetration_max = std::max(m_.penetration_max, depth / r);
+      }
+      deep_in_wall_[i] = depth > cfg_.contact_tolerance * r;
+    }
+  }
+  sticking_.observe(deep_, deep_in_wall_);
+  m_.sticking_pair = sticking_.pair_events();
+  m_.sticking_wall = sticking_.wall_events();
+  m_.penetration_mean = penetration_count_ ? penetration_sum_ / penetration_count_ : 0.0;
+  ++m_.samples;
+  prev_ = s;
+}
+
+bool MetricsAccumulator::energy_blew_up() const {
+  const double base = m_.energy.initial + ke0_;  // zero only for a scene with nothing moving or falling
+  return base > 0 && m_.energy.final > cfg_.divergence_energy_factor * base;
+}
+
+}  // namespace ballbench

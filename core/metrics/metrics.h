@@ -1,0 +1,76 @@
+#pragma once
+// Streams state samples through every metric. Engine-agnostic: it sees states and the scene only.
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "metrics/sticking.h"
+#include "overlap.h"
+#include "scene.h"
+#include "state.h"
+#include "uniform_grid.h"
+
+namespace ballbench {
+
+struct MetricsConfig {
+  /// Overlap deeper than this fraction of the radius sum (pairs) or of the radius (walls) counts as
+  /// "in contact" for sticking, and a straight-line pass closer than (1 - this) of the radius sum
+  /// counts as tunnelling. 2% sits above the rest penetration soft engines allow by design (Box2D's
+  /// linear slop, 0.005 m, is 1% of the seed scenes' radius sum of 0.5 m). (dimensionless)
+  double contact_tolerance = 0.02;
+  /// Consecutive samples a contact may stay deeper than the tolerance before it counts as stuck. A
+  /// bounce resolves within one or two steps; 10 steps of 0.01 s is already visibly stuck. (samples)
+  int stuck_samples = 10;
+  /// Energy above this multiple of the initial energy (plus the initial kinetic energy scale) means
+  /// the run has blown up: it is stopped and marked diverged. (dimensionless)
+  double divergence_energy_factor = 100.0;
+};
+
+struct EnergySummary {
+  double initial = 0, final = 0;
+  std::optional<double> max_rel_drift;  // max |E - E0| / E0 over samples; none when E0 = 0
+  double max_abs_drift = 0;             // max |E - E0| (J)
+  double reference = 0;                 // -g . x_ref (J/kg), see metrics/energy.h
+};
+
+struct MomentumSummary {
+  Eigen::Vector2d initial{0, 0}, final{0, 0};
+  double max_abs_drift = 0;  // max |P - P0| over samples (kg m/s)
+};
+
+struct MetricsSummary {
+  EnergySummary energy;
+  MomentumSummary momentum;
+  int tunnelling_wall = 0, tunnelling_pair = 0;
+  int sticking_wall = 0, sticking_pair = 0;
+  double penetration_max = 0;   // max overlap depth / radius (pairs: the smaller radius)
+  double penetration_mean = 0;  // mean of the same over every overlapping contact in every sample
+  long samples = 0;
+};
+
+class MetricsAccumulator {
+ public:
+  MetricsAccumulator(const Scene& scene, MetricsConfig config);
+
+  // Feeds one sample; the first one is the initial state.
+  void observe(const State& s);
+  // The energy of the last sample exceeded the divergence bound.
+  bool energy_blew_up() const;
+  const MetricsSummary& summary() const { return m_; }
+
+ private:
+  const Scene& scene_;
+  MetricsConfig cfg_;
+  MetricsSummary m_;
+  State prev_;
+  StickingTracker sticking_;
+  UniformGrid grid_;
+  std::vector<Overlap> overlaps_, deep_;
+  std::vector<char> deep_in_wall_;
+  double penetration_sum_ = 0;
+  long penetration_count_ = 0;
+  double ke0_ = 0;
+};
+
+}  // namespace ballbench

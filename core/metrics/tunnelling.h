@@ -1,0 +1,29 @@
+#pragma once
+// Tunnelling, judged from two consecutive samples only (no engine's word is taken).
+#include <Eigen/Core>
+
+#include "scene.h"
+#include "state.h"
+#include "uniform_grid.h"
+
+namespace ballbench {
+
+// Balls whose centre is inside the box (boundary included) in `prev` and beyond a wall in `cur`:
+// one event per escape. 0 in open space.
+int wall_escapes(const State& prev, const State& cur, const Container& box);
+
+// Is a centre strictly outside the box?
+bool beyond_wall(const Eigen::Vector2d& p, const Container& box);
+
+// Pairs apart in both samples (distance >= r_i + r_j) whose relative motion, taken as a straight
+// line between the samples, came closer than (1 - tolerance) (r_i + r_j): they passed through each
+// other. A resolved bounce never counts: both samples then lie on the outer side of the tangent at
+// the contact point, and so does the line between them. `tolerance` absorbs the rounding of soft
+// contacts that bend the straight line slightly (see MetricsConfig).
+int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
+                      UniformGrid& grid);
+
+// Closest approach over s in [0, 1] of d0 + s (d1 - d0), the relative position moving linearly.
+double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1);
+
+}  // namespace ballbench

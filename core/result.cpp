@@ -1,0 +1,135 @@
+#include "result.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+nlohmann::json vec(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
+Eigen::Vector2d vec(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+
+}  // namespace
+
+nlohmann::json to_json(const Result& r) {
+  const MetricsSummary& m = r.metrics;
+  nlohmann::json j;
+  j["engine"] = r.engine;
+  j["engine_version"] = r.engine_version;
+  j["profile"] = r.profile;
+  j["scene"] = r.scene;
+  j["scene_source"] = r.scene_source;
+  j["n"] = r.n;
+  j["dt"] = r.dt;
+  j["steps"] = r.steps;
+  j["steps_done"] = r.steps_done;
+  j["status"] = r.status;
+  j["error"] = r.error;
+  j["diverged"] = r.diverged;
+  j["diverged_step"] = r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr);
+  j["wall_s"] = r.wall_s;
+  j["ns_per_step"] = r.ns_per_step;
+  j["ns_per_ball_step"] = r.ns_per_ball_step;
+  j["harness_s"] = r.harness_s;
+  j["sample_every"] = r.sample_every;
+  j["samples"] = m.samples;
+  j["energy"] = {{"initial", m.energy.initial},
+                 {"final", m.energy.final},
+                 {"max_rel_drift", m.energy.max_rel_drift ? nlohmann::json(*m.energy.max_rel_drift) : nlohmann::json(nullptr)},
+                 {"max_abs_drift", m.energy.max_abs_drift},
+                 {"reference", m.energy.reference}};
+  j["momentum"] = {{"initial", vec(m.momentum.initial)}, {"final", vec(m.momentum.final)},
+                   {"max_abs_drift", m.momentum.max_abs_drift}};
+  j["tunnelling"] = {{"wall", m.tunnelling_wall}, {"pair", m.tunnelling_pair}};
+  j["sticking"] = {{"wall", m.sticking_wall}, {"pair", m.sticking_pair}};
+  j["penetration"] = {{"max", m.penetration_max}, {"mean", m.penetration_mean}};
+  j["metrics_config"] = {{"contact_tolerance", r.metrics_config.contact_tolerance},
+                         {"stuck_samples", r.metrics_config.stuck_samples},
+                         {"divergence_energy_factor", r.metrics_config.divergence_energy_factor}};
+  j["settings"] = r.settings;
+  return j;
+}
+
+Result result_from_json(const nlohmann::json& j) {
+  Result r;
+  r.engine = j.at("engine");
+  r.engine_version = j.at("engine_version");
+  r.profile = j.value("profile", "");
+  r.scene = j.at("scene");
+  r.scene_source = j.value("scene_source", "");
+  r.n = j.at("n");
+  r.dt = j.at("dt");
+  r.steps = j.at("steps");
+  r.steps_done = j.value("steps_done", r.steps);
+  r.status = j.value("status", "ok");
+  r.error = j.value("error", "");
+  r.diverged = j.at("diverged");
+  r.diverged_step = j.at("diverged_step").is_null() ? -1 : j.at("diverged_step").get<long>();
+  r.wall_s = j.at("wall_s");
+  r.ns_per_step = j.at("ns_per_step");
+  r.ns_per_ball_step = j.at("ns_per_ball_step");
+  r.harness_s = j.value("harness_s", 0.0);
+  r.sample_every = j.value("sample_every", 1L);
+  MetricsSummary& m = r.metrics;
+  m.samples = j.value("samples", 0L);
+  const auto& e = j.at("energy");
+  m.energy.initial = e.at("initial");
+  m.energy.final = e.at("final");
+  if (!e.at("max_rel_drift").is_null()) m.energy.max_rel_drift = e.at("max_rel_drift").get<double>();
+  m.energy.max_abs_drift = e.value("max_abs_drift", 0.0);
+  m.energy.reference = e.value("reference", 0.0);
+  m.momentum.initial = vec(j.at("momentum").at("initial"));
+  m.momentum.final = vec(j.at("momentum").at("final"));
+  m.momentum.max_abs_drift = j.at("momentum").at("max_abs_drift");
+  m.tunnelling_wall = j.at("tunnelling").at("wall");
+  m.tunnelling_pair = j.at("tunnelling").at("pair");
+  m.sticking_wall = j.at("sticking").at("wall");
+  m.sticking_pair = j.at("sticking").at("pair");
+  m.penetration_max = j.at("penetration").at("max");
+  m.penetration_mean = j.at("penetration").at("mean");
+  if (j.contains("metrics_config")) {
+    const auto& c = j["metrics_config"];
+    r.metrics_config.contact_tolerance = c.at("contact_tolerance");
+    r.metrics_config.stuck_samples = c.at("stuck_samples");
+    r.metrics_config.divergence_energy_factor = c.at("divergence_energy_factor");
+  }
+  r.settings = j.value("settings", nlohmann::json::object());
+  return r;
+}
+
+void write_results_file(const std::string& path, const std::vector<Result>& results) {
+  nlohmann::json arr = nlohmann::json::array();
+  for (const auto& r : results) arr.push_back(to_json(r));
+  const std::filesystem::path target(path);
+  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    if (!out) throw InputError(fmt::format("{}: cannot write the results file", path));
+    out << arr.dump(2) << '\n';
+    if (!out) throw InputError(fmt::format("{}: writing the results file failed", path));
+  }
+  std::filesystem::rename(tmp, target);
+}
+
+std::vector<Result> read_results_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read the results file", path));
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+    std::vector<Result> out;
+    if (j.is_object()) j = nlohmann::json::array({j});
+    for (const auto& item : j) out.push_back(result_from_json(item));
+    return out;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a ballbench results file: {}", path, e.what()));
+  }
+}
+
+}  // namespace ballbench

@@ -1,0 +1,44 @@
+#pragma once
+// One run of one engine on one scene: metrics, timing, versions, settings. Written as one JSON
+// object; the report reads these files and nothing else.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "metrics/metrics.h"
+
+namespace ballbench {
+
+struct Result {
+  std::string engine, engine_version, profile;
+  std::string scene, scene_source;
+  int n = 0;
+  double dt = 0;
+  long steps = 0;        // asked for
+  long steps_done = 0;   // completed (less when the run diverged or failed)
+  // "ok"; "diverged" (non-finite state or energy blow-up: see diverged_step); "failed" (the engine
+  // threw: see error); "unsupported" (the scene needs what the engine lacks: see error).
+  std::string status = "ok";
+  std::string error;
+  bool diverged = false;
+  long diverged_step = -1;
+  double wall_s = 0;            // engine step time summed over the run (s)
+  double ns_per_step = 0;
+  double ns_per_ball_step = 0;
+  double harness_s = 0;         // reading states, metrics and trajectory output (s)
+  long sample_every = 1;        // metrics see every k-th step
+  MetricsSummary metrics;
+  MetricsConfig metrics_config;
+  nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings
+};
+
+nlohmann::json to_json(const Result& r);
+Result result_from_json(const nlohmann::json& j);
+
+// Writes `results` as a JSON array to `path`, via a temporary file and a rename, so a reader never
+// sees half a file.
+void write_results_file(const std::string& path, const std::vector<Result>& results);
+std::vector<Result> read_results_file(const std::string& path);
+
+}  // namespace ballbench

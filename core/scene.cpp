@@ -1,0 +1,20 @@
+#include "scene.h"
+
+#include <cmath>
+
+namespace ballbench {
+
+long Scene::steps() const { return std::lround(duration / dt); }
+
+SceneFeatures Scene::features() const {
+  SceneFeatures f;
+  f.gravity = gravity.squaredNorm() > 0.0;
+  f.walls = container.kind == ContainerKind::Box;
+  f.equal_radii = n() == 0 || (radius.array() == radius(0)).all();
+  f.equal_masses = n() == 0 || (mass.array() == mass(0)).all();
+  f.elastic = restitution == 1.0;
+  f.frictionless = friction == 0.0;
+  return f;
+}
+
+}  // namespace ballbench

@@ -1,0 +1,51 @@
+#pragma once
+// A validated, immutable description of one ball scene: what every engine is asked to simulate.
+#include <string>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "state.h"
+
+namespace ballbench {
+
+enum class ContainerKind { Box, None };
+
+struct Container {
+  ContainerKind kind = ContainerKind::None;
+  Eigen::Vector2d min{0, 0};  // box corners (m); unused for None
+  Eigen::Vector2d max{0, 0};
+};
+
+// What the scene needs, derived from its data (never declared by hand, so it cannot lie).
+// Engines and the runner use it to skip work a scene does not need.
+struct SceneFeatures {
+  bool gravity = false;        // non-zero gravity vector
+  bool walls = false;          // a box container
+  bool equal_radii = false;
+  bool equal_masses = false;
+  bool elastic = false;        // restitution exactly 1
+  bool frictionless = false;   // friction exactly 0 (balls need no rotation)
+};
+
+struct Scene {
+  std::string name;
+  std::string source;          // file the scene came from, for messages
+  double dt = 0.01;            // step size (s)
+  double duration = 1.0;       // simulated time (s)
+  Eigen::Vector2d gravity{0, 0};  // (m/s^2)
+  double restitution = 1.0;    // ball-ball and ball-wall, normal component
+  double friction = 0.0;
+  bool allow_overlap = false;  // balls may start overlapping (the thesis's random placement does)
+  Container container;
+  Eigen::VectorXd radius;      // (n, m)
+  Eigen::VectorXd mass;        // (n, kg)
+  State initial;               // t = 0
+  nlohmann::json engine_settings = nlohmann::json::object();  // [settings.<engine>] tables
+
+  int n() const { return static_cast<int>(radius.size()); }
+  long steps() const;          // duration / dt, rounded to the nearest whole step
+  SceneFeatures features() const;
+};
+
+}  // namespace ballbench

@@ -1,0 +1,354 @@
+#include "scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "input_error.h"
+#include "overlap.h"
+
+namespace ballbench {
+namespace {
+
+// The most steps a scene may ask for: beyond this a typo (dt = 1e-12) would look like a hang.
+constexpr double kMaxSteps = 1e9;
+// The most balls a scene may hold: beyond this the state alone would not fit in memory here.
+constexpr int64_t kMaxBalls = 50'000'000;
+
+// Reads one TOML table, naming every problem by file, line and dotted field path.
+class TableReader {
+ public:
+  TableReader(const toml::table& t, std::string source, std::string prefix)
+      : t_(t), source_(std::move(source)), prefix_(std::move(prefix)) {}
+
+  [[noreturn]] void fail(const toml::node* at, const std::string& field, const std::string& why) const {
+    const auto line = at ? at->source().begin.line : t_.source().begin.line;
+    throw InputError(fmt::format("{}:{}: {}: {}", source_, line, path(field), why));
+  }
+  std::string path(const std::string& field) const { return prefix_.empty() ? field : prefix_ + "." + field; }
+
+  // Every key must be one of `allowed`.
+  void check_keys(std::initializer_list<const char*> allowed) const {
+    for (const auto& [k, v] : t_) {
+      const std::string key(k.str());
+      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
+        std::vector<std::string> names(allowed.begin(), allowed.end());
+        fail(&v, key, "unknown key" + did_you_mean(key, names));
+      }
+    }
+  }
+
+  bool has(const char* key) const { return t_.contains(key); }
+  const toml::node* node(const char* key) const { return t_.get(key); }
+
+  double number(const char* key) const {
+    const toml::node* n = t_.get(key);
+    if (!n) fail(nullptr, key, "missing (a number is required)");
+    return as_number(n, key);
+  }
+  double number_or(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
+
+  int64_t integer(const char* key, int64_t fallback) const {
+    const toml::node* n = t_.get(key);
+    if (!n) return fallback;
+    if (!n->is_integer()) fail(n, key, fmt::format("expected an integer, got {}", type_name(*n)));
+    return n->as_integer()->get();
+  }
+
+  bool boolean(const char* key, bool fallback) const {
+    const toml::node* n = t_.get(key);
+    if (!n) return fallback;
+    if (!n->is_boolean()) fail(n, key, fmt::format("expected true or false, got {}", type_name(*n)));
+    return n->as_boolean()->get();
+  }
+
+  std::string string(const char* key, const std::string& fallback) const {
+    const toml::node* n = t_.get(key);
+    if (!n) return fallback;
+    if (!n->is_string()) fail(n, key, fmt::format("expected a string, got {}", type_name(*n)));
+    return n->as_string()->get();
+  }
+
+  Eigen::Vector2d vec2(const char* key) const {
+    const toml::node* n = t_.get(key);
+    if (!n) fail(nullptr, key, "missing (an array of two numbers is required)");
+    const toml::array* a = n->as_array();
+    if (!a || a->size() != 2)
+      fail(n, key, fmt::format("expected an array of two numbers [x, y], got {}", type_name(*n)));
+    return {as_number(a->get(0), std::string(key) + "[0]"), as_number(a->get(1), std::string(key) + "[1]")};
+  }
+  Eigen::Vector2d vec2_or(const char* key, Eigen::Vector2d fallback) const { return has(key) ? vec2(key) : fallback; }
+
+ private:
+  static std::string type_name(const toml::node& n) {
+    switch (n.type()) {
+      case toml::node_type::string: return "a string";
+      case toml::node_type::integer: return "an integer";
+      case toml::node_type::floating_point: return "a number";
+      case toml::node_type::boolean: return "a boolean";
+      case toml::node_type::array: return fmt::format("an array of {}", n.as_array()->size());
+      case toml::node_type::table: return "a table";
+      default: return "a date or time";
+    }
+  }
+  double as_number(const toml::node* n, const std::string& field) const {
+    double v;
+    if (n->is_floating_point()) v = n->as_floating_point()->get();
+    else if (n->is_integer()) v = static_cast<double>(n->as_integer()->get());
+    else fail(n, field, fmt::format("expected a number, got {}", type_name(*n)));
+    if (!std::isfinite(v)) fail(n, field, fmt::format("must be finite, got {}", v));
+    return v;
+  }
+
+  const toml::table& t_;
+  std::string source_;
+  std::string prefix_;
+};
+
+// Uniform double in [lo, hi) from 53 random bits: the mapping is ours, so a seed gives the same
+// scene with every standard library (std::uniform_real_distribution's is implementation-defined).
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  const double u = static_cast<double>(rng() >> 11) * 0x1.0p-53;
+  return lo + (hi - lo) * u;
+}
+
+struct BallList {
+  std::vector<Eigen::Vector2d> pos, vel;
+  std::vector<double> radius, mass;
+  std::vector<int> line;  // where each ball was declared, for messages
+  void add(Eigen::Vector2d p, Eigen::Vector2d v, double r, double m, int at) {
+    pos.push_back(p), vel.push_back(v), radius.push_back(r), mass.push_back(m), line.push_back(at);
+  }
+};
+
+void check_positive(const TableReader& r, const char* key, double v) {
+  if (!(v > 0)) r.fail(r.node(key), key, fmt::format("must be positive, got {}", v));
+}
+
+bool inside(const Container& c, const Eigen::Vector2d& p, double radius) {
+  if (c.kind == ContainerKind::None) return true;
+  return (p.array() - radius >= c.min.array()).all() && (p.array() + radius <= c.max.array()).all();
+}
+
+void read_explicit_balls(const toml::node& node, const std::string& source, const Container& container,
+                         BallList& balls) {
+  const toml::array* arr = node.as_array();
+  if (!arr || !arr->is_array_of_tables())
+    throw InputError(fmt::format("{}:{}: ball: expected [[ball]] tables", source, node.source().begin.line));
+  for (size_t i = 0; i < arr->size(); ++i) {
+    const toml::table& t = *arr->get(i)->as_table();
+    TableReader r(t, source, fmt::format("ball[{}]", i));
+    r.check_keys({"pos", "vel", "radius", "mass"});
+    const Eigen::Vector2d p = r.vec2("pos");
+    const double radius = r.number("radius");
+    const double mass = r.number_or("mass", 1.0);
+    check_positive(r, "radius", radius);
+    check_positive(r, "mass", mass);
+    if (!inside(container, p, radius))
+      r.fail(r.node("pos"), "pos",
+             fmt::format("ball at ({}, {}) with radius {} is not inside the container", p.x(), p.y(), radius));
+    balls.add(p, r.vec2_or("vel", {0, 0}), radius, mass, static_cast<int>(t.source().begin.line));
+  }
+}
+
+// [random]: `count` balls drawn uniformly from the position and velocity boxes. Without
+// allow_overlap a drawn position that overlaps an earlier ball is drawn again.
+void read_random_balls(const toml::table& t, const std::string& source, const std::string& prefix,
+                       const Container& container, bool allow_overlap, BallList& balls) {
+  TableReader r(t, source, prefix);
+  r.check_keys({"count", "radius", "mass", "pos_min", "pos_max", "vel_min", "vel_max", "seed"});
+  const int64_t count = r.integer("count", -1);
+  if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
+  if (count > kMaxBalls) r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported", kMaxBalls));
+  const double radius = r.number("radius");
+  const double mass = r.number_or("mass", 1.0);
+  check_positive(r, "radius", radius);
+  check_positive(r, "mass", mass);
+  Eigen::Vector2d lo_default{0, 0}, hi_default{0, 0};
+  if (container.kind == ContainerKind::Box) {
+    lo_default = container.min.array() + radius;
+    hi_default = container.max.array() - radius;
+  } else if (!r.has("pos_min") || !r.has("pos_max")) {
+    r.fail(nullptr, "pos_min", "pos_min and pos_max are required in open space");
+  }
+  const Eigen::Vector2d pos_min = r.vec2_or("pos_min", lo_default), pos_max = r.vec2_or("pos_max", hi_default);
+  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
+  if ((pos_min.array() > pos_max.array()).any()) r.fail(r.node("pos_min"), "pos_min", "must not exceed pos_max");
+  if ((vel_min.array() > vel_max.array()).any()) r.fail(r.node("vel_min"), "vel_min", "must not exceed vel_max");
+  if (!inside(container, pos_min, radius) || !inside(container, pos_max, radius))
+    r.fail(r.node("pos_min"), "pos_min",
+           "the box [pos_min, pos_max] must keep balls of this radius inside the container");
+  const int64_t seed = r.integer("seed", 1);
+  const int line = static_cast<int>(t.source().begin.line);
+
+  std::mt19937_64 rng(static_cast<uint64_t>(seed));
+  // Each ball draws x, y, vx, vy in that order; overlapping draws are redrawn (position only).
+  double reach = radius;  // the largest radius already placed, so the hash cell covers every pair
+  for (double r0 : balls.radius) reach = std::max(reach, r0);
+  OverlapIndex placed(radius + reach);
+  for (const auto& p : balls.pos) placed.insert(p);
+  constexpr int kAttempts = 1000;  // per ball; a region this full is effectively packed
+  const size_t first = balls.pos.size();
+  for (int64_t k = 0; k < count; ++k) {
+    Eigen::Vector2d p;
+    int attempt = 0;
+    do {
+      if (++attempt > kAttempts)
+        r.fail(r.node("count"), "count",
+               fmt::format("only {} of {} balls fit without overlap in [pos_min, pos_max] "
+                           "(set allow_overlap = true to let them overlap)",
+                           balls.pos.size() - first, count));
+      p = {uniform(rng, pos_min.x(), pos_max.x()), uniform(rng, pos_min.y(), pos_max.y())};
+    } while (!allow_overlap && placed.overlaps(p, radius, balls.pos, balls.radius));
+    const Eigen::Vector2d v{uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())};
+    if (!allow_overlap) placed.insert(p);
+    balls.add(p, v, radius, mass, line);
+  }
+}
+
+}  // namespace
+
+Scene parse_scene(const std::string& toml_text, const std::string& source) {
+  toml::table doc;
+  try {
+    doc = toml::parse(toml_text, source);
+  } catch (const toml::parse_error& e) {
+    throw InputError(fmt::format("{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
+  }
+  TableReader top(doc, source, "");
+  top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction",
+                  "allow_overlap", "container", "ball", "random", "settings"});
+
+  Scene s;
+  s.source = source;
+  s.name = top.string("name", std::filesystem::path(source).stem().string());
+  s.dt = top.number("dt");
+  check_positive(top, "dt", s.dt);
+  s.duration = top.number("duration");
+  check_positive(top, "duration", s.duration);
+  if (s.duration / s.dt > kMaxSteps)
+    top.fail(top.node("duration"), "duration", fmt::format("duration / dt is more than {:.0e} steps", kMaxSteps));
+  s.gravity = top.vec2_or("gravity", {0, 0});
+  s.restitution = top.number_or("restitution", 1.0);
+  if (s.restitution < 0 || s.restitution > 1)
+    top.fail(top.node("restitution"), "restitution", fmt::format("must be in [0, 1], got {}", s.restitution));
+  s.friction = top.number_or("friction", 0.0);
+  if (s.friction < 0) top.fail(top.node("friction"), "friction", fmt::format("must be >= 0, got {}", s.friction));
+  s.allow_overlap = top.boolean("allow_overlap", false);
+
+  if (const toml::node* c = top.node("container")) {
+    if (!c->is_table()) top.fail(c, "container", "expected a table [container]");
+    TableReader cr(*c->as_table(), source, "container");
+    cr.check_keys({"kind", "min", "max"});
+    const std::string kind = cr.string("kind", "box");
+    if (kind == "box") {
+      s.container.kind = ContainerKind::Box;
+      s.container.min = cr.vec2("min");
+      s.container.max = cr.vec2("max");
+      if ((s.container.min.array() >= s.container.max.array()).any())
+        cr.fail(cr.node("max"), "max", "must be greater than min in both x and y");
+    } else if (kind == "none") {
+      s.container.kind = ContainerKind::None;
+      if (cr.has("min") || cr.has("max")) cr.fail(cr.node("min"), "min", "a container of kind \"none\" has no bounds");
+    } else {
+      cr.fail(cr.node("kind"), "kind",
+              fmt::format("unknown container kind '{}' (use \"box\" or \"none\"){}", kind,
+                          did_you_mean(kind, std::vector<std::string>{"box", "none"})));
+    }
+  }
+
+  BallList balls;
+  if (const toml::node* b = top.node("ball")) read_explicit_balls(*b, source, s.container, balls);
+  if (const toml::node* rnd = top.node("random")) {
+    if (const toml::table* t = rnd->as_table()) {
+      read_random_balls(*t, source, "random", s.container, s.allow_overlap, balls);
+    } else if (const toml::array* a = rnd->as_array(); a && a->is_array_of_tables()) {
+      for (size_t i = 0; i < a->size(); ++i)
+        read_random_balls(*a->get(i)->as_table(), source, fmt::format("random[{}]", i), s.container,
+                          s.allow_overlap, balls);
+    } else {
+      top.fail(rnd, "random", "expected a table [random] or tables [[random]]");
+    }
+  }
+  if (balls.pos.empty()) top.fail(nullptr, "ball", "the scene has no balls (add [[ball]] or [random])");
+
+  const int n = static_cast<int>(balls.pos.size());
+  s.radius = Eigen::Map<Eigen::VectorXd>(balls.radius.data(), n);
+  s.mass = Eigen::Map<Eigen::VectorXd>(balls.mass.data(), n);
+  s.initial.resize(n);
+  for (int i = 0; i < n; ++i) s.initial.pos.row(i) = balls.pos[i], s.initial.vel.row(i) = balls.vel[i];
+
+  if (!s.allow_overlap) {
+    if (auto pair = first_overlapping_pair(s.initial.pos, s.radius)) {
+      const auto [i, j] = *pair;
+      throw InputError(fmt::format("{}:{}: ball: balls {} and {} (declared at lines {} and {}) overlap at the start "
+                                   "(set allow_overlap = true if that is intended)",
+                                   source, balls.line[j], i, j, balls.line[i], balls.line[j]));
+    }
+  }
+
+  if (const toml::node* st = top.node("settings")) {
+    if (!st->is_table()) top.fail(st, "settings", "expected tables [settings.ENGINE]");
+    s.engine_settings = nlohmann::json::object();
+    for (const auto& [engine, tbl] : *st->as_table()) {
+      if (!tbl.is_table()) top.fail(&tbl, "settings." + std::string(engine.str()), "expected a table of settings");
+      nlohmann::json obj = nlohmann::json::object();
+      for (const auto& [k, v] : *tbl.as_table()) {
+        const std::string key(k.str());
+        if (v.is_boolean()) obj[key] = v.as_boolean()->get();
+        else if (v.is_integer()) obj[key] = v.as_integer()->get();
+        else if (v.is_floating_point()) obj[key] = v.as_floating_point()->get();
+        else if (v.is_string()) obj[key] = v.as_string()->get();
+        else top.fail(&v, "settings." + std::string(engine.str()) + "." + key, "expected a number, string or boolean");
+      }
+      s.engine_settings[std::string(engine.str())] = obj;
+    }
+  }
+  return s;
+}
+
+Scene load_scene_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: scene file not found", path));
+  if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, not a scene file", path));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(fmt::format("{}: cannot read the scene file", path));
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_scene(text.str(), path);
+}
+
+std::string scenario_dir() {
+  if (const char* env = std::getenv("BALLBENCH_SCENARIOS"); env && *env) return env;
+  return BALLBENCH_SCENARIO_DIR;
+}
+
+std::vector<std::string> builtin_scene_names() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(scenario_dir(), ec))
+    if (e.path().extension() == ".toml") names.push_back(e.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+Scene load_scene(const std::string& name_or_path) {
+  const bool looks_like_path = name_or_path.find('/') != std::string::npos ||
+                               name_or_path.ends_with(".toml") || std::filesystem::exists(name_or_path);
+  if (looks_like_path) return load_scene_file(name_or_path);
+  const auto names = builtin_scene_names();
+  if (std::find(names.begin(), names.end(), name_or_path) == names.end())
+    throw InputError(fmt::format("--scene: unknown scene '{}'{} (built-in scenes: {}; or give a path to a .toml file)",
+                                 name_or_path, did_you_mean(name_or_path, names), fmt::join(names, ", ")));
+  return load_scene_file((std::filesystem::path(scenario_dir()) / (name_or_path + ".toml")).string());
+}
+
+}  // namespace ballbench

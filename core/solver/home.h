@@ -1,0 +1,27 @@
+#pragma once
+// `home`: our ball solver. Design and the reasons for it: core/solver/README.md.
+#include <nlohmann/json.hpp>
+
+#include "engine.h"
+
+namespace ballbench {
+
+struct HomeSettings {
+  /// Gauss-Seidel sweeps over touching contacts before the drift. Too few leaves resting piles to
+  /// the event loop (more, tinier events); more costs time per step. (count)
+  int contact_iterations = 8;
+  /// Normal approach speed below which an impact is treated as resting contact (restitution 0).
+  /// Negative means 2 |g| dt: slower than two steps of gravity is a ball settling, not a bounce.
+  /// Zero gravity gives 0: every impact bounces with the scene's restitution. (m/s)
+  double rest_velocity = -1;
+  /// Gap below which two balls (or a ball and a wall) count as touching, as a fraction of the
+  /// radius sum (or the radius). (dimensionless)
+  double contact_slop = 1e-9;
+  /// Safety valve: more events than this per ball in one step is reported as a failure instead of
+  /// running on (it would mean an inelastic collapse the contact pass did not resolve). (count)
+  int max_events_per_ball = 1000;
+};
+
+EngineEntry home_engine();
+
+}  // namespace ballbench

@@ -1,0 +1,38 @@
+#include "trajectory_csv.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+
+TrajectoryCsv::TrajectoryCsv(const std::string& path) : path_(path), tmp_(path + ".tmp") {
+  f_ = std::fopen(tmp_.c_str(), "w");
+  if (!f_) throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
+  std::fputs("engine,step,t,id,x,y,vx,vy\n", f_);
+}
+
+TrajectoryCsv::~TrajectoryCsv() {
+  if (f_) std::fclose(f_);
+}
+
+void TrajectoryCsv::write(const std::string& engine, long step, const State& s) {
+  fmt::memory_buffer buf;
+  for (int i = 0; i < s.n(); ++i)
+    fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{},{}\n", engine, step, s.t, i, s.pos(i, 0), s.pos(i, 1),
+                   s.vel(i, 0), s.vel(i, 1));
+  std::fwrite(buf.data(), 1, buf.size(), f_);
+}
+
+void TrajectoryCsv::close() {
+  if (!f_) return;
+  const bool ok = std::fflush(f_) == 0 && !std::ferror(f_);
+  std::fclose(f_);
+  f_ = nullptr;
+  if (!ok) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
+  std::filesystem::rename(tmp_, path_);
+}
+
+}  // namespace ballbench

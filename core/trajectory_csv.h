@@ -1,0 +1,27 @@
+#pragma once
+// --trajectory output: CSV with header `engine,step,t,id,x,y,vx,vy`, one row per ball per sample,
+// step 0 being the initial state. Numbers are printed round-trip exact (shortest form that reads
+// back to the same double), so metrics can be recomputed from the file independently.
+#include <cstdio>
+#include <string>
+
+#include "state.h"
+
+namespace ballbench {
+
+class TrajectoryCsv {
+ public:
+  explicit TrajectoryCsv(const std::string& path);  // throws InputError if it cannot be opened
+  ~TrajectoryCsv();
+  TrajectoryCsv(const TrajectoryCsv&) = delete;
+  TrajectoryCsv& operator=(const TrajectoryCsv&) = delete;
+
+  void write(const std::string& engine, long step, const State& s);
+  void close();  // flushes and renames into place; throws InputError if writing failed
+
+ private:
+  std::string path_, tmp_;
+  std::FILE* f_ = nullptr;
+};
+
+}  // namespace ballbench

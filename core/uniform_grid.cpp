@@ -1,0 +1,37 @@
+#include "uniform_grid.h"
+
+#include <algorithm>
+
+namespace ballbench {
+
+void UniformGrid::build(const Eigen::MatrixX2d& pos, double cell) {
+  const int n = static_cast<int>(pos.rows());
+  if (n == 0) {
+    nx_ = ny_ = 0;
+    start_.assign(1, 0);
+    order_.clear();
+    return;
+  }
+  x0_ = pos.col(0).minCoeff(), y0_ = pos.col(1).minCoeff();
+  const double w = pos.col(0).maxCoeff() - x0_, h = pos.col(1).maxCoeff() - y0_;
+  // At most ~4 cells per ball: larger cells stay correct (they only add candidates).
+  const double max_cells = 4.0 * n + 16;
+  cell = std::max(cell, 1e-300);
+  while ((std::floor(w / cell) + 1) * (std::floor(h / cell) + 1) > max_cells) cell *= 2;
+  cell_ = cell, inv_cell_ = 1.0 / cell;
+  nx_ = static_cast<int>(std::floor(w / cell)) + 1;
+  ny_ = static_cast<int>(std::floor(h / cell)) + 1;
+
+  start_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
+  cell_of_.resize(n);
+  for (int i = 0; i < n; ++i) {
+    cell_of_[i] = cell_y(pos(i, 1)) * nx_ + cell_x(pos(i, 0));
+    ++start_[cell_of_[i] + 1];
+  }
+  for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+  order_.resize(n);
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  for (int i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = i;
+}
+
+}  // namespace ballbench

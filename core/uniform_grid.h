@@ -1,0 +1,71 @@
+#pragma once
+// A uniform grid over ball centres, rebuilt from scratch by a counting sort (O(n), no allocation
+// once warm). Two balls closer than `cell` are always in the same or adjacent cells, so candidate
+// pairs come from a 3 x 3 block. Used by metrics and the scene loader; the home solver has its own
+// copy of the idea specialised for its hot loop (core/solver/home.cpp).
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace ballbench {
+
+class UniformGrid {
+ public:
+  // Sorts balls into cells of at least `cell` (m). The cell grows if needed to keep the number of
+  // cells near the number of balls, so sparse or far-flung scenes cost no more memory than dense ones.
+  void build(const Eigen::MatrixX2d& pos, double cell);
+
+  // Calls f(i, j) once for every pair i < j in the same or adjacent cells.
+  template <class F>
+  void for_each_candidate_pair(F&& f) const {
+    for (int cy = 0; cy < ny_; ++cy)
+      for (int cx = 0; cx < nx_; ++cx) {
+        const int c = cy * nx_ + cx;
+        for (int a = start_[c]; a < start_[c + 1]; ++a) {
+          const int i = order_[a];
+          for (int b = a + 1; b < start_[c + 1]; ++b) f(i, order_[b]);
+          // Half of the 8 neighbours, so each pair of cells is visited once.
+          visit_cell(cx + 1, cy, i, f);
+          visit_cell(cx - 1, cy + 1, i, f);
+          visit_cell(cx, cy + 1, i, f);
+          visit_cell(cx + 1, cy + 1, i, f);
+        }
+      }
+  }
+
+  // Calls f(j) for every ball j in the 3 x 3 cells around point (x, y).
+  template <class F>
+  void for_each_near(double x, double y, F&& f) const {
+    const int cx = cell_x(x), cy = cell_y(y);
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int ix = cx + dx, iy = cy + dy;
+        if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) continue;
+        const int c = iy * nx_ + ix;
+        for (int a = start_[c]; a < start_[c + 1]; ++a) f(order_[a]);
+      }
+  }
+
+  double cell() const { return cell_; }
+
+ private:
+  template <class F>
+  void visit_cell(int cx, int cy, int i, F& f) const {
+    if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) return;
+    const int c = cy * nx_ + cx;
+    for (int b = start_[c]; b < start_[c + 1]; ++b) f(i, order_[b]);
+  }
+  int cell_x(double x) const { return clamp_cell(std::floor((x - x0_) * inv_cell_), nx_); }
+  int cell_y(double y) const { return clamp_cell(std::floor((y - y0_) * inv_cell_), ny_); }
+  static int clamp_cell(double c, int n) { return c < 0 ? 0 : c >= n ? n - 1 : static_cast<int>(c); }
+
+  double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;
+  int nx_ = 0, ny_ = 0;
+  std::vector<int> start_;  // (cells + 1) prefix sums: balls of cell c are order_[start_[c] .. start_[c+1])
+  std::vector<int> order_;  // ball indices sorted by cell
+  std::vector<int> cell_of_;
+};
+
+}  // namespace ballbench

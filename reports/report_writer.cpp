@@ -1,0 +1,189 @@
+#include "report_writer.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+std::string sci(double v) { return fmt::format("{:.3g}", v); }
+
+std::string drift_text(const Result& r) {
+  return r.metrics.energy.max_rel_drift ? fmt::format("{:.3g}", *r.metrics.energy.max_rel_drift) : "n/a";
+}
+
+// One column of the per-scene table: its header, its text, and (for "best" marking) a value where
+// smaller is better.
+struct Column {
+  std::string header;
+  std::function<std::string(const Result&)> text;
+  std::function<double(const Result&)> value;  // null: not ranked
+};
+
+std::vector<Column> columns() {
+  return {
+      {"status", [](const Result& r) { return r.diverged ? fmt::format("diverged@{}", r.diverged_step) : r.status; }, nullptr},
+      {"energy drift (max rel)", drift_text,
+       [](const Result& r) { return r.metrics.energy.max_rel_drift.value_or(HUGE_VAL); }},
+      {"E final / E0",
+       [](const Result& r) {
+         return r.metrics.energy.initial > 0 ? fmt::format("{:.4f}", r.metrics.energy.final / r.metrics.energy.initial) : "n/a";
+       },
+       nullptr},
+      {"momentum drift (max abs)", [](const Result& r) { return sci(r.metrics.momentum.max_abs_drift); }, nullptr},
+      {"tunnelling wall", [](const Result& r) { return fmt::format("{}", r.metrics.tunnelling_wall); },
+       [](const Result& r) { return double(r.metrics.tunnelling_wall); }},
+      {"tunnelling pair", [](const Result& r) { return fmt::format("{}", r.metrics.tunnelling_pair); },
+       [](const Result& r) { return double(r.metrics.tunnelling_pair); }},
+      {"sticking wall", [](const Result& r) { return fmt::format("{}", r.metrics.sticking_wall); },
+       [](const Result& r) { return double(r.metrics.sticking_wall); }},
+      {"sticking pair", [](const Result& r) { return fmt::format("{}", r.metrics.sticking_pair); },
+       [](const Result& r) { return double(r.metrics.sticking_pair); }},
+      {"penetration max", [](const Result& r) { return sci(r.metrics.penetration_max); },
+       [](const Result& r) { return r.metrics.penetration_max; }},
+      {"penetration mean", [](const Result& r) { return sci(r.metrics.penetration_mean); },
+       [](const Result& r) { return r.metrics.penetration_mean; }},
+      {"ns/step", [](const Result& r) { return fmt::format("{:.0f}", r.ns_per_step); },
+       [](const Result& r) { return r.ns_per_step; }},
+      {"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
+       [](const Result& r) { return r.ns_per_ball_step; }},
+  };
+}
+
+std::string verdict(const Result& r) {
+  if (r.status == "unsupported" || r.status == "failed") return fmt::format("{}: {}", r.status, r.error);
+  std::vector<std::string> parts;
+  if (r.diverged) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
+  const auto& m = r.metrics;
+  const int tunnels = m.tunnelling_wall + m.tunnelling_pair, sticks = m.sticking_wall + m.sticking_pair;
+  parts.push_back(tunnels ? fmt::format("tunnelled {} times ({} through walls, {} through balls)", tunnels,
+                                        m.tunnelling_wall, m.tunnelling_pair)
+                          : "no tunnelling");
+  parts.push_back(sticks ? fmt::format("got stuck {} times ({} in walls, {} in balls)", sticks, m.sticking_wall,
+                                       m.sticking_pair)
+                         : "no sticking");
+  if (m.energy.max_rel_drift) parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *m.energy.max_rel_drift));
+  parts.push_back(fmt::format("{:.0f} ns per ball-step", r.ns_per_ball_step));
+  return fmt::format("{}", fmt::join(parts, "; "));
+}
+
+// Appends formatted text; the format string is checked at compile time.
+struct MarkdownBuffer {
+  fmt::memory_buffer out;
+  template <class... Args>
+  void operator()(fmt::format_string<Args...> f, Args&&... args) {
+    fmt::format_to(std::back_inserter(out), f, std::forward<Args>(args)...);
+  }
+};
+
+}  // namespace
+
+ReportInputs read_report_inputs(const std::string& results_dir) {
+  ReportInputs in;
+  std::vector<std::filesystem::path> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(results_dir, ec))
+    if (e.path().extension() == ".json") files.push_back(e.path());
+  if (ec) throw InputError(fmt::format("{}: cannot read the results folder: {}", results_dir, ec.message()));
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    if (f.filename() == "run.json") {
+      std::ifstream s(f);
+      in.run = nlohmann::json::parse(s, nullptr, false);
+      continue;
+    }
+    for (auto& r : read_results_file(f.string())) in.results.push_back(std::move(r));
+  }
+  return in;
+}
+
+std::string render_report(const ReportInputs& in) {
+  MarkdownBuffer put;
+  const nlohmann::json& run = in.run;
+  put("# ballbench report\n\n");
+  put("Our ball solver (`home`), the thesis's MATLAB algorithm ported faithfully (`home-seed`), and the external "
+      "engines, on identical scenes. Every number below comes from the JSON files in `results/` beside this file; "
+      "the metrics are computed by the harness from sampled states, never taken from an engine.\n\n");
+  put("Regenerate with `{}` (generated {}).\n\n", run.value("command", "scripts/report"), run.value("date", "?"));
+
+  put("## Machine and build\n\n| | |\n|---|---|\n");
+  for (const char* k : {"cpu", "cores", "os", "compiler", "build_type", "flags"})
+    if (run.contains(k)) put("| {} | {} |\n", k, run[k].is_string() ? run[k].get<std::string>() : run[k].dump());
+  put("\nTimes are engine step time only (reading states and computing metrics excluded), one run each on a shared "
+      "machine: read the ratios, not the nanoseconds.\n\n");
+
+  std::vector<std::string> scene_order;
+  std::map<std::string, std::vector<const Result*>> by_scene;
+  for (const auto& r : in.results) {
+    if (!by_scene.contains(r.scene)) scene_order.push_back(r.scene);
+    by_scene[r.scene].push_back(&r);
+  }
+  const auto cols = columns();
+  for (const auto& scene : scene_order) {
+    const auto& rows = by_scene[scene];
+    const Result& first = *rows.front();
+    put("## Scene `{}`\n\n{} balls, dt = {} s, {} steps (`{}`).\n\n", scene, first.n, first.dt, first.steps,
+        first.scene_source);
+    put("| engine | profile |");
+    for (const auto& c : cols) put(" {} |", c.header);
+    put("\n|---|---|");
+    for (size_t k = 0; k < cols.size(); ++k) put("---|");
+    put("\n");
+    for (const Result* r : rows) {
+      put("| {} {} | {} |", r->engine, r->engine_version, r->profile);
+      for (const auto& c : cols) {
+        std::string cell = c.text(*r);
+        if (c.value && r->status == "ok") {
+          double best = HUGE_VAL;
+          for (const Result* o : rows)
+            if (o->status == "ok") best = std::min(best, c.value(*o));
+          if (rows.size() > 1 && c.value(*r) == best) cell = "**" + cell + "**";
+        }
+        put(" {} |", cell);
+      }
+      put("\n");
+    }
+    put("\nBest value in each ranked column in bold (smaller is better).\n\n");
+    for (const Result* r : rows) put("- **{}**: {}.\n", r->engine, verdict(*r));
+    put("\n");
+  }
+
+  put("## Engine settings\n\nThe effective settings of every run, as each engine reported them.\n\n");
+  std::map<std::string, bool> shown;
+  for (const auto& r : in.results) {
+    const std::string key = r.engine + " " + r.profile + " " + r.settings.dump();
+    if (shown[key]) continue;
+    shown[key] = true;
+    put("- `{}` (profile {}, scene {}): `{}`\n", r.engine, r.profile, r.scene, r.settings.dump());
+  }
+  const MetricsConfig cfg = in.results.empty() ? MetricsConfig{} : in.results.front().metrics_config;
+  put("\n## Glossary\n\n");
+  put("- **energy drift (max rel)**: max over samples of |E - E0| / E0, with E = sum m |v|^2 / 2 + m |g| h and the "
+      "height h measured from the container's floor (from the lowest initial ball in open space). Restitution below "
+      "1 loses energy by design, so compare engines on the same scene, not against zero.\n");
+  put("- **E final / E0**: the energy left at the end.\n");
+  put("- **momentum drift (max abs)**: max over samples of |P - P0|, P = sum m v (kg m/s). Conserved only in open space "
+      "without gravity; walls and gravity change it.\n");
+  put("- **tunnelling wall**: balls whose centre went from inside the box to beyond a wall between two samples.\n");
+  put("- **tunnelling pair**: pairs apart in two consecutive samples whose relative motion, taken as a straight line "
+      "between them, came closer than {:.0f}% of their radius sum: they passed through each other. A resolved "
+      "bounce never counts.\n", 100 * (1 - cfg.contact_tolerance));
+  put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
+      "than {:.0f}% of its radius) for more than {} consecutive samples; one event per episode.\n",
+      100 * cfg.contact_tolerance, 100 * cfg.contact_tolerance, cfg.stuck_samples);
+  put("- **penetration max / mean**: overlap depth divided by the radius (the smaller one for a pair), max and mean "
+      "over every overlapping contact in every sample.\n");
+  put("- **ns/step, ns/ball-step**: engine step time only, per step and per ball per step.\n");
+  put("- **diverged@k**: the state became non-finite, or the energy exceeded {} times its initial value, at step k; "
+      "metrics cover the steps before.\n", cfg.divergence_energy_factor);
+  return fmt::to_string(put.out);
+}
+
+}  // namespace ballbench
