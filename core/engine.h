@@ -34,6 +34,9 @@ class Engine {
   virtual void read(State& out) const = 0;
   // The effective settings, every knob with the value in force (defaults included).
   virtual nlohmann::json settings() const = 0;
+  // For 3D engines held to the plane: the largest |z| position or velocity over all balls now
+  // (m or m/s). The runner tracks its maximum; 2D engines have none.
+  virtual double out_of_plane() const { return 0.0; }
 };
 
 struct EngineInfo {

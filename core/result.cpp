@@ -37,6 +37,7 @@ nlohmann::json to_json(const Result& r) {
   j["ns_per_ball_step"] = r.ns_per_ball_step;
   j["harness_s"] = r.harness_s;
   j["sample_every"] = r.sample_every;
+  j["out_of_plane_max"] = r.out_of_plane_max;
   j["samples"] = m.samples;
   j["energy"] = {{"initial", m.energy.initial},
                  {"final", m.energy.final},
@@ -75,6 +76,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.ns_per_ball_step = j.at("ns_per_ball_step");
   r.harness_s = j.value("harness_s", 0.0);
   r.sample_every = j.value("sample_every", 1L);
+  r.out_of_plane_max = j.value("out_of_plane_max", 0.0);
   MetricsSummary& m = r.metrics;
   m.samples = j.value("samples", 0L);
   const auto& e = j.at("energy");

@@ -28,6 +28,7 @@ struct Result {
   double ns_per_ball_step = 0;
   double harness_s = 0;         // reading states, metrics and trajectory output (s)
   long sample_every = 1;        // metrics see every k-th step
+  double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;
   MetricsConfig metrics_config;
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings

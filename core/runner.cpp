@@ -76,6 +76,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     }
     engine_s += seconds_since(t0);
     engine->read(state);
+    r.out_of_plane_max = std::max(r.out_of_plane_max, engine->out_of_plane());
     if (!finite(state)) {
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
       r.error = fmt::format("non-finite position or velocity at step {}", k);
