@@ -16,6 +16,8 @@ Eigen::Vector2d vec(const nlohmann::json& j) { return {j.at(0).get<double>(), j.
 
 }  // namespace
 
+std::string run_label(const Result& r) { return r.profile == "default" ? r.engine : r.engine + "/" + r.profile; }
+
 nlohmann::json to_json(const Result& r) {
   const MetricsSummary& m = r.metrics;
   nlohmann::json j;

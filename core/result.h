@@ -34,6 +34,10 @@ struct Result {
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings
 };
 
+// "engine" for an engine with one profile, "engine/profile" otherwise: how tables and the
+// trajectory CSV name a run.
+std::string run_label(const Result& r);
+
 nlohmann::json to_json(const Result& r);
 Result result_from_json(const nlohmann::json& j);
 

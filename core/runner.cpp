@@ -61,7 +61,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   double engine_s = 0;
   engine->read(state);
   metrics.observe(state);
-  if (options.trajectory) options.trajectory->write(r.engine, 0, state);
+  if (options.trajectory) options.trajectory->write(run_label(r), 0, state);
 
   const long report_every = std::max(1L, r.steps / 100);
   for (long k = 1; k <= r.steps; ++k) {
@@ -83,7 +83,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       break;
     }
     metrics.observe(state);
-    if (options.trajectory) options.trajectory->write(r.engine, k, state);
+    if (options.trajectory) options.trajectory->write(run_label(r), k, state);
     r.steps_done = k;
     if (metrics.energy_blew_up()) {
       r.status = "diverged", r.diverged = true, r.diverged_step = k;

@@ -7,7 +7,7 @@ BALLBENCH_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
   libbox2d-dev libbullet-dev libode-dev
-  gnuplot-nox
+  gnuplot-nox python3
 )
 
 ballbench_install_packages() {

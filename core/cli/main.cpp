@@ -1,5 +1,6 @@
 // `ballbench`: list, run, report. Every error the user can cause ends here as one line on stderr
 // and exit status 2; nothing deeper exits the process.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -40,27 +41,52 @@ std::string opt_drift(const Result& r) {
 }
 
 void print_table(const std::vector<Result>& results) {
-  fmt::print("{:<12} {:<10} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>12}\n", "engine", "status", "n",
+  fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>12}\n", "engine", "status", "n",
              "steps", "E drift", "P drift", "tun.wall", "tun.pair", "stk.wall", "stk.pair", "pen.max", "ns/ball-step");
   for (const auto& r : results) {
     const auto& m = r.metrics;
-    fmt::print("{:<12} {:<10} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>12.1f}\n", r.engine,
-               r.status, r.n, r.steps_done, opt_drift(r), m.momentum.max_abs_drift, m.tunnelling_wall,
+    fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>12.1f}\n",
+               run_label(r), r.status, r.n, r.steps_done, opt_drift(r), m.momentum.max_abs_drift, m.tunnelling_wall,
                m.tunnelling_pair, m.sticking_wall, m.sticking_pair, m.penetration_max, r.ns_per_ball_step);
   }
   for (const auto& r : results)
-    if (!r.error.empty()) fmt::print("{}: {}\n", r.engine, r.error);
+    if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
 }
 
-std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines, RunOptions options,
-                            bool quiet) {
+// The profiles to run for one engine: "" = its default; "all" = every profile it has; a name =
+// that profile if the engine has it, else its default (so `--profile tuned` can name every
+// external engine's tuned profile while our solvers, which have one profile, run theirs).
+std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile) {
+  const auto& mine = e.info.profiles;
+  if (profile == "all") return mine;
+  if (!profile.empty() && std::find(mine.begin(), mine.end(), profile) != mine.end()) return {profile};
+  return {mine.front()};
+}
+
+void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
+  if (profile.empty() || profile == "all") return;
+  std::vector<std::string> known;
+  for (const auto* e : engines)
+    for (const auto& p : e->info.profiles) {
+      if (p == profile) return;
+      if (std::find(known.begin(), known.end(), p) == known.end()) known.push_back(p);
+    }
+  throw InputError(fmt::format("--profile: no selected engine has a profile '{}' (they have: {}, or all)", profile,
+                               fmt::join(known, ", ")));
+}
+
+std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                            const std::string& profile, const RunOptions& base, bool quiet) {
   std::vector<Result> results;
-  for (const EngineEntry* e : engines) {
-    Progress progress(fmt::format("{} on {}", e->info.name, scene.name));
-    if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
-    options.overrides = options.overrides.value(e->info.name, nlohmann::json::object());
-    results.push_back(run_engine(scene, *e, options));
-  }
+  for (const EngineEntry* e : engines)
+    for (const std::string& p : profiles_for(*e, profile)) {
+      RunOptions options = base;
+      Progress progress(fmt::format("{} ({}) on {}", e->info.name, p, scene.name));
+      if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
+      options.profile = p;
+      options.overrides = base.overrides.value(e->info.name, nlohmann::json::object());
+      results.push_back(run_engine(scene, *e, options));
+    }
   return results;
 }
 
@@ -76,8 +102,8 @@ int cmd_list() {
   }
   fmt::print("engines:\n");
   for (const auto& e : engine_registry())
-    fmt::print("  {:<12} {:<14} profiles: {:<14} {}\n", e.info.name, e.info.version, fmt::join(e.info.profiles, ","),
-               e.info.summary);
+    fmt::print("  {:<12} {:<14} profiles: {:<14} {}\n", e.info.name, e.info.version,
+               fmt::format("{}", fmt::join(e.info.profiles, ",")), e.info.summary);
   return 0;
 }
 
@@ -115,7 +141,8 @@ int main(int argc, char** argv) {
       ->excludes(steps_opt);
   run->add_option("--json", json_path, "write one JSON object per engine (an array) to FILE");
   run->add_option("--trajectory", trajectory_path, "write every ball's state at every step as CSV to FILE");
-  run->add_option("--profile", profile, "settings profile for every engine (see `ballbench list`)");
+  run->add_option("--profile", profile,
+                  "settings profile (see `ballbench list`): a name, or all; engines without it run their default");
   run->add_option("--set", sets, "engine setting ENGINE.KEY=VALUE (repeatable)");
   run->add_flag("--quiet", quiet, "no progress on stderr");
 
@@ -147,12 +174,12 @@ int main(int argc, char** argv) {
       if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
       RunOptions options;
       options.steps = steps ? *steps : -1;
-      options.profile = profile;
+      check_profile(engines, profile);
       for (const auto& s : sets) add_setting(options.overrides, s);
       for (const auto& [name, v] : options.overrides.items()) find_engine(name);  // typo check
       std::optional<TrajectoryCsv> trajectory;
       if (!trajectory_path.empty()) trajectory.emplace(trajectory_path), options.trajectory = &*trajectory;
-      const auto results = run_all(scene, engines, options, quiet);
+      const auto results = run_all(scene, engines, profile, options, quiet);
       if (trajectory) trajectory->close();
       print_table(results);
       if (!json_path.empty()) write_results_file(json_path, results);
@@ -168,7 +195,7 @@ int main(int argc, char** argv) {
           const Scene scene = load_scene(name);
           RunOptions options;
           write_results_file(fmt::format("{}/{}.json", results_dir, name),
-                             run_all(scene, parse_engine_list("all"), options, false));
+                             run_all(scene, parse_engine_list("all"), "all", options, false));
           fmt::print(stderr, "ran {}\n", name);
         }
         std::ofstream(results_dir + "/run.json") << run_context("scripts/report").dump(2) << '\n';

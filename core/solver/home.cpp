@@ -21,20 +21,23 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 // How much faster than the fastest ball at the start of the step a ball may become through
 // collisions before the broad phase must be rebuilt (equal-mass elastic impacts can reach sqrt(2)).
 constexpr double kSpeedMargin = 1.5;
+// Sweeps the cluster solve may take to bring every contact within the velocity tolerance; a
+// cluster that needs more is left to the event loop, which finishes the job one event at a time.
+constexpr int kClusterIterations = 200;
 
 struct Event {
-  double t;        // time within the step (s)
-  int i, j;        // j >= 0: ball pair; j < 0: wall -1 - (2 * axis + side)
-  uint32_t ci, cj; // collision counters of i and j when predicted; stale if they moved on
+  double t;         // time within the step (s)
+  int i, j;         // j >= 0: ball pair; j < 0: wall -1 - (2 * axis + side)
+  uint32_t ci, cj;  // collision counters of i and j when predicted; stale if they moved on
   bool operator>(const Event& o) const { return t > o.t; }
 };
 
 struct Contact {
-  int i, j;          // j < 0: wall, as in Event
-  double nx, ny;     // unit normal, from j (or the wall) towards i
-  double target;     // normal velocity wanted after the pass (m/s)
-  double inv_mass;   // 1 / (1/m_i + 1/m_j)
-  double impulse;    // accumulated, >= 0
+  int i, j;         // j < 0: wall, as in Event
+  double nx, ny;    // unit normal, from j (or the wall) towards i
+  double target;    // least normal velocity wanted after the solve (m/s)
+  double inv_mass;  // 1 / (1/m_i + 1/m_j)
+  double impulse;   // accumulated, >= 0
 };
 
 class Home final : public Engine {
@@ -48,25 +51,25 @@ class Home final : public Engine {
         walls_(scene.container.kind == ContainerKind::Box),
         r_(scene.radius),
         inv_m_(scene.mass.cwiseInverse()),
+        rmax_(scene.radius.maxCoeff()),
         p_(scene.initial.pos),
         v_(scene.initial.vel),
         t_local_(n_),
-        count_(n_, 0) {
-    rmax_ = r_.maxCoeff();
-  }
+        count_(n_, 0),
+        stamp_(n_, 0) {}
 
   void step(double dt) override {
     t_ += dt;
     dt_ = dt;
-    const double v_rest = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
+    v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
     v_.col(0).array() += g_.x() * dt;
     v_.col(1).array() += g_.y() * dt;
     start_ = p_;
     build_broad_phase(dt);
-    solve_touching_contacts(v_rest, dt);
-    drift(dt, v_rest);
+    contact_pass();
+    drift();
   }
 
   void read(State& out) const override {
@@ -90,47 +93,12 @@ class Home final : public Engine {
     grid_.build(start_, 2.0 * rmax_ + 2.0 * vbound_ * horizon);
   }
 
-  // Resting contact, by sequential impulses (Catto, "Iterative Dynamics with Temporal Coherence",
-  // GDC 2005) over every contact within reach of resting speeds (v_rest dt), solved together so a
-  // pile settles in one pass instead of through a cascade of zero-time events:
-  // - touching and approaching faster than v_rest: an impact, target -e vn (the bounce);
-  // - otherwise a speculative contact (Catto, "Speculative Contacts", 2013): the pair may close
-  //   its gap during the step but not overlap, target vn >= -gap / dt;
-  // - approaching faster than v_rest but not yet touching: left to the exact event loop.
-  void solve_touching_contacts(double v_rest, double dt) {
-    contacts_.clear();
-    auto add = [&](int i, int j, double nx, double ny, double gap, double touch, double inv_mass) {
-      const double vn = relative_normal_velocity(i, j, nx, ny);
-      const bool touching = gap < touch;
-      if (-vn > v_rest && !touching) return;
-      // A round-off overlap (gap < 0) gets a target that just closes it within the step.
-      const double target = touching && -vn > v_rest ? -e_ * vn : -gap / dt;
-      if (vn >= target) return;  // already satisfied, and impulses only push apart
-      contacts_.push_back({i, j, nx, ny, target, inv_mass, 0.0});
-    };
-    const double reach = v_rest * dt;
-    if (walls_)
-      for (int i = 0; i < n_; ++i)
-        for (int axis = 0; axis < 2; ++axis)
-          for (int side = 0; side < 2; ++side) {
-            const double gap = wall_gap(i, axis, side), touch = s_.contact_slop * r_(i);
-            if (gap >= std::max(touch, reach)) continue;
-            const double sign = side == 0 ? 1.0 : -1.0;  // normal points into the box
-            add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, 1.0 / inv_m_(i));
-          }
-    grid_.for_each_candidate_pair([&](int i, int j) {
-      const double dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
-      const double rs = r_(i) + r_(j), d = std::hypot(dx, dy), touch = s_.contact_slop * rs;
-      if (d - rs < std::max(touch, reach) && d > 0)
-        add(i, j, dx / d, dy / d, d - rs, touch, 1.0 / (inv_m_(i) + inv_m_(j)));
-    });
-    for (int it = 0; it < s_.contact_iterations; ++it)
-      for (Contact& c : contacts_) {
-        const double vn = relative_normal_velocity(c.i, c.j, c.nx, c.ny);
-        const double old = c.impulse;
-        c.impulse = std::max(0.0, old + (c.target - vn) * c.inv_mass);
-        apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
-      }
+  double touch_pair(int i, int j) const { return s_.contact_slop * (r_(i) + r_(j)); }
+  double touch_wall(int i) const { return s_.contact_slop * r_(i); }
+
+  // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
+  double wall_gap(int i, int axis, int side) const {
+    return side == 0 ? p_(i, axis) - r_(i) - box_.min(axis) : box_.max(axis) - r_(i) - p_(i, axis);
   }
 
   double relative_normal_velocity(int i, int j, double nx, double ny) const {
@@ -144,18 +112,119 @@ class Home final : public Engine {
     if (j >= 0) v_(j, 0) -= J * inv_m_(j) * nx, v_(j, 1) -= J * inv_m_(j) * ny;
   }
 
-  // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
-  double wall_gap(int i, int axis, int side) const {
-    return side == 0 ? p_(i, axis) - r_(i) - box_.min(axis) : box_.max(axis) - r_(i) - p_(i, axis);
+  // The velocity constraint of one contact, for the sequential-impulse solve:
+  // - touching and approaching faster than v_rest: an impact, target -e vn (the bounce);
+  // - touching and slower: resting contact, target a separation of the velocity tolerance, so
+  //   that what the solve leaves over is never an event (see predict); a round-off overlap is
+  //   closed within the step when `close_overlap`;
+  // - not touching: a speculative contact (Catto, "Speculative Contacts", 2013): the pair may close
+  //   its gap within `horizon` but not overlap, target -gap / horizon;
+  // - approaching faster than v_rest and not touching: left to the exact event loop.
+  void add_contact(int i, int j, double nx, double ny, double gap, double touch, double horizon, bool close_overlap) {
+    const double vn = relative_normal_velocity(i, j, nx, ny);
+    const bool touching = gap < touch, fast = -vn > v_rest_;
+    if (fast && !touching) return;
+    double target;
+    if (touching && fast) target = -e_ * vn;
+    else if (touching) target = velocity_tolerance() + (close_overlap ? std::max(-gap, 0.0) / horizon : 0.0);
+    else target = -gap / horizon;
+    // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
+    const double inv_mass = 1.0 / (inv_m_(i) + (j >= 0 ? inv_m_(j) : 0.0));
+    contacts_.push_back({i, j, nx, ny, target, inv_mass, 0.0});
   }
+
+  void add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
+    if (!walls_) return;
+    for (int axis = 0; axis < 2; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        const double gap = wall_gap(i, axis, side), touch = touch_wall(i);
+        if (gap >= std::max(touch, reach)) continue;
+        const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
+        add_contact(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
+                    close_overlap);
+      }
+  }
+
+  // Adds the contact of pair (i, j) if their gap is below max(touch, reach); returns whether it was.
+  bool add_pair_contact(int i, int j, double reach, double horizon, bool close_overlap) {
+    const double dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
+    const double rs = r_(i) + r_(j), d = std::hypot(dx, dy);
+    if (d - rs >= std::max(touch_pair(i, j), reach) || d == 0) return false;
+    add_contact(i, j, dx / d, dy / d, d - rs, touch_pair(i, j), horizon, close_overlap);
+    return true;
+  }
+
+  // Sequential impulses (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005): sweeps
+  // over contacts_ until every contact is within `tolerance` of its target or `sweeps` ran.
+  void solve_contacts(int sweeps, double tolerance) {
+    for (int it = 0; it < sweeps; ++it) {
+      double worst = 0;  // largest violation seen in this sweep (m/s)
+      for (Contact& c : contacts_) {
+        const double vn = relative_normal_velocity(c.i, c.j, c.nx, c.ny);
+        const double old = c.impulse;
+        c.impulse = std::max(0.0, old + (c.target - vn) * c.inv_mass);
+        apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
+        if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
+      }
+      if (worst <= tolerance) return;
+    }
+  }
+
+  // Resting contact at the start of the step: every contact within reach of resting speeds
+  // (v_rest dt) is solved together, so a pile settles in one pass instead of through a cascade of
+  // zero-time events.
+  void contact_pass() {
+    contacts_.clear();
+    const double reach = v_rest_ * dt_;
+    for (int i = 0; i < n_; ++i) add_wall_contacts(i, reach, dt_, true);
+    grid_.for_each_candidate_pair([&](int i, int j) { add_pair_contact(i, j, reach, dt_, true); });
+    solve_contacts(s_.contact_iterations, 0.0);
+  }
+
+  // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
+  // touching cluster around it at once (the same sequential impulses, to the velocity tolerance),
+  // rather than one zero-time event at a time (an inelastic collapse of round-off otherwise).
+  void resolve_resting_cluster(int i, int j, double t) {
+    ++stamp_now_;
+    cluster_.clear();
+    contacts_.clear();
+    auto enter = [&](int b) {
+      if (stamp_[b] == stamp_now_) return;
+      stamp_[b] = stamp_now_;
+      advance(b, t);
+      cluster_.push_back(b);
+    };
+    enter(i);
+    if (j >= 0) enter(j);
+    const double horizon = dt_ - t;
+    for (size_t k = 0; k < cluster_.size(); ++k) {
+      const int a = cluster_[k];
+      add_wall_contacts(a, 0.0, horizon, false);
+      grid_.for_each_near(start_(a, 0), start_(a, 1), [&](int b) {
+        if (b == a) return;
+        if (stamp_[b] == stamp_now_) {
+          if (b > a) return;  // both in the cluster: the pair is added once, from the larger index
+        } else {
+          advance(b, t);  // along its own line: its queued prediction stays valid
+        }
+        if (add_pair_contact(a, b, 0.0, horizon, false)) enter(b);
+      });
+    }
+    solve_contacts(kClusterIterations, 0.5 * velocity_tolerance());
+    for (int b : cluster_) ++count_[b];
+    for (int b : cluster_) predict(b);
+  }
+
+  // Approach speeds that close less than the contact slop over a step are round-off, not motion.
+  double velocity_tolerance() const { return s_.contact_slop * rmax_ / dt_; }
 
   // Event-driven motion over [0, dt]: every ball moves on its straight line until its next
   // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
   // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
-  void drift(double dt, double v_rest) {
+  void drift() {
     std::fill(t_local_.begin(), t_local_.end(), 0.0);
     queue_ = {};
-    for (int i = 0; i < n_; ++i) predict(i, dt);
+    for (int i = 0; i < n_; ++i) predict(i);
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
@@ -163,44 +232,52 @@ class Home final : public Engine {
       queue_.pop();
       if (count_[ev.i] != ev.ci) continue;  // i collided since: its new event is queued
       if (ev.j >= 0 && count_[ev.j] != ev.cj) {
-        predict(ev.i, dt);  // the partner changed course: look again
+        predict(ev.i);  // the partner changed course: look again
         continue;
       }
       if (++events > budget)
         throw std::runtime_error(fmt::format("home: more than {} collision events in one step at t = {} s "
-                                             "(inelastic collapse not resolved by the contact pass)",
+                                             "(an inelastic collapse the contact solves did not resolve)",
                                              budget, t_));
       advance(ev.i, ev.t);
-      if (ev.j >= 0) {
-        advance(ev.j, ev.t);
-        collide_pair(ev.i, ev.j, v_rest);
-        ++count_[ev.j];
-      } else {
-        collide_wall(ev.i, ev.j, v_rest);
-      }
-      ++count_[ev.i];
-      if (too_fast(ev.i) || (ev.j >= 0 && too_fast(ev.j))) {
-        rebuild_mid_step(ev.t, dt);
+      if (ev.j >= 0) advance(ev.j, ev.t);
+      if (impact_speed(ev) <= v_rest_) {
+        resolve_resting_cluster(ev.i, ev.j, ev.t);
         continue;
       }
-      predict(ev.i, dt);
-      if (ev.j >= 0) predict(ev.j, dt);
+      ev.j >= 0 ? collide_pair(ev.i, ev.j) : collide_wall(ev.i, ev.j);
+      ++count_[ev.i];
+      if (ev.j >= 0) ++count_[ev.j];
+      if (too_fast(ev.i) || (ev.j >= 0 && too_fast(ev.j))) {
+        rebuild_mid_step(ev.t);
+        continue;
+      }
+      predict(ev.i);
+      if (ev.j >= 0) predict(ev.j);
     }
-    for (int i = 0; i < n_; ++i) advance(i, dt);
+    for (int i = 0; i < n_; ++i) advance(i, dt_);
+  }
+
+  // Normal approach speed of an event's pair (or ball and wall) at the event time.
+  double impact_speed(const Event& ev) const {
+    if (ev.j < 0) return std::abs(v_(ev.i, (-1 - ev.j) / 2));
+    const double dx = p_(ev.i, 0) - p_(ev.j, 0), dy = p_(ev.i, 1) - p_(ev.j, 1);
+    const double d = std::hypot(dx, dy);
+    return d > 0 ? -relative_normal_velocity(ev.i, ev.j, dx / d, dy / d) : 0.0;
   }
 
   bool too_fast(int i) const { return v_.row(i).squaredNorm() > vbound_ * vbound_; }
 
   // A collision made a ball faster than the broad phase allows for: bring every ball to time t and
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
-  void rebuild_mid_step(double t, double dt) {
+  void rebuild_mid_step(double t) {
     for (int i = 0; i < n_; ++i) advance(i, t);
     start_ = p_;
-    build_broad_phase(dt - t);
+    build_broad_phase(dt_ - t);
     queue_ = {};
     for (int i = 0; i < n_; ++i) {
       ++count_[i];
-      predict(i, dt);
+      predict(i);
     }
   }
 
@@ -210,24 +287,25 @@ class Home final : public Engine {
     t_local_[i] = t;
   }
 
-  // Queues ball i's earliest collision before dt, if any.
-  void predict(int i, double dt) {
+  // Queues ball i's earliest collision before the end of the step, if any. A touching pair (or
+  // ball and wall) approaching so slowly that it would close less than the slop over the step is
+  // not an event: that is round-off, and the next contact pass takes care of it.
+  void predict(int i) {
     Event best{kNever, i, 0, count_[i], 0};
     const double ti = t_local_[i];
+    const double v_tol = velocity_tolerance();
     if (walls_)
       for (int axis = 0; axis < 2; ++axis) {
         const double v = v_(i, axis);
         if (v == 0) continue;
         const int side = v < 0 ? 0 : 1;
         const double gap = wall_gap(i, axis, side);
-        const double touch = s_.contact_slop * r_(i);
-        if (gap < touch && std::abs(v) * dt_ < touch) continue;  // resting: closes less than the slop
+        if (gap < touch_wall(i) && std::abs(v) < v_tol) continue;
         // Touching or overlapping by round-off and approaching: collide now (Bannerman et al.,
         // "Stable algorithms for event-driven molecular dynamics", J. Comput. Phys. 2014).
         const double t = ti + std::max(gap, 0.0) / std::abs(v);
         if (t < best.t) best = {t, i, -1 - (2 * axis + side), count_[i], 0};
       }
-    const double approach_eps = 1e-12 * vbound_;  // slower approach is numerical noise, not motion
     grid_.for_each_near(start_(i, 0), start_(i, 1), [&](int j) {
       if (j == i) return;
       const double t0 = std::max(ti, t_local_[j]);
@@ -235,45 +313,39 @@ class Home final : public Engine {
       const double dy = (p_(i, 1) + v_(i, 1) * (t0 - ti)) - (p_(j, 1) + v_(j, 1) * (t0 - t_local_[j]));
       const double wx = v_(i, 0) - v_(j, 0), wy = v_(i, 1) - v_(j, 1);
       const double b = dx * wx + dy * wy;  // < 0: approaching
+      if (b >= 0) return;
       const double d2 = dx * dx + dy * dy;
-      if (b >= -approach_eps * std::sqrt(d2)) return;
       const double rs = r_(i) + r_(j);
       const double c = d2 - rs * rs;
-      const double a = wx * wx + wy * wy;
       double t;
-      if (c <= 2 * rs * s_.contact_slop * rs) {
-        // Touching (within the slop) and approaching. So slow an approach that it closes less than
-        // the slop over the step is round-off, not motion: counting it would start a cascade of
-        // zero-time events whose speeds shrink geometrically (an inelastic collapse of noise).
-        if (-b * dt_ < s_.contact_slop * rs * std::sqrt(d2)) return;
-        t = t0;  // collide now
+      if (std::sqrt(d2) - rs < touch_pair(i, j)) {
+        if (-b < v_tol * std::sqrt(d2)) return;
+        t = t0;  // touching (or overlapping by round-off) and approaching: collide now
       } else {
+        const double a = wx * wx + wy * wy;
         const double disc = b * b - a * c;
         if (disc < 0) return;
         t = t0 + c / (-b + std::sqrt(disc));  // the smaller root, in the cancellation-free form
       }
       if (t < best.t) best = {t, i, j, count_[i], count_[j]};
     });
-    if (best.t <= dt) queue_.push(best);
+    if (best.t <= dt_) queue_.push(best);
   }
 
   // Restitution on the normal component only; tangential velocity is untouched (frictionless).
-  void collide_pair(int i, int j, double v_rest) {
+  void collide_pair(int i, int j) {
     double nx = p_(i, 0) - p_(j, 0), ny = p_(i, 1) - p_(j, 1);
     const double d = std::hypot(nx, ny);
     if (d == 0) return;  // coincident centres: no normal exists
     nx /= d, ny /= d;
     const double vn = relative_normal_velocity(i, j, nx, ny);
     if (vn >= 0) return;
-    const double e = -vn > v_rest ? e_ : 0.0;
-    const double J = -(1.0 + e) * vn / (inv_m_(i) + inv_m_(j));
-    apply_impulse(i, j, nx, ny, J);
+    apply_impulse(i, j, nx, ny, -(1.0 + e_) * vn / (inv_m_(i) + inv_m_(j)));
   }
 
-  void collide_wall(int i, int code, double v_rest) {
+  void collide_wall(int i, int code) {
     const int axis = (-1 - code) / 2;
-    const double vn = std::abs(v_(i, axis));
-    v_(i, axis) = -(vn > v_rest ? e_ : 0.0) * v_(i, axis);
+    v_(i, axis) = -e_ * v_(i, axis);
   }
 
   HomeSettings s_;
@@ -283,16 +355,21 @@ class Home final : public Engine {
   Container box_;
   bool walls_;
   Eigen::VectorXd r_, inv_m_;
-  double rmax_ = 0;
-  Eigen::MatrixX2d p_, v_, start_;
+  double rmax_;
+  Eigen::MatrixX2d p_, v_;
+  Eigen::MatrixX2d start_;        // positions at the start of the step: the grid is built on them
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
+  std::vector<uint32_t> stamp_;   // cluster membership: stamp_[b] == stamp_now_
+  uint32_t stamp_now_ = 0;
+  std::vector<int> cluster_;
+  double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
+  double v_rest_ = 0;             // this step's resting-impact speed (m/s)
   double vbound_ = 0;             // speed the broad phase allows for this step (m/s)
   UniformGrid grid_;
   std::vector<Contact> contacts_;
   std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
-  double t_ = 0;
 };
 
 }  // namespace
@@ -301,9 +378,10 @@ EngineEntry home_engine() {
   EngineInfo info;
   info.name = "home";
   info.version = "0.1";
-  info.summary = "our solver: symplectic Euler + resting-contact pass + exact event-driven drift in each step";
+  info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
-  return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
+  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
+            if (profile != "default") throw InputError(fmt::format("home: unknown profile '{}' (known: default)", profile));
             HomeSettings s;
             SettingsReader r("home", overrides);
             r.get("contact_iterations", s.contact_iterations);
@@ -312,7 +390,7 @@ EngineEntry home_engine() {
             r.get("max_events_per_ball", s.max_events_per_ball);
             r.finish();
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
-            if (s.contact_slop < 0) throw InputError("settings.home.contact_slop: must be >= 0");
+            if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
             return std::unique_ptr<Engine>(std::make_unique<Home>(scene, s));
           }};

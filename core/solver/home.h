@@ -15,8 +15,9 @@ struct HomeSettings {
   /// Zero gravity gives 0: every impact bounces with the scene's restitution. (m/s)
   double rest_velocity = -1;
   /// Gap below which two balls (or a ball and a wall) count as touching, as a fraction of the
-  /// radius sum (or the radius). (dimensionless)
-  double contact_slop = 1e-9;
+  /// radius sum (or the radius). An approach that closes less than this over a step is round-off,
+  /// not motion. (dimensionless)
+  double contact_slop = 1e-6;
   /// Safety valve: more events than this per ball in one step is reported as a failure instead of
   /// running on (it would mean an inelastic collapse the contact pass did not resolve). (count)
   int max_events_per_ball = 1000;

@@ -4,7 +4,10 @@
 #include <unordered_set>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "engine_settings.h"
+#include "input_error.h"
 
 namespace ballbench {
 namespace {
@@ -154,7 +157,9 @@ EngineEntry home_seed_engine() {
   info.summary = "faithful port of the 2017 thesis's MATLAB programs (sticks and tunnels on purpose)";
   info.caps.any_restitution = true;
   info.caps.continuous_collision = false;
-  return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
+  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
+            if (profile != "default")
+              throw InputError(fmt::format("home-seed: unknown profile '{}' (known: default)", profile));
             HomeSeedSettings s;
             SettingsReader r("home-seed", overrides);
             r.get("flags", s.flags, {"per-ball", "per-pair"});

@@ -1,0 +1,145 @@
+#!/usr/bin/env python3
+"""Recompute ballbench's metrics from a trajectory CSV, independently of the C++ code, and compare
+them with the JSON results. Standard library only (tomllib reads the scene file).
+
+usage: recompute_metrics.py SCENE.toml TRAJECTORY.csv RESULTS.json
+
+It rebuilds the scene's radii and masses (explicit [[ball]] only, or a results file whose scene
+has random balls: then radii and masses must be uniform and are taken from [random]), follows the
+glossary's definitions (reports/REPORT.md) and exits 1 naming every metric that disagrees.
+"""
+import csv
+import json
+import math
+import sys
+import tomllib
+from collections import defaultdict
+
+
+def scene_balls(scene):
+    radii, masses = [], []
+    for b in scene.get("ball", []):
+        radii.append(b["radius"])
+        masses.append(b.get("mass", 1.0))
+    rnd = scene.get("random")
+    for group in ([rnd] if isinstance(rnd, dict) else rnd or []):
+        radii += [group["radius"]] * group["count"]
+        masses += [group.get("mass", 1.0)] * group["count"]
+    return radii, masses
+
+
+def recompute(scene, samples, radii, masses, tol, stuck):
+    g = scene.get("gravity", [0.0, 0.0])
+    box = scene.get("container")
+    is_box = box is not None and box.get("kind", "box") == "box"
+    n = len(radii)
+    # Potential reference: the lowest point of the box along g (or the lowest initial ball).
+    if is_box:
+        (x0, y0), (x1, y1) = box["min"], box["max"]
+        ref = min(-(g[0] * x + g[1] * y) for x in (x0, x1) for y in (y0, y1))
+    else:
+        ref = min(-(g[0] * x + g[1] * y) for x, y, _, _ in samples[0])
+
+    def energy(s):
+        return sum(m * (0.5 * (vx * vx + vy * vy) + (-(g[0] * x + g[1] * y) - ref)) for m, (x, y, vx, vy) in zip(masses, s))
+
+    def momentum(s):
+        return (sum(m * b[2] for m, b in zip(masses, s)), sum(m * b[3] for m, b in zip(masses, s)))
+
+    def beyond(x, y):
+        return is_box and (x < box["min"][0] or x > box["max"][0] or y < box["min"][1] or y > box["max"][1])
+
+    e0, p0 = energy(samples[0]), momentum(samples[0])
+    out = {"energy_initial": e0, "energy_final": energy(samples[-1]), "momentum_drift": 0.0, "energy_abs_drift": 0.0,
+           "tunnelling_wall": 0, "tunnelling_pair": 0, "sticking_wall": 0, "sticking_pair": 0}
+    pen_max, pen_sum, pen_count = 0.0, 0.0, 0
+    pair_run, wall_run = defaultdict(int), [0] * n
+    prev = None
+    for s in samples:
+        out["energy_abs_drift"] = max(out["energy_abs_drift"], abs(energy(s) - e0))
+        p = momentum(s)
+        out["momentum_drift"] = max(out["momentum_drift"], math.hypot(p[0] - p0[0], p[1] - p0[1]))
+        if prev is not None:
+            out["tunnelling_wall"] += sum(1 for a, b in zip(prev, s) if not beyond(a[0], a[1]) and beyond(b[0], b[1]))
+        new_run = defaultdict(int)
+        for i in range(n):
+            for j in range(i + 1, n):
+                rs = radii[i] + radii[j]
+                dx, dy = s[i][0] - s[j][0], s[i][1] - s[j][1]
+                d = math.hypot(dx, dy)
+                if d < rs:
+                    depth = rs - d
+                    rel = depth / min(radii[i], radii[j])
+                    pen_max, pen_sum, pen_count = max(pen_max, rel), pen_sum + rel, pen_count + 1
+                    if depth > tol * rs:
+                        new_run[(i, j)] = pair_run[(i, j)] + 1
+                        if new_run[(i, j)] == stuck + 1:
+                            out["sticking_pair"] += 1
+                if prev is not None:
+                    ax, ay = prev[i][0] - prev[j][0], prev[i][1] - prev[j][1]
+                    if math.hypot(ax, ay) >= rs and d >= rs:
+                        wx, wy = dx - ax, dy - ay
+                        ww = wx * wx + wy * wy
+                        t = min(1.0, max(0.0, -(ax * wx + ay * wy) / ww)) if ww > 0 else 0.0
+                        if math.hypot(ax + t * wx, ay + t * wy) < (1 - tol) * rs:
+                            out["tunnelling_pair"] += 1
+        pair_run = new_run
+        if is_box:
+            for i, (x, y, _, _) in enumerate(s):
+                gap = min(x - box["min"][0], box["max"][0] - x, y - box["min"][1], box["max"][1] - y)
+                depth = radii[i] - gap
+                if depth > 0:
+                    pen_max, pen_sum, pen_count = max(pen_max, depth / radii[i]), pen_sum + depth / radii[i], pen_count + 1
+                wall_run[i] = wall_run[i] + 1 if depth > tol * radii[i] else 0
+                if wall_run[i] == stuck + 1:
+                    out["sticking_wall"] += 1
+        prev = s
+    out["penetration_max"] = pen_max
+    out["penetration_mean"] = pen_sum / pen_count if pen_count else 0.0
+    return out
+
+
+def main():
+    scene_path, csv_path, json_path = sys.argv[1:4]
+    with open(scene_path, "rb") as f:
+        scene = tomllib.load(f)
+    results = json.load(open(json_path))
+    radii, masses = scene_balls(scene)
+    runs = defaultdict(lambda: defaultdict(list))
+    with open(csv_path) as f:
+        for row in csv.DictReader(f):
+            runs[row["engine"]][int(row["step"])].append((float(row["x"]), float(row["y"]), float(row["vx"]), float(row["vy"])))
+    bad = []
+    for r in results:
+        label = r["engine"] if r["profile"] == "default" else f'{r["engine"]}/{r["profile"]}'
+        steps = runs[label]
+        samples = [steps[k] for k in sorted(steps)]
+        if len(samples) != r["steps_done"] + 1 or any(len(s) != len(radii) for s in samples):
+            bad.append(f"{label}: trajectory has {len(samples)} samples, JSON says {r['steps_done']} steps")
+            continue
+        cfg = r["metrics_config"]
+        got = recompute(scene, samples, radii, masses, cfg["contact_tolerance"], cfg["stuck_samples"])
+        want = {"energy_initial": r["energy"]["initial"], "energy_final": r["energy"]["final"],
+                "energy_abs_drift": r["energy"]["max_abs_drift"], "momentum_drift": r["momentum"]["max_abs_drift"],
+                "tunnelling_wall": r["tunnelling"]["wall"], "tunnelling_pair": r["tunnelling"]["pair"],
+                "sticking_wall": r["sticking"]["wall"], "sticking_pair": r["sticking"]["pair"],
+                "penetration_max": r["penetration"]["max"], "penetration_mean": r["penetration"]["mean"]}
+        for k, w in want.items():
+            # Sums of the same doubles in another order: agree to round-off (1e-9 relative of the scale).
+            scale = max(1.0, abs(got["energy_initial"])) if k.startswith("energy") else max(1.0, abs(w))
+            ok = got[k] == w if isinstance(w, int) else abs(got[k] - w) <= 1e-9 * scale
+            if not ok:
+                bad.append(f"{label}: {k} recomputed {got[k]!r}, JSON {w!r}")
+        if r["energy"]["max_rel_drift"] is not None and got["energy_initial"] > 0:
+            rel = got["energy_abs_drift"] / got["energy_initial"]
+            if abs(rel - r["energy"]["max_rel_drift"]) > 1e-9 * max(1.0, rel):
+                bad.append(f"{label}: max_rel_drift recomputed {rel!r}, JSON {r['energy']['max_rel_drift']!r}")
+        print(f"{label}: {len(samples)} samples checked")
+    for b in bad:
+        print("MISMATCH", b)
+    print(f"{len(results) - len({b.split(':')[0] for b in bad})} passed, {len({b.split(':')[0] for b in bad})} failed")
+    sys.exit(1 if bad else 0)
+
+
+if __name__ == "__main__":
+    main()
