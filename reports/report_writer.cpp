@@ -173,8 +173,10 @@ std::string render_report(const ReportInputs& in) {
       "without gravity; walls and gravity change it.\n");
   put("- **tunnelling wall**: balls whose centre went from inside the box to beyond a wall between two samples.\n");
   put("- **tunnelling pair**: pairs apart in two consecutive samples whose relative motion, taken as a straight line "
-      "between them, came closer than {:.0f}% of their radius sum: they passed through each other. A resolved "
-      "bounce never counts.\n", 100 * (1 - cfg.contact_tolerance));
+      "between them, came closer than {:.0f}% of their radius sum less |dw| h / 4 (dw: the pair's change of relative "
+      "velocity between the samples, h: the time between them; a path bent by a collision with a third ball strays at "
+      "most that far from the straight line): they passed through each other. A resolved bounce never counts.\n",
+      100 * (1 - cfg.contact_tolerance));
   put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
       "than {:.0f}% of its radius) for more than {} consecutive samples; one event per episode.\n",
       100 * cfg.contact_tolerance, 100 * cfg.contact_tolerance, cfg.stuck_samples);

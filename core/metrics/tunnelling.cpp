@@ -33,13 +33,15 @@ int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd
   const Eigen::MatrixX2d mid = 0.5 * (prev.pos + cur.pos);
   const double dmax = std::sqrt((cur.pos - prev.pos).rowwise().squaredNorm().maxCoeff());
   grid.build(mid, 2.0 * radius.maxCoeff() + dmax);
+  const double h = cur.t - prev.t;
   int count = 0;
   grid.for_each_candidate_pair([&](int i, int j) {
     const double rs = radius(i) + radius(j);
     const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
     const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
     if (d0.norm() < rs || d1.norm() < rs) return;  // overlapping in a sample: sticking's business
-    if (closest_approach(d0, d1) < (1.0 - tolerance) * rs) ++count;
+    const double bend = 0.25 * h * ((cur.vel.row(i) - cur.vel.row(j)) - (prev.vel.row(i) - prev.vel.row(j))).norm();
+    if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
   });
   return count;
 }

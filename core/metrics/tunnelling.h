@@ -16,10 +16,14 @@ int wall_escapes(const State& prev, const State& cur, const Container& box);
 bool beyond_wall(const Eigen::Vector2d& p, const Container& box);
 
 // Pairs apart in both samples (distance >= r_i + r_j) whose relative motion, taken as a straight
-// line between the samples, came closer than (1 - tolerance) (r_i + r_j): they passed through each
-// other. A resolved bounce never counts: both samples then lie on the outer side of the tangent at
-// the contact point, and so does the line between them. `tolerance` absorbs the rounding of soft
-// contacts that bend the straight line slightly (see MetricsConfig).
+// line between the samples, came closer than (1 - tolerance) (r_i + r_j) - |dw| h / 4: they passed
+// through each other. A resolved bounce of the pair never counts: both samples then lie on the
+// outer side of the tangent at the contact point, and so does the line between them. When one of
+// the two collided with a third ball between the samples, the true path bends: a path with one
+// kink of relative-velocity change dw over a sample interval h strays at most |dw| h / 4 from the
+// chord, so that much of a dip is explained by the velocities the samples show. Two balls that
+// pass through each other without interacting keep dw = 0 and are counted in full. `tolerance`
+// absorbs the rounding of soft contacts (see MetricsConfig).
 int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
                       UniformGrid& grid);
 
