@@ -1,0 +1,13 @@
+#pragma once
+// The subcommands of `ballbench`, one file each (cmd_*.cpp). Each adds itself to the app with a
+// callback that runs when it is chosen; errors are thrown (InputError for the user's) and turned
+// into one line by main.cpp.
+#include <CLI/CLI.hpp>
+
+namespace ballbench::cli {
+
+void add_list(CLI::App& app);
+void add_run(CLI::App& app);
+void add_report(CLI::App& app);
+
+}  // namespace ballbench::cli

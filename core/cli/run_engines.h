@@ -1,0 +1,34 @@
+#pragma once
+// Running several engines (and their profiles) on one scene, and printing the result table:
+// shared by the subcommands.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine.h"
+#include "result.h"
+#include "runner.h"
+#include "scene.h"
+
+namespace ballbench::cli {
+
+// The profiles to run for one engine: "" = its default; "all" = every profile it has; a name =
+// that profile if the engine has it, else its default (so `--profile tuned` names every external
+// engine's tuned profile while our solvers, which have one profile, run theirs).
+std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile);
+
+// Throws InputError if no engine in `engines` has `profile`.
+void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile);
+
+// Every engine x profile on `scene`; `base.overrides` holds settings per engine name.
+std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                            const std::string& profile, const RunOptions& base, bool quiet);
+
+void print_table(const std::vector<Result>& results);
+
+// "--set home.contact_iterations=4" -> overrides["home"]["contact_iterations"] = 4. The value is
+// read as JSON (numbers, true/false) and falls back to a plain string.
+void add_setting(nlohmann::json& overrides, const std::string& item);
+
+}  // namespace ballbench::cli

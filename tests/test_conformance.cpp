@@ -1,0 +1,246 @@
+// The engine conformance suite: analytic cases every engine (ours and the adapters, every profile)
+// is held to, with one table of tolerances and expected failures below. An engine that cannot meet
+// a case is an expected failure with its measured figure and the reason; if it starts passing, the
+// test fails so the table gets updated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "registry.h"
+#include "runner.h"
+#include "scene_loader.h"
+
+namespace ballbench {
+namespace {
+
+enum class Case { WallBounceElastic, WallBounceLossy, HeadOn, Drop, SeedBoxContained };
+
+const char* case_name(Case c) {
+  switch (c) {
+    case Case::WallBounceElastic: return "WallBounceElastic";
+    case Case::WallBounceLossy: return "WallBounceLossy";
+    case Case::HeadOn: return "HeadOn";
+    case Case::Drop: return "Drop";
+    case Case::SeedBoxContained: return "SeedBoxContained";
+  }
+  return "?";
+}
+
+struct Expectation {
+  double tolerance;        // the largest error (relative unless the case says) that passes
+  const char* why;         // where the number comes from
+  bool expected_failure = false;
+};
+
+// Float engines (Box2D, Bullet) store positions and velocities in 32-bit floats: one rounding is
+// 6e-8 relative, and a few thousand steps accumulate ~1e-4 on the figures below.
+constexpr double kFloatRun = 1e-4;
+// Double engines: one impulse's round-off, ~1e-15, times the number of impacts (< 100).
+constexpr double kDoubleRun = 1e-12;
+
+// The tolerance table, keyed by "engine/profile" and case; a missing entry uses kDefault.
+const std::map<std::string, std::map<Case, Expectation>>& table() {
+  static const std::map<std::string, std::map<Case, Expectation>> t = {
+      {"home/default",
+       {{Case::WallBounceElastic, {kDoubleRun, "exact reflection in double"}},
+        {Case::WallBounceLossy, {kDoubleRun, "exact reflection in double"}},
+        {Case::HeadOn, {kDoubleRun, "one exact impulse in double"}},
+        {Case::Drop, {1e-12, "symplectic Euler's known offset g dt t / 2 is subtracted; the rest is round-off"}},
+        {Case::SeedBoxContained, {0, "event-driven walls: no ball may leave"}}}},
+      {"exact/default",
+       {{Case::WallBounceElastic, {kDoubleRun, "exact reflection in double"}},
+        {Case::WallBounceLossy, {kDoubleRun, "exact reflection in double"}},
+        {Case::HeadOn, {kDoubleRun, "one exact impulse in double"}},
+        {Case::Drop, {1e-9, "exact parabola; compared without the Euler offset (see Drop)"}},
+        {Case::SeedBoxContained, {0, "event-driven walls: no ball may leave"}}}},
+      // ODE (double) solves contacts as a soft LCP (CFM > 0), so a bounce is met to ~1e-7, not to
+      // round-off. Measured: elastic wall 3.2e-7, lossy wall 1.6e-7, head-on 2.3e-8.
+      {"ode/tuned",
+       {{Case::WallBounceElastic, {1e-6, "soft contact (CFM), measured 3.2e-7"}},
+        {Case::WallBounceLossy, {1e-6, "soft contact (CFM), measured 1.6e-7"}},
+        {Case::HeadOn, {1e-7, "soft contact (CFM), measured 2.3e-8"}},
+        {Case::SeedBoxContained, {0, "no CCD: balls at up to 35 m/s cross 0.35 m per step; measured 3 escapes", true}}}},
+      {"ode/stock",
+       {{Case::WallBounceElastic, {1e-6, "soft contact (CFM), measured 3.2e-7"}},
+        {Case::WallBounceLossy, {1e-6, "soft contact (CFM), measured 1.6e-7"}},
+        {Case::HeadOn, {1e-7, "soft contact (CFM), measured 2.3e-8"}},
+        {Case::SeedBoxContained, {0, "no CCD; quickstep; measured 7 escapes", true}}}},
+      // Bullet as shipped: restitution through the penetration-recovery path gains energy
+      // (measured: elastic wall speed +174%, head-on off by 0.3 m/s) and nothing stops fast balls.
+      {"bullet/stock",
+       {{Case::WallBounceElastic, {kFloatRun, "measured 1.74: energy gained at every wall impact", true}},
+        {Case::WallBounceLossy, {kFloatRun, "measured 0.59: as above", true}},
+        {Case::HeadOn, {kFloatRun, "measured 0.3 m/s off eq. 11-12", true}},
+        {Case::SeedBoxContained, {0, "no CCD as shipped: measured 2 escapes", true}}}},
+      // Box2D as shipped ignores restitution below 1 m/s per fixture: the lossy ball stops bouncing
+      // once its speed falls under it (3 m/s * 0.8^5 = 0.98 m/s).
+      {"box2d/stock", {{Case::WallBounceLossy, {kFloatRun, "restitution threshold 1 m/s: the ball stops at the wall", true}}}},
+  };
+  return t;
+}
+
+// Until measured otherwise: the float engines are held to float round-off, the double ones to
+// double round-off. Measured exceptions are in table().
+Expectation lookup(const std::string& label, Case c, bool is_float) {
+  const auto& t = table();
+  if (auto it = t.find(label); it != t.end())
+    if (auto jt = it->second.find(c); jt != it->second.end()) return jt->second;
+  if (c == Case::SeedBoxContained) return {0, "no ball may leave the box"};
+  return {is_float ? kFloatRun : 1e-9, "default: precision of the engine's number type over the run"};
+}
+
+Scene scene_from(const std::string& text) { return parse_scene(text, "conformance.toml"); }
+
+std::unique_ptr<Engine> build(const std::string& engine, const std::string& profile, const Scene& s) {
+  return find_engine(engine).create(s, profile, merged_settings(s, engine, {}));
+}
+
+// One ball between two walls 2 apart, speed 3, 10 s: it bounces 16 times (7 at e = 0.8). Figure: the relative
+// error of the final speed against e^k v0, k counted from the sign changes of vx.
+double wall_bounce(const std::string& engine, const std::string& profile, double e) {
+  const Scene s = scene_from(fmt::format(R"(
+dt = 0.01
+duration = 10.0
+restitution = {}
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[[ball]]
+pos = [0.0, 0.0]
+vel = [3.0, 0.0]
+radius = 0.1
+)", e));
+  auto eng = build(engine, profile, s);
+  State st;
+  double vx = 3.0;
+  int bounces = 0;
+  for (long k = 0; k < s.steps(); ++k) {
+    eng->step(s.dt);
+    eng->read(st);
+    if ((st.vel(0, 0) > 0) != (vx > 0)) ++bounces;
+    vx = st.vel(0, 0);
+  }
+  const double want = std::pow(e, bounces) * 3.0;
+  if (bounces == 0) return HUGE_VAL;
+  return std::abs(std::hypot(st.vel(0, 0), st.vel(0, 1)) - want) / want;
+}
+
+// Masses 1 and 3, v1 = 2, v2 = 0, e = 1, in open space: thesis eq. 11-12 give v1' = -1, v2' = 1.
+double head_on(const std::string& engine, const std::string& profile) {
+  const Scene s = scene_from(R"(
+dt = 0.01
+duration = 1.0
+[[ball]]
+pos = [-1.0, 0.0]
+vel = [2.0, 0.0]
+radius = 0.25
+mass = 1.0
+[[ball]]
+pos = [0.0, 0.0]
+radius = 0.25
+mass = 3.0
+)");
+  auto eng = build(engine, profile, s);
+  for (long k = 0; k < s.steps(); ++k) eng->step(s.dt);
+  State st;
+  eng->read(st);
+  return std::max({std::abs(st.vel(0, 0) + 1.0), std::abs(st.vel(1, 0) - 1.0), std::abs(st.vel(0, 1)),
+                   std::abs(st.vel(1, 1))});
+}
+
+// A ball dropped from y = 4 (floor at -5, radius 0.25) with v0 = (1, 0), g = -9.81, before it
+// lands (~1.34 s): the largest position error against s0 + v0 t + g t^2 / 2, relative to the drop
+// height 9. Time-stepped engines integrate with symplectic Euler, whose position leads the
+// parabola by g dt t / 2 (thesis fig. 1's lag, the other way round for velocity-first): that known
+// offset is taken off for them, so the figure measures the engine, not the integrator's order.
+double drop(const std::string& engine, const std::string& profile) {
+  const Scene s = scene_from(R"(
+dt = 0.01
+duration = 1.2
+gravity = [0.0, -9.81]
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [0.0, 4.0]
+vel = [1.0, 0.0]
+radius = 0.25
+)");
+  auto eng = build(engine, profile, s);
+  const bool time_stepped = engine != "exact";
+  State st;
+  double worst = 0;
+  for (long k = 1; k <= s.steps(); ++k) {
+    eng->step(s.dt);
+    eng->read(st);
+    const double t = k * s.dt;
+    double y = 4.0 - 9.81 * t * t / 2;
+    if (time_stepped) y -= 9.81 * s.dt * t / 2;
+    worst = std::max({worst, std::abs(st.pos(0, 1) - y) / 9.0, std::abs(st.pos(0, 0) - t) / 9.0});
+  }
+  return worst;
+}
+
+// seed-box, 3000 steps: balls that left the box (wall escapes, plus balls outside at the end).
+double seed_box_escapes(const std::string& engine, const std::string& profile) {
+  RunOptions o;
+  o.profile = profile;
+  const Scene s = load_scene("seed-box");
+  const Result r = run_engine(s, find_engine(engine), o);
+  if (r.status != "ok") return HUGE_VAL;
+  return r.metrics.tunnelling_wall;
+}
+
+struct Param {
+  std::string engine, profile;
+  Case c;
+};
+
+class Conformance : public ::testing::TestWithParam<Param> {};
+
+TEST_P(Conformance, MeetsTheTable) {
+  const auto& [engine, profile, c] = GetParam();
+  const bool is_float = engine == "box2d" || engine == "bullet";
+  const std::string label = engine + "/" + profile;
+  double figure = 0;
+  switch (c) {
+    case Case::WallBounceElastic: figure = wall_bounce(engine, profile, 1.0); break;
+    case Case::WallBounceLossy: figure = wall_bounce(engine, profile, 0.8); break;
+    case Case::HeadOn: figure = head_on(engine, profile); break;
+    case Case::Drop: figure = drop(engine, profile); break;
+    case Case::SeedBoxContained: figure = seed_box_escapes(engine, profile); break;
+  }
+  const Expectation x = lookup(label, c, is_float);
+  RecordProperty("figure", fmt::format("{:.3g}", figure));
+  std::printf("conformance %s %s: figure %.3g, tolerance %.3g%s\n", label.c_str(), case_name(c), figure, x.tolerance,
+              x.expected_failure ? " (expected failure)" : "");
+  if (x.expected_failure)
+    EXPECT_GT(figure, x.tolerance) << label << " now meets " << case_name(c) << ": update the table (" << x.why << ")";
+  else
+    EXPECT_LE(figure, x.tolerance) << label << " " << case_name(c) << " (" << x.why << ")";
+}
+
+std::vector<Param> all_params() {
+  std::vector<Param> out;
+  for (const auto& e : engine_registry()) {
+    if (e.info.name == "home-seed") continue;  // reproduces the thesis's problems on purpose
+    for (const auto& p : e.info.profiles)
+      for (Case c : {Case::WallBounceElastic, Case::WallBounceLossy, Case::HeadOn, Case::Drop, Case::SeedBoxContained})
+        out.push_back({e.info.name, p, c});
+  }
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, Conformance, ::testing::ValuesIn(all_params()), [](const auto& info) {
+  std::string n = info.param.engine + "_" + info.param.profile + "_" + case_name(info.param.c);
+  for (char& ch : n)
+    if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
+  return n;
+});
+
+}  // namespace
+}  // namespace ballbench
