@@ -5,7 +5,10 @@
 
 #include <fmt/format.h>
 
+#include "box2d/box2d_engine.h"
+#include "bullet/bullet_engine.h"
 #include "input_error.h"
+#include "ode/ode_engine.h"
 #include "solver/home.h"
 #include "solver/home_seed.h"
 
@@ -15,6 +18,9 @@ const std::vector<EngineEntry>& engine_registry() {
   static const std::vector<EngineEntry> engines = {
       home_seed_engine(),
       home_engine(),
+      box2d_engine(),
+      bullet_engine(),
+      ode_engine(),
   };
   return engines;
 }

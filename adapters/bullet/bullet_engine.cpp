@@ -1,0 +1,236 @@
+#include "bullet/bullet_engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+#include <fmt/format.h>
+
+#include "engine_settings.h"
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+// Bullet works in float (btScalar); the harness in double. Conversions happen only here.
+btVector3 to_bt(double x, double y) { return btVector3(btScalar(x), btScalar(y), btScalar(0)); }
+
+// "3.24" from btGetVersion()'s 324.
+std::string bullet_version() {
+  const int v = btGetVersion();
+  return fmt::format("{}.{:02d}", v / 100, v % 100);
+}
+
+class BulletWorld final : public Engine {
+ public:
+  BulletWorld(const Scene& scene, const BulletSettings& s)
+      : s_(s),
+        dispatcher_(&collision_config_),
+        world_(&dispatcher_, &broadphase_, &solver_, &collision_config_) {
+    world_.setGravity(btVector3(btScalar(scene.gravity.x()), btScalar(scene.gravity.y()), 0));
+    world_.setApplySpeculativeContactRestitution(s_.speculative_contact_restitution);
+
+    btContactSolverInfo& info = world_.getSolverInfo();
+    info.m_numIterations = s_.solver_iterations;
+    info.m_splitImpulse = s_.split_impulse ? 1 : 0;
+    info.m_splitImpulsePenetrationThreshold = btScalar(s_.split_impulse_penetration_threshold);
+    info.m_erp = btScalar(s_.erp);
+    info.m_erp2 = btScalar(s_.erp2);
+    info.m_restitutionVelocityThreshold = btScalar(s_.restitution_velocity_threshold);
+    info.m_warmstartingFactor = btScalar(s_.warmstarting_factor);
+    info.m_linearSlop = btScalar(s_.linear_slop);
+
+    // Bullet combines a pair's restitution and friction as the product of the two bodies' values
+    // (btManifoldResult::calculateCombinedRestitution / ...Friction). Every body, walls included,
+    // gets the square root, so every pair gets exactly the scene's value (up to float rounding).
+    // A contact-added callback could set the pair value instead, but Bullet's callback hooks are
+    // process-wide globals, shared by every world in the process.
+    restitution_ = btScalar(std::sqrt(scene.restitution));
+    friction_ = btScalar(std::sqrt(scene.friction));
+
+    if (scene.container.kind == ContainerKind::Box) add_walls(scene.container, scene.radius.maxCoeff());
+    add_balls(scene);
+  }
+
+  ~BulletWorld() override {
+    for (auto& body : bodies_) world_.removeRigidBody(body.get());
+  }
+
+  void step(double dt) override {
+    // maxSubSteps = 1 with fixedTimeStep = dt: exactly one internal step of dt per harness step
+    // (Bullet's accumulator starts at 0 and timeStep == fixedTimeStep), never an interpolated one.
+    world_.stepSimulation(btScalar(dt), 1, btScalar(dt));
+    t_ += dt;
+  }
+
+  void read(State& out) const override {
+    const int n = static_cast<int>(balls_.size());
+    out.resize(n);
+    out.t = t_;
+    for (int i = 0; i < n; ++i) {
+      const btVector3& p = balls_[i]->getWorldTransform().getOrigin();
+      const btVector3& v = balls_[i]->getLinearVelocity();
+      out.pos(i, 0) = p.x(), out.pos(i, 1) = p.y();
+      out.vel(i, 0) = v.x(), out.vel(i, 1) = v.y();
+    }
+  }
+
+  nlohmann::json settings() const override {
+    return {{"solver_iterations", s_.solver_iterations},
+            {"split_impulse", s_.split_impulse},
+            {"split_impulse_penetration_threshold", s_.split_impulse_penetration_threshold},
+            {"erp", s_.erp},
+            {"erp2", s_.erp2},
+            {"restitution_velocity_threshold", s_.restitution_velocity_threshold},
+            {"warmstarting_factor", s_.warmstarting_factor},
+            {"linear_slop", s_.linear_slop},
+            {"contact_processing_threshold", s_.contact_processing_threshold},
+            {"ccd_motion_threshold", s_.ccd_motion_threshold},
+            {"ccd_swept_sphere_radius", s_.ccd_swept_sphere_radius},
+            {"speculative_contact_restitution", s_.speculative_contact_restitution}};
+  }
+
+  double out_of_plane() const override {
+    double m = 0;
+    for (const btRigidBody* b : balls_) {
+      m = std::max(m, std::abs(double(b->getWorldTransform().getOrigin().z())));
+      m = std::max(m, std::abs(double(b->getLinearVelocity().z())));
+    }
+    return m;
+  }
+
+ private:
+  btRigidBody* add_body(std::unique_ptr<btCollisionShape> shape, double mass, const btVector3& at) {
+    btVector3 inertia(0, 0, 0);
+    if (mass > 0) shape->calculateLocalInertia(btScalar(mass), inertia);
+    btRigidBody::btRigidBodyConstructionInfo ci(btScalar(mass), nullptr, shape.get(), inertia);
+    ci.m_startWorldTransform.setIdentity();
+    ci.m_startWorldTransform.setOrigin(at);
+    ci.m_linearDamping = 0;
+    ci.m_angularDamping = 0;
+    ci.m_restitution = restitution_;
+    ci.m_friction = friction_;
+    shapes_.push_back(std::move(shape));
+    bodies_.push_back(std::make_unique<btRigidBody>(ci));
+    btRigidBody* body = bodies_.back().get();
+    body->setContactProcessingThreshold(btScalar(s_.contact_processing_threshold));
+    return body;
+  }
+
+  // Four static slabs whose inner faces lie on the box bounds. Each is as thick as the box is
+  // wide, so no ball can cross one in a step, and long enough to close the corners with flat
+  // faces (Bullet's box shape rounds its own corners by the collision margin).
+  void add_walls(const Container& box, double rmax) {
+    const Eigen::Vector2d size = box.max - box.min;
+    const double t = std::max(size.x(), size.y());  // half thickness (m)
+    const double depth = std::max(t, 4 * rmax);     // half extent along z (m)
+    const Eigen::Vector2d c = 0.5 * (box.min + box.max);
+    auto slab = [&](double cx, double cy, double hx, double hy) {
+      auto shape = std::make_unique<btBoxShape>(btVector3(btScalar(hx), btScalar(hy), btScalar(depth)));
+      btRigidBody* wall = add_body(std::move(shape), 0.0, to_bt(cx, cy));
+      world_.addRigidBody(wall);
+    };
+    const double hx = 0.5 * size.x() + 2 * t, hy = 0.5 * size.y() + 2 * t;
+    slab(box.min.x() - t, c.y(), t, hy);
+    slab(box.max.x() + t, c.y(), t, hy);
+    slab(c.x(), box.min.y() - t, hx, t);
+    slab(c.x(), box.max.y() + t, hx, t);
+  }
+
+  void add_balls(const Scene& scene) {
+    const bool rotates = scene.friction > 0;
+    for (int i = 0; i < scene.n(); ++i) {
+      const double r = scene.radius(i);
+      btRigidBody* ball = add_body(std::make_unique<btSphereShape>(btScalar(r)), scene.mass(i),
+                                   to_bt(scene.initial.pos(i, 0), scene.initial.pos(i, 1)));
+      // Held to the plane: no z motion; no rotation unless friction can spin the ball, and then
+      // only about z.
+      ball->setLinearFactor(btVector3(1, 1, 0));
+      ball->setAngularFactor(rotates ? btVector3(0, 0, 1) : btVector3(0, 0, 0));
+      ball->setActivationState(DISABLE_DEACTIVATION);
+      ball->setLinearVelocity(to_bt(scene.initial.vel(i, 0), scene.initial.vel(i, 1)));
+      if (s_.ccd_motion_threshold > 0) {
+        ball->setCcdMotionThreshold(btScalar(s_.ccd_motion_threshold * r));
+        ball->setCcdSweptSphereRadius(btScalar(s_.ccd_swept_sphere_radius * r));
+      }
+      world_.addRigidBody(ball);  // after setLinearFactor: the world's gravity is applied here
+      balls_.push_back(ball);
+    }
+  }
+
+  BulletSettings s_;
+  btScalar restitution_ = 1, friction_ = 0;
+  // Declaration order is construction order: the world needs the four parts above it.
+  btDefaultCollisionConfiguration collision_config_;
+  btCollisionDispatcher dispatcher_;
+  btDbvtBroadphase broadphase_;
+  btSequentialImpulseConstraintSolver solver_;
+  btDiscreteDynamicsWorld world_;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<btRigidBody>> bodies_;  // walls and balls
+  std::vector<btRigidBody*> balls_;                   // scene order
+  double t_ = 0;
+};
+
+// Reads the overrides on top of a profile's settings.
+BulletSettings read_settings(const std::string& profile, const nlohmann::json& overrides) {
+  BulletSettings s = bullet_profile(profile);
+  SettingsReader r("bullet", overrides);
+  r.get("solver_iterations", s.solver_iterations);
+  r.get("split_impulse", s.split_impulse);
+  r.get("split_impulse_penetration_threshold", s.split_impulse_penetration_threshold);
+  r.get("erp", s.erp);
+  r.get("erp2", s.erp2);
+  r.get("restitution_velocity_threshold", s.restitution_velocity_threshold);
+  r.get("warmstarting_factor", s.warmstarting_factor);
+  r.get("linear_slop", s.linear_slop);
+  r.get("contact_processing_threshold", s.contact_processing_threshold);
+  r.get("ccd_motion_threshold", s.ccd_motion_threshold);
+  r.get("ccd_swept_sphere_radius", s.ccd_swept_sphere_radius);
+  r.get("speculative_contact_restitution", s.speculative_contact_restitution);
+  r.finish();
+  if (s.solver_iterations < 1) throw InputError("settings.bullet.solver_iterations: must be at least 1");
+  if (s.ccd_motion_threshold < 0) throw InputError("settings.bullet.ccd_motion_threshold: must be >= 0");
+  if (s.ccd_swept_sphere_radius < 0 || s.ccd_swept_sphere_radius > 1)
+    throw InputError("settings.bullet.ccd_swept_sphere_radius: must be in [0, 1] radii");
+  return s;
+}
+
+}  // namespace
+
+BulletSettings bullet_profile(const std::string& profile) {
+  BulletSettings s;  // Bullet's defaults: the "stock" profile
+  if (profile == "stock") return s;
+  if (profile != "tuned")
+    throw InputError(fmt::format("bullet: unknown profile '{}' (known: tuned, stock)", profile));
+  // What Bullet's maintainers recommend for restitution and fast bodies; sources in README.md.
+  s.solver_iterations = 50;
+  s.split_impulse = true;
+  s.split_impulse_penetration_threshold = 0.0;
+  s.restitution_velocity_threshold = 0.0;
+  s.warmstarting_factor = 0.0;
+  s.linear_slop = 0.0;
+  s.contact_processing_threshold = 0.0;
+  s.ccd_motion_threshold = 1.0;
+  s.ccd_swept_sphere_radius = 0.4;
+  return s;
+}
+
+EngineEntry bullet_engine() {
+  EngineInfo info;
+  info.name = "bullet";
+  info.version = bullet_version();
+  info.summary = "Bullet Physics (float), 3D spheres held to the plane; sequential impulses";
+  info.profiles = {"tuned", "stock"};
+  // As in the default profile, "tuned" (README.md says what "stock" lacks).
+  info.caps.any_restitution = true;        // restitution_velocity_threshold = 0
+  info.caps.continuous_collision = true;   // CCD clamping: no wall escapes; grazing ball passes remain
+  info.caps.deterministic = true;          // single-threaded world, fixed insertion order
+  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
+            return std::unique_ptr<Engine>(std::make_unique<BulletWorld>(scene, read_settings(profile, overrides)));
+          }};
+}
+
+}  // namespace ballbench

@@ -1,0 +1,260 @@
+#include "ode/ode_engine.h"
+
+#include <ode/ode.h>
+#include <ode/version.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "engine_settings.h"
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+static_assert(sizeof(dReal) == sizeof(double), "ballbench needs ODE built with double precision (dDOUBLE)");
+
+// dInitODE2 / dCloseODE once per process: a function-local static is initialised exactly once
+// (thread-safe since C++11) and closed at exit, after every world is gone. Each thread that uses
+// ODE's collision code also needs its own per-thread data; that call is idempotent.
+void ensure_ode_ready() {
+  struct Library {
+    Library() {
+      if (!dInitODE2(0)) throw std::runtime_error("ode: dInitODE2 failed");
+      // The headers say double; make sure the shared library we linked agrees.
+      if (!dCheckConfiguration("ODE_double_precision"))
+        throw std::runtime_error(fmt::format("ode: the library is not double precision ({})", dGetConfiguration()));
+    }
+    ~Library() { dCloseODE(); }
+    Library(const Library&) = delete;
+    Library& operator=(const Library&) = delete;
+  };
+  static Library library;
+  if (!dAllocateODEDataForThread(dAllocateMaskAll)) throw std::runtime_error("ode: dAllocateODEDataForThread failed");
+}
+
+constexpr const char* kProfiles[] = {"tuned", "stock"};
+
+class OdeEngine final : public Engine {
+ public:
+  OdeEngine(const Scene& scene, OdeSettings settings) : s_(std::move(settings)), n_(scene.n()) {
+    ensure_ode_ready();
+    world_ = dWorldCreate();
+    space_ = dHashSpaceCreate(nullptr);
+    contacts_ = dJointGroupCreate(0);
+
+    dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), 0.0);
+    dWorldSetERP(world_, s_.erp);
+    dWorldSetCFM(world_, s_.cfm);
+    dWorldSetQuickStepNumIterations(world_, s_.quickstep_iterations);
+    dWorldSetQuickStepW(world_, s_.quickstep_w);
+    dWorldSetContactSurfaceLayer(world_, s_.contact_surface_layer);
+    dWorldSetContactMaxCorrectingVel(world_, s_.max_correcting_vel < 0 ? dInfinity : s_.max_correcting_vel);
+    dWorldSetAutoDisableFlag(world_, 0);  // no sleeping: every ball is simulated every step
+
+    // Hash cells from the smallest to the largest ball diameter (cell size 2^level, m).
+    if (n_ > 0) {
+      const double dmin = 2 * scene.radius.minCoeff(), dmax = 2 * scene.radius.maxCoeff();
+      dHashSpaceSetLevels(space_, static_cast<int>(std::floor(std::log2(dmin))),
+                          static_cast<int>(std::ceil(std::log2(dmax))));
+    }
+
+    // Every contact shares one surface: the scene's restitution and friction.
+    surface_.mode = dContactBounce;
+    surface_.bounce = scene.restitution;
+    surface_.bounce_vel = s_.bounce_vel;
+    surface_.mu = 0;
+    if (scene.friction > 0) {
+      // Approx1: mu is a Coulomb coefficient (friction bound = mu * normal force); without it ODE
+      // reads mu as a force limit in newtons.
+      surface_.mode |= dContactApprox1;
+      surface_.mu = scene.friction;
+    }
+
+    bodies_.reserve(n_);
+    for (int i = 0; i < n_; ++i) {
+      dBodyID b = dBodyCreate(world_);
+      dMass m;
+      dMassSetSphereTotal(&m, scene.mass(i), scene.radius(i));
+      dBodySetMass(b, &m);
+      dBodySetPosition(b, scene.initial.pos(i, 0), scene.initial.pos(i, 1), 0.0);
+      dBodySetLinearVel(b, scene.initial.vel(i, 0), scene.initial.vel(i, 1), 0.0);
+      dBodySetAutoDisableFlag(b, 0);
+      dGeomID g = dCreateSphere(space_, scene.radius(i));
+      dGeomSetBody(g, b);
+      dJointID plane = dJointCreatePlane2D(world_, nullptr);
+      dJointAttach(plane, b, nullptr);
+      bodies_.push_back(b);
+    }
+
+    // Walls: an ODE plane (a, b, c, d) is a half-space, solid where n . p < d, so each wall's
+    // normal points into the box. A ball can sink into it but never pass behind it.
+    if (scene.container.kind == ContainerKind::Box) {
+      const auto& lo = scene.container.min;
+      const auto& hi = scene.container.max;
+      dCreatePlane(space_, 1, 0, 0, lo.x());
+      dCreatePlane(space_, -1, 0, 0, -hi.x());
+      dCreatePlane(space_, 0, 1, 0, lo.y());
+      dCreatePlane(space_, 0, -1, 0, -hi.y());
+    }
+  }
+
+  ~OdeEngine() override {
+    dJointGroupDestroy(contacts_);
+    dSpaceDestroy(space_);  // destroys its geoms (cleanup mode is on by default)
+    dWorldDestroy(world_);  // destroys bodies and the Plane2D joints
+  }
+
+  OdeEngine(const OdeEngine&) = delete;
+  OdeEngine& operator=(const OdeEngine&) = delete;
+
+  void step(double dt) override {
+    dSpaceCollide(space_, this, &OdeEngine::near_callback);
+    const int ok = s_.stepper == "step" ? dWorldStep(world_, dt) : dWorldQuickStep(world_, dt);
+    dJointGroupEmpty(contacts_);
+    if (!ok) throw std::runtime_error("ode: the stepper could not allocate its working memory");
+    if (s_.align_to_plane) align_to_plane();
+    t_ += dt;
+  }
+
+  void read(State& out) const override {
+    out.resize(n_);
+    out.t = t_;
+    for (int i = 0; i < n_; ++i) {
+      const dReal* p = dBodyGetPosition(bodies_[i]);
+      const dReal* v = dBodyGetLinearVel(bodies_[i]);
+      out.pos(i, 0) = p[0], out.pos(i, 1) = p[1];
+      out.vel(i, 0) = v[0], out.vel(i, 1) = v[1];
+    }
+  }
+
+  nlohmann::json settings() const override {
+    return {{"stepper", s_.stepper},
+            {"quickstep_iterations", s_.quickstep_iterations},
+            {"quickstep_w", s_.quickstep_w},
+            {"erp", s_.erp},
+            {"cfm", s_.cfm},
+            {"bounce_vel", s_.bounce_vel},
+            {"contact_surface_layer", s_.contact_surface_layer},
+            {"max_correcting_vel", s_.max_correcting_vel},
+            {"align_to_plane", s_.align_to_plane}};
+  }
+
+  double out_of_plane() const override {
+    double worst = 0;
+    for (dBodyID b : bodies_) {
+      worst = std::max(worst, std::abs(dBodyGetPosition(b)[2]));
+      worst = std::max(worst, std::abs(dBodyGetLinearVel(b)[2]));
+    }
+    return worst;
+  }
+
+ private:
+  // dSpaceCollide calls this for every pair whose bounding boxes overlap; one contact per pair is
+  // all a sphere-sphere or sphere-plane test can produce.
+  static void near_callback(void* data, dGeomID o1, dGeomID o2) {
+    auto* self = static_cast<OdeEngine*>(data);
+    dBodyID b1 = dGeomGetBody(o1), b2 = dGeomGetBody(o2);
+    if (!b1 && !b2) return;  // wall against wall
+    dContact contact{};
+    contact.surface = self->surface_;
+    if (dCollide(o1, o2, 1, &contact.geom, sizeof(dContact)) == 0) return;
+    dJointID j = dJointCreateContact(self->world_, self->contacts_, &contact);
+    dJointAttach(j, b1, b2);
+  }
+
+  // ODE wiki, "HOWTO constrain objects to 2d": Plane2D corrects positional drift but not rotational
+  // drift, so keep only the rotation about z and the angular velocity about z.
+  void align_to_plane() {
+    for (dBodyID b : bodies_) {
+      const dReal* q = dBodyGetQuaternion(b);  // (w, x, y, z)
+      const double len = std::hypot(q[0], q[3]);
+      if (len > 0) {
+        const dQuaternion about_z = {q[0] / len, 0, 0, q[3] / len};
+        dBodySetQuaternion(b, about_z);
+      }
+      const dReal* w = dBodyGetAngularVel(b);
+      dBodySetAngularVel(b, 0, 0, w[2]);
+    }
+  }
+
+  OdeSettings s_;
+  int n_;
+  dWorldID world_ = nullptr;
+  dSpaceID space_ = nullptr;
+  dJointGroupID contacts_ = nullptr;
+  dSurfaceParameters surface_{};
+  std::vector<dBodyID> bodies_;
+  double t_ = 0;
+};
+
+[[noreturn]] void bad_setting(const char* key, const std::string& why) {
+  throw InputError(fmt::format("settings.ode.{}: {}", key, why));
+}
+
+void validate(const OdeSettings& s) {
+  if (s.quickstep_iterations < 1) bad_setting("quickstep_iterations", "must be at least 1");
+  if (!(s.quickstep_w > 0 && s.quickstep_w < 2)) bad_setting("quickstep_w", "must be in (0, 2)");
+  if (!(s.erp >= 0 && s.erp <= 1)) bad_setting("erp", "must be in [0, 1]");
+  if (s.cfm < 0) bad_setting("cfm", "must not be negative (the ODE manual: negative CFM is unstable)");
+  if (s.bounce_vel < 0) bad_setting("bounce_vel", "must not be negative (ODE then never bounces)");
+  if (s.contact_surface_layer < 0) bad_setting("contact_surface_layer", "must not be negative");
+  if (!(s.max_correcting_vel > 0 || s.max_correcting_vel == -1))
+    bad_setting("max_correcting_vel", "must be positive, or -1 for no cap");
+}
+
+}  // namespace
+
+OdeSettings ode_settings_for_profile(const std::string& profile) {
+  if (profile == "tuned") return OdeSettings{};
+  if (profile == "stock") {
+    OdeSettings s;
+    s.stepper = "quickstep";   // what most ODE applications use; 20 iterations, ODE's default
+    s.quickstep_iterations = 20;
+    s.quickstep_w = 1.3;       // ODE default
+    s.erp = 0.2;               // ODE default
+    s.cfm = 1e-10;             // ODE default in double precision (1e-5 in single)
+    s.bounce_vel = 0.1;        // as in ODE's demos (demo_boxstack, ...)
+    s.contact_surface_layer = 0.0;  // ODE default
+    s.max_correcting_vel = -1;      // ODE default: dInfinity
+    s.align_to_plane = true;
+    return s;
+  }
+  throw InputError(fmt::format("ode: unknown profile '{}' (known: {})", profile, fmt::join(kProfiles, ", ")));
+}
+
+EngineEntry ode_engine() {
+  EngineInfo info;
+  info.name = "ode";
+  info.version = dODE_VERSION;  // <ode/version.h> of the installed libode-dev (Debian 2:0.16.2-1)
+  info.summary = "Open Dynamics Engine, spheres held to z = 0 by Plane2D joints (3D engine, no CCD)";
+  // The stock profile's bounce_vel (0.1 m/s) drops restitution to 0 below that approach speed;
+  // tuned (bounce_vel 0) honours it at any speed, but the flag is per engine, so it is false.
+  info.caps.any_restitution = false;
+  info.caps.continuous_collision = false;  // discrete overlap tests only: fast balls tunnel
+  info.caps.deterministic = true;          // single-threaded stepping, fixed insertion order
+  info.profiles = {kProfiles[0], kProfiles[1]};
+  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
+            OdeSettings s = ode_settings_for_profile(profile);
+            SettingsReader r("ode", overrides);
+            r.get("stepper", s.stepper, {"step", "quickstep"});
+            r.get("quickstep_iterations", s.quickstep_iterations);
+            r.get("quickstep_w", s.quickstep_w);
+            r.get("erp", s.erp);
+            r.get("cfm", s.cfm);
+            r.get("bounce_vel", s.bounce_vel);
+            r.get("contact_surface_layer", s.contact_surface_layer);
+            r.get("max_correcting_vel", s.max_correcting_vel);
+            r.get("align_to_plane", s.align_to_plane);
+            r.finish();
+            validate(s);
+            return std::unique_ptr<Engine>(std::make_unique<OdeEngine>(scene, s));
+          }};
+}
+
+}  // namespace ballbench
