@@ -43,6 +43,7 @@ struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
   std::string summary;     // one line for `ballbench list`
+  std::string limits;      // what in the engine shapes results (clamps, slops, precision), for the report
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
 };

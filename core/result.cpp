@@ -24,6 +24,7 @@ nlohmann::json to_json(const Result& r) {
   j["engine"] = r.engine;
   j["engine_version"] = r.engine_version;
   j["profile"] = r.profile;
+  j["engine_limits"] = r.engine_limits;
   j["scene"] = r.scene;
   j["scene_source"] = r.scene_source;
   j["n"] = r.n;
@@ -55,6 +56,7 @@ nlohmann::json to_json(const Result& r) {
                          {"stuck_samples", r.metrics_config.stuck_samples},
                          {"divergence_energy_factor", r.metrics_config.divergence_energy_factor}};
   j["settings"] = r.settings;
+  j["checksum"] = {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}};
   return j;
 }
 
@@ -63,6 +65,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.engine = j.at("engine");
   r.engine_version = j.at("engine_version");
   r.profile = j.value("profile", "");
+  r.engine_limits = j.value("engine_limits", "");
   r.scene = j.at("scene");
   r.scene_source = j.value("scene_source", "");
   r.n = j.at("n");
@@ -103,6 +106,10 @@ Result result_from_json(const nlohmann::json& j) {
     r.metrics_config.divergence_energy_factor = c.at("divergence_energy_factor");
   }
   r.settings = j.value("settings", nlohmann::json::object());
+  if (j.contains("checksum")) {
+    r.checksum_final = j["checksum"].value("final", "");
+    r.checksum_trajectory = j["checksum"].value("trajectory", "");
+  }
   return r;
 }
 

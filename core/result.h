@@ -12,13 +12,16 @@ namespace ballbench {
 
 struct Result {
   std::string engine, engine_version, profile;
+  std::string engine_limits;  // EngineInfo::limits: what in the engine shapes its results
   std::string scene, scene_source;
   int n = 0;
   double dt = 0;
   long steps = 0;        // asked for
   long steps_done = 0;   // completed (less when the run diverged or failed)
   // "ok"; "diverged" (non-finite state or energy blow-up: see diverged_step); "failed" (the engine
-  // threw: see error); "unsupported" (the scene needs what the engine lacks: see error).
+  // threw: see error); "unsupported" (the scene needs what the engine lacks: see error); and, for
+  // runs in a child process (core/isolated_run.h), "crashed" (the child died: error names the
+  // signal) and "timed out" (no result within the time limit: the child was killed).
   std::string status = "ok";
   std::string error;
   bool diverged = false;
@@ -32,6 +35,11 @@ struct Result {
   MetricsSummary metrics;
   MetricsConfig metrics_config;
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings
+  // FNV-1a checksums (16 hex digits; state_checksum and chain_checksum in runner.h) of the last state
+  // the metrics saw and of every such state, step 0 to steps_done in order: equal checksums mean
+  // bit-identical runs. JSON: "checksum": {"final": ..., "trajectory": ...}.
+  // Empty when no state was read (unsupported, failed to build, crashed, timed out).
+  std::string checksum_final, checksum_trajectory;
 };
 
 // "engine" for an engine with one profile, "engine/profile" otherwise: how tables and the

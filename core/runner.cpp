@@ -17,7 +17,27 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 
 bool finite(const State& s) { return s.pos.allFinite() && s.vel.allFinite(); }
 
+constexpr uint64_t kFnvPrime = 1099511628211ull;
+
+uint64_t fnv1a(uint64_t h, const void* data, size_t bytes) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < bytes; ++i) h = (h ^ p[i]) * kFnvPrime;
+  return h;
+}
+
 }  // namespace
+
+uint64_t state_checksum(const State& s, uint64_t h) {
+  for (int i = 0; i < s.n(); ++i) {
+    const double v[4] = {s.pos(i, 0), s.pos(i, 1), s.vel(i, 0), s.vel(i, 1)};
+    h = fnv1a(h, v, sizeof v);
+  }
+  return h;
+}
+
+uint64_t chain_checksum(uint64_t trajectory, uint64_t state) { return fnv1a(trajectory, &state, sizeof state); }
+
+std::string checksum_hex(uint64_t h) { return fmt::format("{:016x}", h); }
 
 nlohmann::json merged_settings(const Scene& scene, const std::string& engine, const nlohmann::json& overrides) {
   nlohmann::json merged = scene.engine_settings.value(engine, nlohmann::json::object());
@@ -29,6 +49,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   Result r;
   r.engine = entry.info.name;
   r.engine_version = entry.info.version;
+  r.engine_limits = entry.info.limits;
   r.profile = options.profile.empty() ? entry.info.profiles.front() : options.profile;
   r.scene = scene.name;
   r.scene_source = scene.source;
@@ -62,6 +83,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   engine->read(state);
   metrics.observe(state);
   if (options.trajectory) options.trajectory->write(run_label(r), 0, state);
+  uint64_t final_sum = state_checksum(state), trajectory_sum = chain_checksum(kFnvBasis, final_sum);
 
   const long report_every = std::max(1L, r.steps / 100);
   for (long k = 1; k <= r.steps; ++k) {
@@ -84,6 +106,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     }
     metrics.observe(state);
     if (options.trajectory) options.trajectory->write(run_label(r), k, state);
+    final_sum = state_checksum(state), trajectory_sum = chain_checksum(trajectory_sum, final_sum);
     r.steps_done = k;
     if (metrics.energy_blew_up()) {
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
@@ -93,6 +116,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     if (options.progress && k % report_every == 0) options.progress(k, r.steps);
   }
   r.metrics = metrics.summary();
+  r.checksum_final = checksum_hex(final_sum), r.checksum_trajectory = checksum_hex(trajectory_sum);
   r.wall_s = engine_s;
   r.harness_s = std::max(0.0, seconds_since(harness_start) - engine_s);
   const long stepped = std::max(1L, r.steps_done);

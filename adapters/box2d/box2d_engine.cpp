@@ -213,6 +213,11 @@ EngineEntry box2d_engine() {
   EngineInfo info;
   info.name = "box2d";
   info.version = BALLBENCH_BOX2D_VERSION;  // see b2_version_string()
+  info.limits =
+      "float32; b2_maxTranslation 2 m per step (speed cap 200 m/s at dt 0.01); contacts rest up to 3 x b2_linearSlop "
+      "(1.5 cm) deep; restitution only above restitutionThreshold (stock 1 m/s, tuned 0) and approximate for "
+      "multiple contacts; TOI against other balls only for bullets (tuned), capped at 8 sub-steps and 32 contacts; "
+      "these constants are compiled into 2.4.1";
   info.summary = "Box2D (float32 sequential impulses + TOI); tuned: elastic fast balls, stock: game defaults";
   info.profiles = {"tuned", "stock"};
   info.caps.open_space = true;

@@ -222,6 +222,11 @@ EngineEntry bullet_engine() {
   EngineInfo info;
   info.name = "bullet";
   info.version = bullet_version();
+  info.limits =
+      "float; wall contacts are kept up to 8.66 mm before touching and solved early when contact_processing_threshold "
+      "is Bullet's default (stock), losing d / dt of bounce; split impulse below its penetration threshold adds "
+      "Baumgarte energy (stock -0.04 m); no bounce below restitution_velocity_threshold (stock 0.2 m/s); CCD is "
+      "motion clamping of a 0.4 r core against start-of-step positions (tuned only)";
   info.summary = "Bullet Physics (float), 3D spheres held to the plane; sequential impulses";
   info.profiles = {"tuned", "stock"};
   // As in the default profile, "tuned" (README.md says what "stock" lacks).

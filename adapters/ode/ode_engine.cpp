@@ -232,6 +232,10 @@ EngineEntry ode_engine() {
   EngineInfo info;
   info.name = "ode";
   info.version = dODE_VERSION;  // <ode/version.h> of the installed libode-dev (Debian 2:0.16.2-1)
+  info.limits =
+      "double; all contacts of a step solved together, each with its own bounce target from before the step, which "
+      "puts energy in when a ball is struck from two sides in one step (grows with dt); CFM softness (restitution "
+      "short by (1 + e) cfm m_eff / dt); no bounce below bounce_vel (stock 0.1 m/s); ERP push-out; no CCD";
   info.summary = "Open Dynamics Engine, spheres held to z = 0 by Plane2D joints (3D engine, no CCD)";
   // The stock profile's bounce_vel (0.1 m/s) drops restitution to 0 below that approach speed;
   // tuned (bounce_vel 0) honours it at any speed, but the flag is per engine, so it is false.

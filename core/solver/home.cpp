@@ -400,6 +400,9 @@ EngineEntry home_engine() {
   EngineInfo info;
   info.name = "home";
   info.version = "0.1";
+  info.limits =
+      "double; impacts slower than rest_velocity (2 |g| dt) are resting contact (restitution 0); contacts within "
+      "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {

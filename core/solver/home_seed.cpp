@@ -154,6 +154,9 @@ EngineEntry home_seed_engine() {
   EngineInfo info;
   info.name = "home-seed";
   info.version = "thesis-2017";
+  info.limits =
+      "double; discrete collision checks once per step with per-ball (or per-pair) flags, as in the thesis: "
+      "tunnels and sticks by design; O(n^2) pair loop";
   info.summary = "faithful port of the 2017 thesis's MATLAB programs (sticks and tunnels on purpose)";
   info.caps.any_restitution = true;
   info.caps.continuous_collision = false;
