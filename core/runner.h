@@ -1,5 +1,6 @@
 #pragma once
 // Runs one engine on one scene: builds it, steps it, times the steps, samples states into metrics.
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -27,6 +28,19 @@ struct RunOptions {
 // Never throws for what an engine does (an exception from it marks the result "failed"); throws
 // InputError for bad settings.
 Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options);
+
+// FNV-1a, 64-bit, over the bytes of the doubles x, y, vx, vy of every ball in scene order, as they
+// lie in memory (IEEE-754, little-endian on the machines we build for), continuing from `h`. The
+// time is left out: it follows from the step count. Two states hash alike only if bit-identical
+// (up to a 2^-64 chance).
+inline constexpr uint64_t kFnvBasis = 14695981039346656037ull;
+uint64_t state_checksum(const State& s, uint64_t h = kFnvBasis);
+
+// The trajectory checksum: FNV-1a over the 8 bytes of each state's checksum, in step order.
+uint64_t chain_checksum(uint64_t trajectory, uint64_t state);
+
+// 16 lower-case hex digits.
+std::string checksum_hex(uint64_t h);
 
 // The engine's settings overrides: the scene's [settings.NAME] table, then `overrides` on top.
 nlohmann::json merged_settings(const Scene& scene, const std::string& engine, const nlohmann::json& overrides);
