@@ -1,0 +1,55 @@
+#include "scaled_scene.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene_loader.h"
+
+namespace ballbench::bench {
+
+const char* scene_kind_name(SceneKind k) { return k == SceneKind::Gas ? "gas" : "bowl"; }
+
+Scene scaled_scene(SceneKind kind, int n) {
+  const double half = 0.5 * std::sqrt(5.0 * n);  // box side sqrt(5 n): the seed-box's area per ball
+  if (kind == SceneKind::Gas)
+    return parse_scene(fmt::format(R"(
+name = "gas-{0}"
+dt = 0.01
+duration = 1.0
+restitution = 1.0
+[container]
+min = [{1}, {1}]
+max = [{2}, {2}]
+[random]
+count = {0}
+radius = 0.25
+vel_min = [-12.5, -12.5]
+vel_max = [12.5, 12.5]
+seed = 1
+)", n, -half, half),
+                       fmt::format("gas-{}", n));
+  // The bowl: the seed's 72 balls fill 8 x 9 grid places at spacing 0.6 in the lower left of a
+  // 10 x 10 box; here they fill the lower half of the box at the same spacing.
+  return parse_scene(fmt::format(R"(
+name = "bowl-{0}"
+dt = 0.01
+duration = 1.0
+gravity = [0.0, -100.0]
+restitution = 0.99
+[container]
+min = [{1}, {1}]
+max = [{2}, {2}]
+[random]
+count = {0}
+radius = 0.25
+pos_min = [{3}, {3}]
+pos_max = [{4}, {5}]
+vel_min = [-2.5, -2.5]
+vel_max = [2.5, 2.5]
+seed = 1
+)", n, -half, half, -half + 0.25, half - 0.25, 0.0),
+                     fmt::format("bowl-{}", n));
+}
+
+}  // namespace ballbench::bench

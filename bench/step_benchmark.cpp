@@ -1,0 +1,81 @@
+// Step cost of every engine (every profile) on the scaled standard scenes, across ball counts
+// 10 .. 10^5 (10^6 for home). The world is built and warmed up outside the timed loop; the loop
+// times Engine::step only. Counters: ns per ball-step and balls per second.
+//
+//   build/release/bench/ballbench_step_benchmark --benchmark_format=json > step.json
+//
+// Read the ratios within one run, not the nanoseconds: the machines are shared.
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "registry.h"
+#include "scaled_scene.h"
+
+namespace ballbench::bench {
+namespace {
+
+// Largest ball count per engine: home-seed is O(n^2) by design; the rest stop at 10^5 except
+// home, which the scaling target takes to 10^6.
+int max_balls(const std::string& engine) {
+  if (engine == "home-seed") return 1000;
+  if (engine == "home") return 1'000'000;
+  return 100'000;
+}
+
+void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::string profile, SceneKind kind, int n) {
+  // Scenes are shared between engines of one run (building 10^6 random balls takes a while).
+  static std::map<std::pair<SceneKind, int>, Scene> scenes;
+  auto it = scenes.find({kind, n});
+  if (it == scenes.end()) it = scenes.emplace(std::make_pair(kind, n), scaled_scene(kind, n)).first;
+  const Scene& scene = it->second;
+  std::unique_ptr<Engine> engine;
+  try {
+    engine = entry->create(scene, profile, {});
+    for (int k = 0; k < 5; ++k) engine->step(scene.dt);  // warm up: contacts, caches
+  } catch (const std::exception& e) {
+    state.SkipWithError(e.what());
+    return;
+  }
+  for (auto _ : state) {
+    try {
+      engine->step(scene.dt);
+    } catch (const std::exception& e) {
+      state.SkipWithError(e.what());
+      break;
+    }
+  }
+  state.SetItemsProcessed(state.iterations() * n);
+  state.counters["balls"] = n;
+  state.counters["ns_per_ball_step"] =
+      benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
+                                                            benchmark::Counter::kInvert);
+  state.counters["balls_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void register_all() {
+  for (const auto& e : engine_registry()) {
+    benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
+    for (const auto& profile : e.info.profiles)
+      for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
+        for (int n = 10; n <= max_balls(e.info.name); n *= 10)
+          benchmark::RegisterBenchmark(
+              fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n).c_str(),
+              step_benchmark, &e, profile, kind, n)
+              ->Unit(benchmark::kMicrosecond)
+              ->MinTime(0.2);
+  }
+}
+
+}  // namespace
+}  // namespace ballbench::bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  ballbench::bench::register_all();
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
