@@ -9,6 +9,7 @@
 #include "bullet/bullet_engine.h"
 #include "input_error.h"
 #include "ode/ode_engine.h"
+#include "solver/exact.h"
 #include "solver/home.h"
 #include "solver/home_seed.h"
 
@@ -18,11 +19,18 @@ const std::vector<EngineEntry>& engine_registry() {
   static const std::vector<EngineEntry> engines = {
       home_seed_engine(),
       home_engine(),
+      exact_engine(),
       box2d_engine(),
       bullet_engine(),
       ode_engine(),
   };
   return engines;
+}
+
+const EngineEntry* reference_engine() {
+  for (const auto& e : engine_registry())
+    if (e.info.name == "exact") return &e;
+  return nullptr;
 }
 
 const EngineEntry& find_engine(const std::string& name) {

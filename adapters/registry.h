@@ -10,6 +10,9 @@ namespace ballbench {
 
 const std::vector<EngineEntry>& engine_registry();
 
+// The engine errors are measured against (`exact`, event-driven), or null if it is not built in.
+const EngineEntry* reference_engine();
+
 // By name; throws InputError naming the known engines.
 const EngineEntry& find_engine(const std::string& name);
 

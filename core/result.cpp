@@ -1,5 +1,6 @@
 #include "result.h"
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -11,8 +12,12 @@
 namespace ballbench {
 namespace {
 
+// JSON has no NaN or infinity: nlohmann writes them as null, so null reads back as NaN (a metric of
+// a run that blew up to infinity must not make its whole result unreadable).
+double num(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
+
 nlohmann::json vec(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
-Eigen::Vector2d vec(const nlohmann::json& j) { return {j.at(0).get<double>(), j.at(1).get<double>()}; }
+Eigen::Vector2d vec(const nlohmann::json& j) { return {num(j.at(0)), num(j.at(1))}; }
 
 }  // namespace
 
@@ -56,6 +61,26 @@ nlohmann::json to_json(const Result& r) {
                          {"stuck_samples", r.metrics_config.stuck_samples},
                          {"divergence_energy_factor", r.metrics_config.divergence_energy_factor}};
   j["settings"] = r.settings;
+  j["speed_ks"] = r.speed_ks ? nlohmann::json(*r.speed_ks) : nlohmann::json(nullptr);
+  j["speed_ks_critical"] = r.speed_ks_critical ? nlohmann::json(*r.speed_ks_critical) : nlohmann::json(nullptr);
+  j["skipped"] = r.skipped;
+  if (r.reference.available) {
+    const auto& e = r.reference;
+    j["error_vs_reference"] = {
+        {"reference", e.reference},
+        {"pos_rms_final", e.pos_rms_final},
+        {"pos_rms_max", e.pos_rms_max},
+        {"vel_rms_final", e.vel_rms_final},
+        {"vel_rms_max", e.vel_rms_max},
+        {"energy_rel_max", e.energy_rel_max},
+        {"horizon", e.horizon ? nlohmann::json(*e.horizon) : nlohmann::json(nullptr)},
+        {"horizon_tolerance", e.horizon_tolerance},
+        {"reference_failed_step", e.reference_failed_step >= 0 ? nlohmann::json(e.reference_failed_step) : nlohmann::json(nullptr)},
+        {"reference_error", e.reference_error}};
+  }
+  j["series"] = {{"t", r.series.t},         {"energy", r.series.energy}, {"com_x", r.series.com_x},
+                 {"com_y", r.series.com_y}, {"pos_err", r.series.pos_err}, {"tracks", r.series.tracks},
+                 {"final_pos", r.series.final_pos}};
   j["checksum"] = {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}};
   return j;
 }
@@ -85,20 +110,20 @@ Result result_from_json(const nlohmann::json& j) {
   MetricsSummary& m = r.metrics;
   m.samples = j.value("samples", 0L);
   const auto& e = j.at("energy");
-  m.energy.initial = e.at("initial");
-  m.energy.final = e.at("final");
+  m.energy.initial = num(e.at("initial"));
+  m.energy.final = num(e.at("final"));
   if (!e.at("max_rel_drift").is_null()) m.energy.max_rel_drift = e.at("max_rel_drift").get<double>();
-  m.energy.max_abs_drift = e.value("max_abs_drift", 0.0);
+  m.energy.max_abs_drift = num(e.value("max_abs_drift", nlohmann::json(0.0)));
   m.energy.reference = e.value("reference", 0.0);
   m.momentum.initial = vec(j.at("momentum").at("initial"));
   m.momentum.final = vec(j.at("momentum").at("final"));
-  m.momentum.max_abs_drift = j.at("momentum").at("max_abs_drift");
+  m.momentum.max_abs_drift = num(j.at("momentum").at("max_abs_drift"));
   m.tunnelling_wall = j.at("tunnelling").at("wall");
   m.tunnelling_pair = j.at("tunnelling").at("pair");
   m.sticking_wall = j.at("sticking").at("wall");
   m.sticking_pair = j.at("sticking").at("pair");
-  m.penetration_max = j.at("penetration").at("max");
-  m.penetration_mean = j.at("penetration").at("mean");
+  m.penetration_max = num(j.at("penetration").at("max"));
+  m.penetration_mean = num(j.at("penetration").at("mean"));
   if (j.contains("metrics_config")) {
     const auto& c = j["metrics_config"];
     r.metrics_config.contact_tolerance = c.at("contact_tolerance");
@@ -106,6 +131,31 @@ Result result_from_json(const nlohmann::json& j) {
     r.metrics_config.divergence_energy_factor = c.at("divergence_energy_factor");
   }
   r.settings = j.value("settings", nlohmann::json::object());
+  if (j.contains("speed_ks") && !j["speed_ks"].is_null()) {
+    r.speed_ks = j["speed_ks"].get<double>();
+    r.speed_ks_critical = j["speed_ks_critical"].get<double>();
+  }
+  if (j.contains("skipped")) j["skipped"].get_to(r.skipped);
+  if (j.contains("error_vs_reference")) {
+    const auto& e = j["error_vs_reference"];
+    auto& x = r.reference;
+    x.available = true;
+    x.reference = e.at("reference");
+    x.pos_rms_final = e.at("pos_rms_final"), x.pos_rms_max = e.at("pos_rms_max");
+    x.vel_rms_final = e.at("vel_rms_final"), x.vel_rms_max = e.at("vel_rms_max");
+    x.energy_rel_max = e.at("energy_rel_max");
+    if (!e.at("horizon").is_null()) x.horizon = e.at("horizon").get<double>();
+    x.horizon_tolerance = e.at("horizon_tolerance");
+    x.reference_failed_step = e.at("reference_failed_step").is_null() ? -1 : e.at("reference_failed_step").get<long>();
+    x.reference_error = e.value("reference_error", "");
+  }
+  if (j.contains("series")) {
+    const auto& s = j["series"];
+    s.at("t").get_to(r.series.t), s.at("energy").get_to(r.series.energy);
+    s.at("com_x").get_to(r.series.com_x), s.at("com_y").get_to(r.series.com_y);
+    s.at("pos_err").get_to(r.series.pos_err), s.at("tracks").get_to(r.series.tracks);
+    s.at("final_pos").get_to(r.series.final_pos);
+  }
   if (j.contains("checksum")) {
     r.checksum_final = j["checksum"].value("final", "");
     r.checksum_trajectory = j["checksum"].value("trajectory", "");

@@ -1,12 +1,16 @@
 #pragma once
 // One run of one engine on one scene: metrics, timing, versions, settings. Written as one JSON
 // object; the report reads these files and nothing else.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+
 #include "metrics/metrics.h"
+#include "metrics/reference_error.h"
 
 namespace ballbench {
 
@@ -33,6 +37,19 @@ struct Result {
   long sample_every = 1;        // metrics see every k-th step
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;
+  ReferenceErrorSummary reference;  // error against `exact`, when it ran alongside
+  // Kolmogorov-Smirnov statistic of the final speeds against the Rayleigh law, and its 1% critical
+  // value; only for scenes where it means something (metrics/speed_distribution.h).
+  std::optional<double> speed_ks, speed_ks_critical;
+  std::vector<std::string> skipped;  // metrics not computed for this scene, each with the reason
+  // Sampled every ~steps / RunOptions::series_points steps, for figures: time (s), energy (J),
+  // centre of mass (m), position RMS error against the reference (m; empty without one), the
+  // tracks of the first few balls (x, y per sample) and every ball's final position (n <= 5000).
+  struct Series {
+    std::vector<double> t, energy, com_x, com_y, pos_err;
+    std::vector<std::vector<std::array<double, 2>>> tracks;
+    std::vector<std::array<double, 2>> final_pos;
+  } series;
   MetricsConfig metrics_config;
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings
   // FNV-1a checksums (16 hex digits; state_checksum and chain_checksum in runner.h) of the last state

@@ -1,11 +1,13 @@
 #include "runner.h"
 
 #include <chrono>
+#include <optional>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "metrics/speed_distribution.h"
 #include "trajectory_csv.h"
 
 namespace ballbench {
@@ -78,10 +80,39 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
 
   MetricsAccumulator metrics(scene, options.metrics);
   State state;
+  // The reference runs in lockstep, outside the timed region; its failure ends the comparison only.
+  std::unique_ptr<Engine> reference;
+  std::optional<ReferenceErrorTracker> error;
+  State ref_state;
+  if (options.reference) {
+    error.emplace(scene);
+    try {
+      reference = options.reference->create(scene, options.reference->info.profiles.front(),
+                                            merged_settings(scene, options.reference->info.name, {}));
+      reference->read(ref_state);
+    } catch (const std::exception& e) {
+      error->reference_failed(0, e.what());
+      reference.reset();
+    }
+  }
+  const long series_every = std::max(1L, r.steps / std::max(1, options.series_points));
+  constexpr int kTracks = 4;
+  r.series.tracks.resize(std::min(kTracks, scene.n()));
+  auto record = [&](long k) {
+    if (reference) error->observe(state, ref_state);
+    if (k % series_every != 0 && k != r.steps) return;
+    r.series.t.push_back(state.t);
+    r.series.energy.push_back(metrics.summary().energy.final);
+    const Eigen::Vector2d com = state.pos.transpose() * scene.mass / scene.mass.sum();
+    r.series.com_x.push_back(com.x()), r.series.com_y.push_back(com.y());
+    if (reference) r.series.pos_err.push_back(error->summary().pos_rms_final);
+    for (size_t b = 0; b < r.series.tracks.size(); ++b) r.series.tracks[b].push_back({state.pos(b, 0), state.pos(b, 1)});
+  };
   const auto harness_start = Clock::now();
   double engine_s = 0;
   engine->read(state);
   metrics.observe(state);
+  record(0);
   if (options.trajectory) options.trajectory->write(run_label(r), 0, state);
   uint64_t final_sum = state_checksum(state), trajectory_sum = chain_checksum(kFnvBasis, final_sum);
 
@@ -105,6 +136,16 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       break;
     }
     metrics.observe(state);
+    if (reference) {
+      try {
+        reference->step(scene.dt);
+        reference->read(ref_state);
+      } catch (const std::exception& e) {
+        error->reference_failed(k, e.what());
+        reference.reset();
+      }
+    }
+    record(k);
     if (options.trajectory) options.trajectory->write(run_label(r), k, state);
     final_sum = state_checksum(state), trajectory_sum = chain_checksum(trajectory_sum, final_sum);
     r.steps_done = k;
@@ -116,6 +157,22 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     if (options.progress && k % report_every == 0) options.progress(k, r.steps);
   }
   r.metrics = metrics.summary();
+  if (speed_distribution_applies(scene)) {
+    r.speed_ks = rayleigh_ks_statistic(state);
+    r.speed_ks_critical = rayleigh_ks_critical(scene.n());
+  } else {
+    r.skipped.push_back("speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
+  }
+  if (scene.features().gravity || scene.features().walls)
+    r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
+  if (!options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");
+  if (error) {
+    r.reference = error->summary();
+    r.reference.reference = options.reference->info.name;
+  }
+  constexpr int kMaxFinalPositions = 5000;  // a picture of more balls is a grey smear anyway
+  if (scene.n() <= kMaxFinalPositions)
+    for (int b = 0; b < scene.n(); ++b) r.series.final_pos.push_back({state.pos(b, 0), state.pos(b, 1)});
   r.checksum_final = checksum_hex(final_sum), r.checksum_trajectory = checksum_hex(trajectory_sum);
   r.wall_s = engine_s;
   r.harness_s = std::max(0.0, seconds_since(harness_start) - engine_s);

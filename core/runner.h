@@ -21,6 +21,10 @@ struct RunOptions {
   nlohmann::json overrides = nlohmann::json::object();  // settings on top of the scene's table
   MetricsConfig metrics;
   TrajectoryCsv* trajectory = nullptr;
+  // Run this engine (normally `exact`) in lockstep and report the error against it; null: none.
+  const EngineEntry* reference = nullptr;
+  // Points kept in Result::series (energy, centre of mass, a few tracks) for the report's figures.
+  int series_points = 300;
   // Called now and then with (steps done, steps total), for progress on long runs.
   std::function<void(long, long)> progress;
 };

@@ -1,9 +1,11 @@
 #include "scene_loader.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -22,6 +24,27 @@ namespace {
 constexpr double kMaxSteps = 1e9;
 // The most balls a scene may hold: beyond this the state alone would not fit in memory here.
 constexpr int64_t kMaxBalls = 50'000'000;
+// The largest |value| of a coordinate, velocity, gravity component, radius or mass (m, m/s, m/s^2,
+// kg). Far beyond any ball scene; it keeps differences, squares and sums of these finite (a box
+// from -1e308 to 1e308 has an infinite width) so every later computation sees finite numbers.
+constexpr double kMaxMagnitude = 1e12;
+// How far from the origin a ball may start, in its own radii. The spatial hashes index cells of
+// about a radius with 64-bit integers multiplied by hash primes (core/overlap.h); 1e9 cells keeps
+// that product far from overflow, and a scene this spread out is a unit typo.
+constexpr double kMaxRadiiFromOrigin = 1e9;
+
+// "an integer", "an array of 3": what a node is, for messages.
+std::string node_type_name(const toml::node& n) {
+  switch (n.type()) {
+    case toml::node_type::string: return "a string";
+    case toml::node_type::integer: return "an integer";
+    case toml::node_type::floating_point: return "a number";
+    case toml::node_type::boolean: return "a boolean";
+    case toml::node_type::array: return fmt::format("an array of {}", n.as_array()->size());
+    case toml::node_type::table: return "a table";
+    default: return "a date or time";
+  }
+}
 
 // Reads one TOML table, naming every problem by file, line and dotted field path.
 class TableReader {
@@ -83,22 +106,16 @@ class TableReader {
     const toml::array* a = n->as_array();
     if (!a || a->size() != 2)
       fail(n, key, fmt::format("expected an array of two numbers [x, y], got {}", type_name(*n)));
-    return {as_number(a->get(0), std::string(key) + "[0]"), as_number(a->get(1), std::string(key) + "[1]")};
+    Eigen::Vector2d v{as_number(a->get(0), std::string(key) + "[0]"), as_number(a->get(1), std::string(key) + "[1]")};
+    for (int i = 0; i < 2; ++i)
+      if (std::abs(v[i]) > kMaxMagnitude)
+        fail(a->get(i), fmt::format("{}[{}]", key, i), fmt::format("must be within +-{:g}, got {}", kMaxMagnitude, v[i]));
+    return v;
   }
   Eigen::Vector2d vec2_or(const char* key, Eigen::Vector2d fallback) const { return has(key) ? vec2(key) : fallback; }
 
  private:
-  static std::string type_name(const toml::node& n) {
-    switch (n.type()) {
-      case toml::node_type::string: return "a string";
-      case toml::node_type::integer: return "an integer";
-      case toml::node_type::floating_point: return "a number";
-      case toml::node_type::boolean: return "a boolean";
-      case toml::node_type::array: return fmt::format("an array of {}", n.as_array()->size());
-      case toml::node_type::table: return "a table";
-      default: return "a date or time";
-    }
-  }
+  static std::string type_name(const toml::node& n) { return node_type_name(n); }
   double as_number(const toml::node* n, const std::string& field) const {
     double v;
     if (n->is_floating_point()) v = n->as_floating_point()->get();
@@ -133,6 +150,20 @@ void check_positive(const TableReader& r, const char* key, double v) {
   if (!(v > 0)) r.fail(r.node(key), key, fmt::format("must be positive, got {}", v));
 }
 
+// A radius or a mass: positive and at most kMaxMagnitude.
+void check_size(const TableReader& r, const char* key, double v) {
+  check_positive(r, key, v);
+  if (v > kMaxMagnitude) r.fail(r.node(key), key, fmt::format("must be at most {:g}, got {}", kMaxMagnitude, v));
+}
+
+// A ball (or a corner of a random placement box) at p is not too many radii from the origin.
+void check_spread(const TableReader& r, const char* key, const Eigen::Vector2d& p, double radius) {
+  if (p.cwiseAbs().maxCoeff() > kMaxRadiiFromOrigin * radius)
+    r.fail(r.node(key), key,
+           fmt::format("({}, {}) is more than {:g} radii ({}) from the origin: check the units", p.x(), p.y(),
+                       kMaxRadiiFromOrigin, radius));
+}
+
 bool inside(const Container& c, const Eigen::Vector2d& p, double radius) {
   if (c.kind == ContainerKind::None) return true;
   return (p.array() - radius >= c.min.array()).all() && (p.array() + radius <= c.max.array()).all();
@@ -141,8 +172,18 @@ bool inside(const Container& c, const Eigen::Vector2d& p, double radius) {
 void read_explicit_balls(const toml::node& node, const std::string& source, const Container& container,
                          BallList& balls) {
   const toml::array* arr = node.as_array();
-  if (!arr || !arr->is_array_of_tables())
-    throw InputError(fmt::format("{}:{}: ball: expected [[ball]] tables", source, node.source().begin.line));
+  const auto fail = [&](const toml::node& at, const std::string& field, const std::string& why) {
+    throw InputError(fmt::format("{}:{}: {}: {}", source, at.source().begin.line, field, why));
+  };
+  if (node.is_table()) fail(node, "ball", "expected [[ball]] tables (double brackets), got a single [ball] table");
+  if (!arr) fail(node, "ball", fmt::format("expected [[ball]] tables, got {}", node_type_name(node)));
+  if (arr->empty()) fail(node, "ball", "expected [[ball]] tables, got an empty array");
+  for (size_t i = 0; i < arr->size(); ++i)
+    if (!arr->get(i)->is_table())
+      fail(*arr->get(i), fmt::format("ball[{}]", i),
+           fmt::format("expected a table of pos, vel, radius, mass, got {}", node_type_name(*arr->get(i))));
+  if (static_cast<int64_t>(arr->size()) > kMaxBalls)
+    fail(node, "ball", fmt::format("at most {} balls are supported", kMaxBalls));
   for (size_t i = 0; i < arr->size(); ++i) {
     const toml::table& t = *arr->get(i)->as_table();
     TableReader r(t, source, fmt::format("ball[{}]", i));
@@ -150,8 +191,9 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
     const Eigen::Vector2d p = r.vec2("pos");
     const double radius = r.number("radius");
     const double mass = r.number_or("mass", 1.0);
-    check_positive(r, "radius", radius);
-    check_positive(r, "mass", mass);
+    check_size(r, "radius", radius);
+    check_size(r, "mass", mass);
+    check_spread(r, "pos", p, radius);
     if (!inside(container, p, radius))
       r.fail(r.node("pos"), "pos",
              fmt::format("ball at ({}, {}) with radius {} is not inside the container", p.x(), p.y(), radius));
@@ -161,19 +203,56 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
 
 // [random]: `count` balls drawn uniformly from the position and velocity boxes. Without
 // allow_overlap a drawn position that overlaps an earlier ball is drawn again.
+// [lattice]: `count` balls on a square lattice of `spacing`, row by row from `origin` (default:
+// the box's lower-left corner plus half a spacing), each with a velocity drawn uniformly from the
+// velocity box. For packings random placement cannot reach (a square lattice holds up to pi / 4).
+void read_lattice_balls(const toml::table& t, const std::string& source, const Container& container, BallList& balls) {
+  TableReader r(t, source, "lattice");
+  r.check_keys({"count", "radius", "mass", "spacing", "origin", "columns", "vel_min", "vel_max", "seed"});
+  const int64_t count = r.integer("count", -1);
+  if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
+  if (count > kMaxBalls) r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported", kMaxBalls));
+  const double radius = r.number("radius"), mass = r.number_or("mass", 1.0), spacing = r.number("spacing");
+  check_positive(r, "radius", radius);
+  check_positive(r, "mass", mass);
+  if (spacing < 2 * radius) r.fail(r.node("spacing"), "spacing", fmt::format("must be at least the diameter {}", 2 * radius));
+  if (container.kind != ContainerKind::Box && (!r.has("origin") || !r.has("columns")))
+    r.fail(nullptr, "origin", "origin and columns are required in open space");
+  const Eigen::Vector2d origin =
+      r.vec2_or("origin", container.min.array() + 0.5 * spacing);
+  int64_t columns = r.integer("columns", 0);
+  if (columns <= 0) columns = static_cast<int64_t>(std::floor((container.max.x() - radius - origin.x()) / spacing)) + 1;
+  if (columns <= 0) r.fail(r.node("origin"), "origin", "no column fits in the container");
+  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
+  std::mt19937_64 rng(static_cast<uint64_t>(r.integer("seed", 1)));
+  const int line = static_cast<int>(t.source().begin.line);
+  for (int64_t k = 0; k < count; ++k) {
+    const Eigen::Vector2d p = origin + spacing * Eigen::Vector2d(static_cast<double>(k % columns), static_cast<double>(k / columns));
+    if (!inside(container, p, radius))
+      r.fail(r.node("count"), "count", fmt::format("ball {} at ({:.4g}, {:.4g}) is outside the container: only {} fit", k,
+                                                   p.x(), p.y(), k));
+    balls.add(p, {uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())}, radius, mass, line);
+  }
+}
+
 void read_random_balls(const toml::table& t, const std::string& source, const std::string& prefix,
                        const Container& container, bool allow_overlap, BallList& balls) {
   TableReader r(t, source, prefix);
   r.check_keys({"count", "radius", "mass", "pos_min", "pos_max", "vel_min", "vel_max", "seed"});
   const int64_t count = r.integer("count", -1);
   if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
-  if (count > kMaxBalls) r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported", kMaxBalls));
+  if (count > kMaxBalls - static_cast<int64_t>(balls.pos.size()))
+    r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported (in all)", kMaxBalls));
   const double radius = r.number("radius");
   const double mass = r.number_or("mass", 1.0);
-  check_positive(r, "radius", radius);
-  check_positive(r, "mass", mass);
+  check_size(r, "radius", radius);
+  check_size(r, "mass", mass);
   Eigen::Vector2d lo_default{0, 0}, hi_default{0, 0};
   if (container.kind == ContainerKind::Box) {
+    const Eigen::Vector2d size = container.max - container.min;
+    if (2 * radius > size.minCoeff())
+      r.fail(r.node("radius"), "radius",
+             fmt::format("balls of radius {} do not fit in the {} x {} container", radius, size.x(), size.y()));
     lo_default = container.min.array() + radius;
     hi_default = container.max.array() - radius;
   } else if (!r.has("pos_min") || !r.has("pos_max")) {
@@ -186,6 +265,8 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   if (!inside(container, pos_min, radius) || !inside(container, pos_max, radius))
     r.fail(r.node("pos_min"), "pos_min",
            "the box [pos_min, pos_max] must keep balls of this radius inside the container");
+  check_spread(r, "pos_min", pos_min, radius);
+  check_spread(r, "pos_max", pos_max, radius);
   const int64_t seed = r.integer("seed", 1);
   const int line = static_cast<int>(t.source().begin.line);
 
@@ -214,18 +295,45 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   }
 }
 
+// Messages quote what the file says (key names, strings), which may hold control characters
+// ("a\nb" is a valid quoted key): escape them, so every message stays one line.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
+    else out += c;
+  }
+  return out;
+}
+
+Scene parse_scene_text(const std::string& toml_text, const std::string& source);
+
 }  // namespace
 
 Scene parse_scene(const std::string& toml_text, const std::string& source) {
+  try {
+    return parse_scene_text(toml_text, source);
+  } catch (const InputError& e) {
+    throw InputError(printable(e.what()));
+  }
+}
+
+namespace {
+
+Scene parse_scene_text(const std::string& toml_text, const std::string& source) {
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
+  if (doc.empty())
+    throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
   top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction",
-                  "allow_overlap", "container", "ball", "random", "settings"});
+                  "allow_overlap", "container", "ball", "random", "lattice", "settings"});
 
   Scene s;
   s.source = source;
@@ -267,6 +375,10 @@ Scene parse_scene(const std::string& toml_text, const std::string& source) {
 
   BallList balls;
   if (const toml::node* b = top.node("ball")) read_explicit_balls(*b, source, s.container, balls);
+  if (const toml::node* lat = top.node("lattice")) {
+    if (!lat->is_table()) top.fail(lat, "lattice", "expected a table [lattice]");
+    read_lattice_balls(*lat->as_table(), source, s.container, balls);
+  }
   if (const toml::node* rnd = top.node("random")) {
     if (const toml::table* t = rnd->as_table()) {
       read_random_balls(*t, source, "random", s.container, s.allow_overlap, balls);
@@ -315,14 +427,17 @@ Scene parse_scene(const std::string& toml_text, const std::string& source) {
   return s;
 }
 
+}  // namespace
+
 Scene load_scene_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: scene file not found", path));
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, not a scene file", path));
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(fmt::format("{}: cannot read the scene file", path));
+  if (!in) throw InputError(fmt::format("{}: cannot read the scene file: {}", path, std::strerror(errno)));
   std::stringstream text;
   text << in.rdbuf();
+  if (in.bad()) throw InputError(fmt::format("{}: reading the scene file failed: {}", path, std::strerror(errno)));
   return parse_scene(text.str(), path);
 }
 

@@ -1,0 +1,34 @@
+#include "metrics/reference_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "metrics/energy.h"
+
+namespace ballbench {
+
+ReferenceErrorTracker::ReferenceErrorTracker(const Scene& scene)
+    : scene_(scene), reference_height_(energy_reference(scene)) {
+  m_.available = true;
+  m_.horizon_tolerance = 0.1 * scene.radius.mean();
+}
+
+void ReferenceErrorTracker::observe(const State& s, const State& ref) {
+  const double e_ref = total_energy(ref, scene_, reference_height_);
+  if (first_) e0_ = e_ref, first_ = false;
+  const double pos_rms = std::sqrt((s.pos - ref.pos).rowwise().squaredNorm().mean());
+  const double vel_rms = std::sqrt((s.vel - ref.vel).rowwise().squaredNorm().mean());
+  m_.pos_rms_final = pos_rms, m_.vel_rms_final = vel_rms;
+  m_.pos_rms_max = std::max(m_.pos_rms_max, pos_rms);
+  m_.vel_rms_max = std::max(m_.vel_rms_max, vel_rms);
+  if (e0_ > 0)
+    m_.energy_rel_max = std::max(m_.energy_rel_max, std::abs(total_energy(s, scene_, reference_height_) - e_ref) / e0_);
+  if (!m_.horizon && pos_rms > m_.horizon_tolerance) m_.horizon = s.t;
+}
+
+void ReferenceErrorTracker::reference_failed(long step, const std::string& why) {
+  m_.reference_failed_step = step;
+  m_.reference_error = why;
+}
+
+}  // namespace ballbench
