@@ -16,6 +16,16 @@ namespace {
 // a run that blew up to infinity must not make its whole result unreadable).
 double num(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
 
+// The same inside arrays (series of samples), at any depth: null elements become NaN, which a
+// json value can hold.
+nlohmann::json nulls_to_nan(nlohmann::json j) {
+  if (j.is_object())
+    for (auto& x : j) x = nulls_to_nan(std::move(x));
+  else if (j.is_array())
+    for (auto& x : j) x = x.is_null() ? nlohmann::json(std::nan("")) : nulls_to_nan(std::move(x));
+  return j;
+}
+
 nlohmann::json vec(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
 Eigen::Vector2d vec(const nlohmann::json& j) { return {num(j.at(0)), num(j.at(1))}; }
 
@@ -64,6 +74,7 @@ nlohmann::json to_json(const Result& r) {
   j["speed_ks"] = r.speed_ks ? nlohmann::json(*r.speed_ks) : nlohmann::json(nullptr);
   j["speed_ks_critical"] = r.speed_ks_critical ? nlohmann::json(*r.speed_ks_critical) : nlohmann::json(nullptr);
   j["skipped"] = r.skipped;
+  j["jitter"] = r.jitter ? nlohmann::json(*r.jitter) : nlohmann::json(nullptr);
   if (r.reference.available) {
     const auto& e = r.reference;
     j["error_vs_reference"] = {
@@ -80,7 +91,8 @@ nlohmann::json to_json(const Result& r) {
   }
   j["series"] = {{"t", r.series.t},         {"energy", r.series.energy}, {"com_x", r.series.com_x},
                  {"com_y", r.series.com_y}, {"pos_err", r.series.pos_err}, {"tracks", r.series.tracks},
-                 {"final_pos", r.series.final_pos}};
+                 {"final_pos", r.series.final_pos}, {"radius_mean", r.series.radius_mean},
+                 {"box", r.series.box ? nlohmann::json(*r.series.box) : nlohmann::json(nullptr)}};
   j["checksum"] = {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}};
   return j;
 }
@@ -132,29 +144,32 @@ Result result_from_json(const nlohmann::json& j) {
   }
   r.settings = j.value("settings", nlohmann::json::object());
   if (j.contains("speed_ks") && !j["speed_ks"].is_null()) {
-    r.speed_ks = j["speed_ks"].get<double>();
-    r.speed_ks_critical = j["speed_ks_critical"].get<double>();
+    r.speed_ks = num(j["speed_ks"]);
+    r.speed_ks_critical = num(j["speed_ks_critical"]);
   }
   if (j.contains("skipped")) j["skipped"].get_to(r.skipped);
+  if (j.contains("jitter") && !j["jitter"].is_null()) r.jitter = num(j["jitter"]);
   if (j.contains("error_vs_reference")) {
     const auto& e = j["error_vs_reference"];
     auto& x = r.reference;
     x.available = true;
     x.reference = e.at("reference");
-    x.pos_rms_final = e.at("pos_rms_final"), x.pos_rms_max = e.at("pos_rms_max");
-    x.vel_rms_final = e.at("vel_rms_final"), x.vel_rms_max = e.at("vel_rms_max");
-    x.energy_rel_max = e.at("energy_rel_max");
+    x.pos_rms_final = num(e.at("pos_rms_final")), x.pos_rms_max = num(e.at("pos_rms_max"));
+    x.vel_rms_final = num(e.at("vel_rms_final")), x.vel_rms_max = num(e.at("vel_rms_max"));
+    x.energy_rel_max = num(e.at("energy_rel_max"));
     if (!e.at("horizon").is_null()) x.horizon = e.at("horizon").get<double>();
     x.horizon_tolerance = e.at("horizon_tolerance");
     x.reference_failed_step = e.at("reference_failed_step").is_null() ? -1 : e.at("reference_failed_step").get<long>();
     x.reference_error = e.value("reference_error", "");
   }
   if (j.contains("series")) {
-    const auto& s = j["series"];
+    const nlohmann::json s = nulls_to_nan(j["series"]);
     s.at("t").get_to(r.series.t), s.at("energy").get_to(r.series.energy);
     s.at("com_x").get_to(r.series.com_x), s.at("com_y").get_to(r.series.com_y);
     s.at("pos_err").get_to(r.series.pos_err), s.at("tracks").get_to(r.series.tracks);
     s.at("final_pos").get_to(r.series.final_pos);
+    r.series.radius_mean = s.value("radius_mean", 0.0);
+    if (s.contains("box") && !s["box"].is_null()) r.series.box = s["box"].get<std::array<double, 4>>();
   }
   if (j.contains("checksum")) {
     r.checksum_final = j["checksum"].value("final", "");

@@ -41,6 +41,9 @@ struct Result {
   // Kolmogorov-Smirnov statistic of the final speeds against the Rayleigh law, and its 1% critical
   // value; only for scenes where it means something (metrics/speed_distribution.h).
   std::optional<double> speed_ks, speed_ks_critical;
+  // Jitter: RMS speed of the final state (m/s), for scenes with gravity and walls, where balls
+  // should come to rest (a pile); none elsewhere.
+  std::optional<double> jitter;
   std::vector<std::string> skipped;  // metrics not computed for this scene, each with the reason
   // Sampled every ~steps / RunOptions::series_points steps, for figures: time (s), energy (J),
   // centre of mass (m), position RMS error against the reference (m; empty without one), the
@@ -49,6 +52,8 @@ struct Result {
     std::vector<double> t, energy, com_x, com_y, pos_err;
     std::vector<std::vector<std::array<double, 2>>> tracks;
     std::vector<std::array<double, 2>> final_pos;
+    std::optional<std::array<double, 4>> box;  // container x0, y0, x1, y1 (m), for pictures
+    double radius_mean = 0;                    // (m), for pictures
   } series;
   MetricsConfig metrics_config;
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings

@@ -95,6 +95,9 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       reference.reset();
     }
   }
+  r.series.radius_mean = scene.radius.mean();
+  if (scene.container.kind == ContainerKind::Box)
+    r.series.box = {scene.container.min.x(), scene.container.min.y(), scene.container.max.x(), scene.container.max.y()};
   const long series_every = std::max(1L, r.steps / std::max(1, options.series_points));
   constexpr int kTracks = 4;
   r.series.tracks.resize(std::min(kTracks, scene.n()));
@@ -163,6 +166,10 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   } else {
     r.skipped.push_back("speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
   }
+  if (scene.features().gravity && scene.features().walls)
+    r.jitter = std::sqrt(state.vel.rowwise().squaredNorm().mean());
+  else
+    r.skipped.push_back("jitter (final RMS speed): only for scenes with gravity and walls, where balls come to rest");
   if (scene.features().gravity || scene.features().walls)
     r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
   if (!options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");

@@ -27,6 +27,10 @@ struct Column {
   std::function<double(const Result&)> value;  // null: not ranked
 };
 
+// Was the run compared with a reference other than itself? (The reference's own zero error is not
+// a result to rank.)
+bool compared(const Result& r) { return r.reference.available && r.engine != r.reference.reference; }
+
 std::vector<Column> columns() {
   return {
       {"status", [](const Result& r) { return r.diverged ? fmt::format("diverged@{}", r.diverged_step) : r.status; }, nullptr},
@@ -51,6 +55,17 @@ std::vector<Column> columns() {
        [](const Result& r) { return r.metrics.penetration_max; }},
       {"penetration mean", [](const Result& r) { return sci(r.metrics.penetration_mean); },
        [](const Result& r) { return r.metrics.penetration_mean; }},
+      {"pos error vs exact (m)",
+       [](const Result& r) { return r.reference.available ? fmt::format("{:.3g}", r.reference.pos_rms_final) : "-"; },
+       [](const Result& r) { return compared(r) ? r.reference.pos_rms_final : HUGE_VAL; }},
+      {"horizon (s)",
+       [](const Result& r) {
+         return !r.reference.available ? "-" : r.reference.horizon ? fmt::format("{:.3g}", *r.reference.horizon) : "never";
+       },
+       // Later is better: rank by minus the horizon, "never" best of all.
+       [](const Result& r) {
+         return !compared(r) ? HUGE_VAL : r.reference.horizon ? -*r.reference.horizon : -HUGE_VAL;
+       }},
       {"ns/step", [](const Result& r) { return fmt::format("{:.0f}", r.ns_per_step); },
        [](const Result& r) { return r.ns_per_step; }},
       {"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
@@ -118,7 +133,7 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   return in;
 }
 
-std::string render_report(const ReportInputs& in) {
+std::string render_report(const ReportInputs& in, const std::vector<Figure>& figures) {
   MarkdownBuffer put;
   const nlohmann::json& run = in.run;
   put("# ballbench report\n\n");
@@ -171,6 +186,8 @@ std::string render_report(const ReportInputs& in) {
         "accuracy).\n\n");
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
+    for (const Figure& f : figures)
+      if (f.scene == scene) put("![{}]({})\n\n*{}*\n\n", f.caption, f.file, f.caption);
   }
 
   put("## Engines, profiles and limits\n\n`stock` is the engine as shipped (its defaults); `tuned` is what its own "
@@ -216,6 +233,10 @@ std::string render_report(const ReportInputs& in) {
       100 * cfg.contact_tolerance, 100 * cfg.contact_tolerance, cfg.stuck_samples);
   put("- **penetration max / mean**: overlap depth divided by the radius (the smaller one for a pair), max and mean "
       "over every overlapping contact in every sample.\n");
+  put("- **pos error vs exact**: position RMS error over balls against the event-driven `exact` engine run in "
+      "lockstep, at the last step; **horizon**: the first time that error exceeded a tenth of the mean radius "
+      "(chaotic scenes part from any reference, so this says more than a long-run RMS; `never`: it stayed within). "
+      "Where `exact` itself failed, the comparison runs up to that step.\n");
   put("- **ns/step, ns/ball-step**: engine step time only, per step and per ball per step.\n");
   put("- **diverged@k**: the state became non-finite, or the energy exceeded {} times its initial value, at step k; "
       "metrics cover the steps before.\n", cfg.divergence_energy_factor);

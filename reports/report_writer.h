@@ -15,9 +15,16 @@ struct ReportInputs {
   std::vector<Result> results;       // every results/*.json but run.json, in file order
 };
 
+// A figure drawn for the report (figures.h).
+struct Figure {
+  std::string scene;
+  std::string file;     // relative to the report's folder: figures/NAME.png
+  std::string caption;
+};
+
 // Reads a results folder written by `ballbench report`.
 ReportInputs read_report_inputs(const std::string& results_dir);
 
-std::string render_report(const ReportInputs& in);
+std::string render_report(const ReportInputs& in, const std::vector<Figure>& figures = {});
 
 }  // namespace ballbench

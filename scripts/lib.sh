@@ -10,9 +10,18 @@ BALLBENCH_PACKAGES=(
   gnuplot-nox python3
 )
 
+# CI only (.ci/run): clang and its runtime libraries for the libFuzzer target (tests/fuzz/). The
+# sanitizer build uses g++, whose ASan and UBSan runtimes come with it.
+BALLBENCH_CI_PACKAGES=(
+  clang libclang-rt-14-dev
+)
+
+# ballbench_install_packages [PACKAGE...]: install the missing ones of the given packages
+# (default: BALLBENCH_PACKAGES).
 ballbench_install_packages() {
-  local missing=()
-  for p in "${BALLBENCH_PACKAGES[@]}"; do
+  local wanted=("$@") missing=()
+  [ ${#wanted[@]} -eq 0 ] && wanted=("${BALLBENCH_PACKAGES[@]}")
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
   done
   [ ${#missing[@]} -eq 0 ] && return 0

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -23,7 +25,9 @@ std::string slurp(const std::string& path) {
 
 Outcome cli(const std::string& args) {
   const auto dir = std::filesystem::temp_directory_path();
-  const std::string out = (dir / "ballbench_cli_out.txt").string(), err = (dir / "ballbench_cli_err.txt").string();
+  // Per process: ctest runs tests in parallel.
+  const std::string tag = std::to_string(::getpid());
+  const std::string out = (dir / ("ballbench_cli_out." + tag)).string(), err = (dir / ("ballbench_cli_err." + tag)).string();
   const int rc = std::system((std::string(BALLBENCH_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
   return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
 }
@@ -107,6 +111,98 @@ TEST(Cli, TheSchemaExampleRunsUnchanged) {
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("home-seed"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("\nhome "), std::string::npos) << o.out;
+}
+
+// The audit's additions (issue 7): files that cannot be read as scenes, names that do not exist,
+// flags that contradict each other.
+
+TEST(Cli, UnreadableSceneFile) {
+  if (::geteuid() == 0) GTEST_SKIP() << "root reads files without read permission";
+  const std::string p = write_scene("bb_unreadable.toml", kSchemaExample);
+  std::filesystem::permissions(p, std::filesystem::perms::none);
+  const Outcome o = cli("run --scene " + p + " --engine home");
+  std::filesystem::permissions(p, std::filesystem::perms::owner_all);
+  expect_one_line_error(o, p + ": cannot read the scene file: Permission denied");
+}
+
+TEST(Cli, DirectoryAsSceneFile) {
+  const auto dir = std::filesystem::temp_directory_path() / "bb_dir.toml";
+  std::filesystem::create_directories(dir);
+  expect_one_line_error(cli("run --scene " + dir.string() + " --engine home"), "is a directory, not a scene file");
+}
+
+TEST(Cli, EmptySceneFile) {
+  const std::string p = write_scene("bb_empty.toml", "");
+  expect_one_line_error(cli("run --scene " + p + " --engine home"), p + ":1: scene: the file is empty");
+}
+
+TEST(Cli, UnknownEngineInTheScenesSettings) {
+  std::string text = kSchemaExample;
+  text += "[settings.hom]\ncontact_iterations = 4\n";
+  const std::string p = write_scene("bb_settings_engine.toml", text);
+  expect_one_line_error(cli("run --scene " + p + " --engine home --steps 1"),
+                        p + ": settings.hom: unknown engine 'hom', did you mean 'home'?");
+}
+
+TEST(Cli, UnknownEngineInSet) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 1 --set hme.contact_iterations=3"),
+                        "unknown engine 'hme', did you mean 'home'?");
+}
+
+TEST(Cli, EngineNamedTwice) { expect_one_line_error(cli("run --scene seed-box --engine home,home"), "named twice"); }
+
+TEST(Cli, UnknownProfile) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --profile tunde"), "no selected engine has a profile 'tunde'");
+}
+
+TEST(Cli, NoIsolationContradictsATimeout) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --no-isolation --timeout 5"), "excludes");
+}
+
+TEST(Cli, TimeoutMustBePositive) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --timeout 0"), "--timeout");
+  expect_one_line_error(cli("run --scene seed-box --engine home --timeout soon"), "--timeout");
+}
+
+TEST(Cli, NegativeStepsAndDt) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps -3"), "--steps");
+  expect_one_line_error(cli("run --scene seed-box --engine home --dt -0.1"), "--dt");
+}
+
+TEST(Cli, FreshContradictsRenderOnly) {
+  expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
+}
+
+TEST(Cli, UnwritableTrajectory) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 1 --trajectory /nonexistent/dir/t.csv"),
+                        "--trajectory /nonexistent/dir/t.csv: cannot open for writing");
+}
+
+// With isolation (the default) and without, `run` prints the same numbers and the JSON carries
+// the same checksums; the trajectory CSV has one header and every run's rows.
+TEST(Cli, IsolatedAndInProcessRunsAgree) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string j1 = (dir / "bb_iso1.json").string(), j2 = (dir / "bb_iso2.json").string();
+  const std::string c1 = (dir / "bb_iso1.csv").string(), c2 = (dir / "bb_iso2.csv").string();
+  const std::string args = "run --scene seed-box --engine home-seed,home --steps 50 --quiet ";
+  const Outcome a = cli(args + "--json " + j1 + " --trajectory " + c1);
+  const Outcome b = cli(args + "--no-isolation --json " + j2 + " --trajectory " + c2);
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  const std::string ja = slurp(j1), jb = slurp(j2);
+  for (const std::string& j : {ja, jb}) EXPECT_NE(j.find("\"checksum\""), std::string::npos);
+  auto checksums = [](const std::string& json) {
+    std::string out;
+    for (size_t at = json.find("\"trajectory\": \""); at != std::string::npos; at = json.find("\"trajectory\": \"", at + 1))
+      out += json.substr(at, 32) + ";";
+    return out;
+  };
+  EXPECT_EQ(checksums(ja), checksums(jb));
+  EXPECT_EQ(slurp(c1), slurp(c2));
+  const std::string csv = slurp(c1);
+  EXPECT_EQ(csv.rfind("engine,step,t,id,x,y,vx,vy\n", 0), 0u);
+  EXPECT_EQ(csv.find("engine,", 1), std::string::npos);  // one header
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 51 * 20);
 }
 
 TEST(Cli, ListShowsScenesAndEnginesWithVersions) {

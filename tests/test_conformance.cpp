@@ -129,21 +129,10 @@ radius = 0.1
   return std::abs(std::hypot(st.vel(0, 0), st.vel(0, 1)) - want) / want;
 }
 
-// Masses 1 and 3, v1 = 2, v2 = 0, e = 1, in open space: thesis eq. 11-12 give v1' = -1, v2' = 1.
+// Masses 1 and 3, v1 = 2, v2 = 0, e = 1, in open space (scenarios/two-ball-3.toml): thesis
+// eq. 11-12 give v1' = -1, v2' = 1.
 double head_on(const std::string& engine, const std::string& profile) {
-  const Scene s = scene_from(R"(
-dt = 0.01
-duration = 1.0
-[[ball]]
-pos = [-1.0, 0.0]
-vel = [2.0, 0.0]
-radius = 0.25
-mass = 1.0
-[[ball]]
-pos = [0.0, 0.0]
-radius = 0.25
-mass = 3.0
-)");
+  const Scene s = load_scene("two-ball-3");
   auto eng = build(engine, profile, s);
   for (long k = 0; k < s.steps(); ++k) eng->step(s.dt);
   State st;

@@ -1,6 +1,9 @@
 // Scene files -> Scene: the schema, derived features, and one clear line for bad input.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <filesystem>
+
 #include "input_error.h"
 #include "scene_loader.h"
 
@@ -62,11 +65,24 @@ TEST(SceneLoader, BuiltInSeedScenesMatchTheThesis) {
   EXPECT_NEAR(bowl.initial.pos.col(1).maxCoeff(), 0.2, 1e-12);
 }
 
+// The fuzzer's seeds (tests/fuzz/corpus/) are valid scenes: it starts from inputs that reach deep
+// into the parser, and they stay in step with the format.
+TEST(SceneLoader, FuzzSeedsAreValidScenes) {
+  int seeds = 0;
+  for (const auto& e : std::filesystem::directory_iterator(BALLBENCH_FUZZ_CORPUS)) {
+    EXPECT_NO_THROW(load_scene_file(e.path().string())) << e.path();
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 3);
+}
+
 struct BadCase {
   const char* what;
   std::string text;
   const char* expected;  // a piece of the one-line message
 };
+
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.what; }
 
 class SceneLoaderRejects : public ::testing::TestWithParam<BadCase> {};
 
@@ -93,7 +109,62 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"outside", replace(kMinimal, "pos = [0.0, 0.0]", "pos = [4.9, 0.0]"), "not inside the container"},
         BadCase{"overlap", std::string(kMinimal) + "[[ball]]\npos = [0.3, 0.0]\nradius = 0.25\n", "overlap at the start"},
         BadCase{"no balls", "dt = 0.1\nduration = 1.0\n", "no balls"},
-        BadCase{"too full", std::string(kMinimal) + "[random]\ncount = 1000\nradius = 0.4\n", "fit without overlap"}));
+        BadCase{"too full", std::string(kMinimal) + "[random]\ncount = 1000\nradius = 0.4\n", "fit without overlap"},
+        // The audit's additions (issue 7): every kind of bad input has its case.
+        BadCase{"empty file", "", "s.toml:1: scene: the file is empty"},
+        BadCase{"only comments", "# a scene, one day\n\n", "the file is empty"},
+        BadCase{"not UTF-8", "dt = \xff\xfe\n", "TOML syntax error"},
+        BadCase{"duplicate key", replace(kMinimal, "dt = 0.01", "dt = 0.01\ndt = 0.02"), ":4: TOML syntax error"},
+        BadCase{"ball is a number", "dt = 0.01\nduration = 1.0\nball = 3\n", ":3: ball: expected [[ball]] tables, got an integer"},
+        BadCase{"ball is a single table", replace(kMinimal, "[[ball]]", "[ball]"), "got a single [ball] table"},
+        BadCase{"ball array holds a number", "dt = 0.01\nduration = 1.0\nball = [{pos = [0.0, 0.0], radius = 0.1}, 3]\n",
+                ":3: ball[1]: expected a table of pos, vel, radius, mass, got an integer"},
+        BadCase{"ball array is empty", "dt = 0.01\nduration = 1.0\nball = []\n", ":3: ball: expected [[ball]] tables, got an empty array"},
+        BadCase{"count overflows 64 bits", std::string(kMinimal) + "[random]\ncount = 99999999999999999999\nradius = 0.1\n",
+                ":15: TOML syntax error"},
+        BadCase{"count too large", std::string(kMinimal) + "[random]\ncount = 9223372036854775807\nradius = 0.1\n",
+                "random.count: at most 50000000 balls"},
+        BadCase{"count negative", std::string(kMinimal) + "[random]\ncount = -1\nradius = 0.1\n", "random.count: missing or negative"},
+        BadCase{"count fractional", std::string(kMinimal) + "[random]\ncount = 2.5\nradius = 0.1\n",
+                "random.count: expected an integer, got a number"},
+        BadCase{"wrong type in vector", replace(kMinimal, "pos = [0.0, 0.0]", "pos = [0.0, \"up\"]"), "ball[0].pos[1]: expected a number, got a string"},
+        BadCase{"vector of three", replace(kMinimal, "pos = [0.0, 0.0]", "pos = [0.0, 0.0, 0.0]"), "ball[0].pos: expected an array of two numbers"},
+        BadCase{"wrong type bool", replace(kMinimal, "mass = 1.0", "mass = true"), "ball[0].mass: expected a number, got a boolean"},
+        BadCase{"inf", replace(kMinimal, "duration = 1.0", "duration = inf"), "duration: must be finite"},
+        BadCase{"nan in a vector", replace(kMinimal, "vel = [1.0, 0.0]", "vel = [nan, 0.0]"), "ball[0].vel[0]: must be finite"},
+        BadCase{"negative inf gravity", replace(kMinimal, "duration = 1.0", "duration = 1.0\ngravity = [0.0, -inf]"), "gravity[1]: must be finite"},
+        BadCase{"zero mass", replace(kMinimal, "mass = 1.0", "mass = 0.0"), "ball[0].mass: must be positive"},
+        BadCase{"negative dt", replace(kMinimal, "dt = 0.01", "dt = -0.01"), "dt: must be positive"},
+        BadCase{"random zero radius", std::string(kMinimal) + "[random]\ncount = 3\nradius = 0.0\n", "random.radius: must be positive"},
+        BadCase{"random negative mass", std::string(kMinimal) + "[random]\ncount = 3\nradius = 0.1\nmass = -2.0\n",
+                "random.mass: must be positive"},
+        BadCase{"huge coordinates", replace(replace(kMinimal, "min = [-5.0, -5.0]", "min = [-1e308, -5.0]"), "max = [5.0, 5.0]", "max = [1e308, 5.0]"),
+                "container.min[0]: must be within +-1e+12"},
+        BadCase{"huge radius", replace(kMinimal, "radius = 0.25", "radius = 1e300"), "ball[0].radius: must be at most 1e+12"},
+        BadCase{"tiny radius far out", replace(replace(kMinimal, "radius = 0.25", "radius = 1e-300"), "pos = [0.0, 0.0]", "pos = [1.0, 0.0]"),
+                "ball[0].pos: (1, 0) is more than 1e+09 radii"},
+        BadCase{"random radius larger than the box", std::string(kMinimal) + "[random]\ncount = 1\nradius = 6.0\n",
+                "random.radius: balls of radius 6 do not fit in the 10 x 10 container"},
+        BadCase{"ball outside below", replace(kMinimal, "pos = [0.0, 0.0]", "pos = [0.0, -4.8]"), "ball[0].pos: ball at (0, -4.8) with radius 0.25 is not inside"},
+        BadCase{"unknown key in a ball", replace(kMinimal, "radius = 0.25", "raduis = 0.25"), "ball[0].raduis: unknown key, did you mean 'radius'?"},
+        BadCase{"unknown key in random", std::string(kMinimal) + "[random]\ncount = 1\nradius = 0.1\nsede = 3\n", "random.sede: unknown key, did you mean 'seed'?"},
+        BadCase{"unknown key in container", replace(kMinimal, "kind = \"box\"", "knd = \"box\""), "container.knd: unknown key, did you mean 'kind'?"},
+        BadCase{"unknown container kind", replace(kMinimal, "kind = \"box\"", "kind = \"bx\""), "did you mean 'box'?"},
+        BadCase{"container not a table", "dt = 0.01\nduration = 1.0\ncontainer = 3\n", "container: expected a table [container]"},
+        BadCase{"random not a table", "dt = 0.01\nduration = 1.0\nrandom = [1]\n", "random: expected a table [random] or tables [[random]]"},
+        BadCase{"settings not a table", std::string(kMinimal) + "[settings]\nhome = 3\n", "settings.home: expected a table of settings"},
+        BadCase{"setting of a wrong type", std::string(kMinimal) + "[settings.home]\ncontact_iterations = [1]\n",
+                "settings.home.contact_iterations: expected a number, string or boolean"},
+        BadCase{"too many steps", replace(kMinimal, "dt = 0.01", "dt = 1e-12"), "duration: duration / dt is more than"},
+        BadCase{"restitution above 1", replace(kMinimal, "duration = 1.0", "duration = 1.0\nrestitution = 1.5"), "restitution: must be in [0, 1]"},
+        BadCase{"newline in a key", replace(kMinimal, "duration", "\"dura\\ntion\""), "dura\\ntion: unknown key"},
+        BadCase{"name not a string", replace(kMinimal, "name = \"one\"", "name = 1"), "name: expected a string, got an integer"}),
+    [](const ::testing::TestParamInfo<BadCase>& info) {
+      std::string name = info.param.what;
+      for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+      return name;
+    });
 
 }  // namespace
 }  // namespace ballbench

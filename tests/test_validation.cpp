@@ -34,6 +34,16 @@ TEST_P(Validation, TwoBallCollisionsFollowEquations4To8) {
   }
 }
 
+TEST_P(Validation, CorridorBallIsWhereTheUnfoldedLineSaysAfter40Bounces) {
+  // After 73 m of travel in a 1.8 m corridor (centre range [-0.9, 0.9]) the ball is where the
+  // straight line folded at every wall puts it, moving at exactly its speed. Tolerance: round-off
+  // of ~40 reflections and 1000 position updates of ~7 m each.
+  const State st = final_state("corridor", GetParam());
+  const double unfolded = std::fmod(73.0 + 0.9, 3.6);
+  EXPECT_NEAR(st.pos(0, 0), unfolded < 1.8 ? unfolded - 0.9 : 2.7 - unfolded, 1e-9);
+  EXPECT_DOUBLE_EQ(std::abs(st.vel(0, 0)), 7.3);
+}
+
 TEST_P(Validation, NewtonsCradlePassesTheImpactAlongTheRow) {
   // With gaps the impacts are a sequence of binary elastic collisions of equal masses: each
   // exchanges velocities, so only the last ball moves on, at the striker's 1 m/s.

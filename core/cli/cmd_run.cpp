@@ -1,4 +1,6 @@
 // `ballbench run`: engines on one scene, a table on stdout, optional JSON and trajectory CSV.
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -9,7 +11,6 @@
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
-#include "trajectory_csv.h"
 
 namespace ballbench::cli {
 namespace {
@@ -20,10 +21,23 @@ struct RunArgs {
   std::optional<long> steps;
   std::vector<std::string> sets;
   bool quiet = false;
+  bool no_reference = false;
+  Isolation isolation;
 };
+
+// A [settings.NAME] table naming no engine would be silently ignored: a typo must be an error.
+void check_scene_settings(const Scene& scene) {
+  std::vector<std::string> names;
+  for (const auto& e : engine_registry()) names.push_back(e.info.name);
+  for (const auto& [name, table] : scene.engine_settings.items())
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      throw InputError(fmt::format("{}: settings.{}: unknown engine '{}'{} (known: {})", scene.source, name, name,
+                                   did_you_mean(name, names), fmt::join(names, ", ")));
+}
 
 void run(const RunArgs& a) {
   Scene scene = load_scene(a.scene);
+  check_scene_settings(scene);
   const auto engines = parse_engine_list(a.engines);
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;
@@ -33,10 +47,8 @@ void run(const RunArgs& a) {
   options.steps = a.steps ? *a.steps : -1;
   for (const auto& s : a.sets) add_setting(options.overrides, s);
   for (const auto& [name, v] : options.overrides.items()) find_engine(name);  // a typo in --set
-  std::optional<TrajectoryCsv> trajectory;
-  if (!a.trajectory.empty()) trajectory.emplace(a.trajectory), options.trajectory = &*trajectory;
-  const auto results = run_all(scene, engines, a.profile, options, a.quiet);
-  if (trajectory) trajectory->close();
+  if (!a.no_reference) options.reference = reference_engine();
+  const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
 }
@@ -59,6 +71,16 @@ void add_run(CLI::App& app) {
                   "settings profile (see `ballbench list`): a name, or all; engines without it run their default");
   cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable)");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  cmd->add_flag("--no-reference", a->no_reference,
+                "do not run `exact` alongside to measure the error against it (it runs by default)");
+  auto* timeout = cmd->add_option("--timeout", a->isolation.timeout_s,
+                                  "seconds each engine run may take before it is killed and marked \"timed out\" "
+                                  "(default 600)")
+                      ->check(CLI::PositiveNumber);
+  cmd->add_flag_function(
+         "--no-isolation", [a](std::int64_t) { a->isolation.enabled = false; },
+         "run engines in this process, not each in a child process (a crash then ends the whole run)")
+      ->excludes(timeout);
   cmd->callback([a] { run(*a); });
 }
 

@@ -1,5 +1,6 @@
 // `ballbench`: the subcommands are in cmd_*.cpp. Every error the user can cause ends here as one
-// line on stderr and exit status 2; nothing deeper exits the process.
+// line on stderr and exit status 2; a check that ran and failed (`regress`) exits with status 1;
+// nothing deeper exits the process.
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,8 @@ int main(int argc, char** argv) {
   ballbench::cli::add_list(app);
   ballbench::cli::add_run(app);
   ballbench::cli::add_report(app);
+  ballbench::cli::add_regress(app);
+  ballbench::cli::add_stress(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {
@@ -22,6 +25,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "ballbench: error: %s (see ballbench --help)\n", e.what());
     return 2;
+  } catch (const ballbench::cli::CheckFailed& e) {
+    return e.status;
   } catch (const ballbench::InputError& e) {
     std::fprintf(stderr, "ballbench: error: %s\n", e.what());
     return 2;

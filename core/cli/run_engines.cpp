@@ -1,11 +1,16 @@
 #include "run_engines.h"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "isolated_run.h"
 #include "progress.h"
+#include "trajectory_csv.h"
 
 namespace ballbench::cli {
 namespace {
@@ -13,6 +18,48 @@ namespace {
 std::string opt_drift(const Result& r) {
   return r.metrics.energy.max_rel_drift ? fmt::format("{:.3g}", *r.metrics.energy.max_rel_drift) : "n/a";
 }
+
+// The trajectory CSV of isolated runs: each child writes its own part (a complete CSV, header
+// included, by TrajectoryCsv); the parts are joined here, in run order, under one header. The file
+// appears only when complete (written beside it, then renamed), and the parts are removed even if a
+// run throws.
+class TrajectoryParts {
+ public:
+  explicit TrajectoryParts(std::string path) : path_(std::move(path)), joined_(path_ + ".joining") {
+    try {
+      TrajectoryCsv(joined_).close();  // the header alone, from the one writer of the format
+    } catch (const InputError&) {
+      throw InputError(fmt::format("--trajectory {}: cannot open for writing", path_));
+    }
+  }
+  ~TrajectoryParts() {
+    std::error_code ec;
+    for (int k = 0; k < count_; ++k) std::filesystem::remove(part(k), ec), std::filesystem::remove(part(k) + ".tmp", ec);
+    std::filesystem::remove(joined_, ec);
+  }
+  TrajectoryParts(const TrajectoryParts&) = delete;
+  TrajectoryParts& operator=(const TrajectoryParts&) = delete;
+
+  std::string next_part() { return part(count_++); }
+
+  // Appends the rows of the last part, if its run wrote one.
+  void take_last() {
+    std::ifstream in(part(count_ - 1), std::ios::binary);
+    if (!in) return;
+    std::string header;
+    std::getline(in, header);
+    std::ofstream out(joined_, std::ios::binary | std::ios::app);
+    out << in.rdbuf();
+    if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
+  }
+
+  void finish() { std::filesystem::rename(joined_, path_); }
+
+ private:
+  std::string part(int k) const { return fmt::format("{}.part{}", path_, k); }
+  std::string path_, joined_;
+  int count_ = 0;
+};
 
 }  // namespace
 
@@ -27,16 +74,27 @@ void add_setting(nlohmann::json& overrides, const std::string& item) {
 }
 
 void print_table(const std::vector<Result>& results) {
-  fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>12}\n", "engine", "status", "n",
-             "steps", "E drift", "P drift", "tun.wall", "tun.pair", "stk.wall", "stk.pair", "pen.max", "ns/ball-step");
+  fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>12}\n", "engine",
+             "status", "n", "steps", "E drift", "P drift", "tun.wall", "tun.pair", "stk.wall", "stk.pair", "pen.max",
+             "pos.err", "horizon", "ns/ball-step");
   for (const auto& r : results) {
     const auto& m = r.metrics;
-    fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>12.1f}\n",
+    const auto& e = r.reference;
+    fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>10} {:>9} {:>12.1f}\n",
                run_label(r), r.status, r.n, r.steps_done, opt_drift(r), m.momentum.max_abs_drift, m.tunnelling_wall,
-               m.tunnelling_pair, m.sticking_wall, m.sticking_pair, m.penetration_max, r.ns_per_ball_step);
+               m.tunnelling_pair, m.sticking_wall, m.sticking_pair, m.penetration_max,
+               e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
+               !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step);
   }
-  for (const auto& r : results)
+  for (const auto& r : results) {
     if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
+    if (r.reference.reference_failed_step >= 0)
+      fmt::print("{}: reference {} failed at step {}, error compared up to it: {}\n", run_label(r),
+                 r.reference.reference, r.reference.reference_failed_step, r.reference.reference_error);
+  }
+  if (!results.empty() && results.front().reference.available)
+    fmt::print("pos.err: position RMS error against {} at the last step (m); horizon: first time it exceeded {:.3g} m\n",
+               results.front().reference.reference, results.front().reference.horizon_tolerance);
 }
 
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile) {
@@ -59,7 +117,14 @@ void check_profile(const std::vector<const EngineEntry*>& engines, const std::st
 }
 
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
-                            const std::string& profile, const RunOptions& base, bool quiet) {
+                            const std::string& profile, const RunOptions& base, bool quiet,
+                            const Isolation& isolation, const std::string& trajectory_path) {
+  std::optional<TrajectoryCsv> trajectory;  // in this process
+  std::optional<TrajectoryParts> parts;     // from child processes
+  if (!trajectory_path.empty()) {
+    if (isolation.enabled) parts.emplace(trajectory_path);
+    else trajectory.emplace(trajectory_path);
+  }
   std::vector<Result> results;
   for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
@@ -68,8 +133,17 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
       if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
       options.profile = p;
       options.overrides = base.overrides.value(e->info.name, nlohmann::json::object());
-      results.push_back(run_engine(scene, *e, options));
+      if (!isolation.enabled) {
+        if (trajectory) options.trajectory = &*trajectory;
+        results.push_back(run_engine(scene, *e, options));
+        continue;
+      }
+      IsolationOptions child{isolation.timeout_s, parts ? parts->next_part() : ""};
+      results.push_back(run_engine_isolated(scene, *e, options, child));
+      if (parts) parts->take_last();
     }
+  if (trajectory) trajectory->close();
+  if (parts) parts->finish();
   return results;
 }
 

@@ -21,9 +21,21 @@ std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& p
 // Throws InputError if no engine in `engines` has `profile`.
 void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile);
 
-// Every engine x profile on `scene`; `base.overrides` holds settings per engine name.
+// How run_all runs each engine: by default in a child process with a time limit
+// (core/isolated_run.h), so a crash or hang marks one row and the others complete; with
+// `enabled = false` (--no-isolation) in this process, where a crash ends everything (useful in a
+// debugger).
+struct Isolation {
+  bool enabled = true;
+  double timeout_s = 600;  // per run (s)
+};
+
+// Every engine x profile on `scene`; `base.overrides` holds settings per engine name. If
+// `trajectory_path` is not empty, every run's trajectory goes to that CSV (one header line, runs
+// in order; a run that crashed or timed out has no rows). `base.trajectory` must be null.
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
-                            const std::string& profile, const RunOptions& base, bool quiet);
+                            const std::string& profile, const RunOptions& base, bool quiet,
+                            const Isolation& isolation = {}, const std::string& trajectory_path = "");
 
 void print_table(const std::vector<Result>& results);
 

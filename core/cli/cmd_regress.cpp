@@ -1,0 +1,252 @@
+// `ballbench regress`: our deterministic solvers on a fixed suite of short scenes, compared with a
+// committed baseline (tests/regress/baseline.json) metric by metric, each within a tolerance, and
+// by trajectory checksum. Every difference is one line; any difference exits with status 1.
+// `--update` rewrites the baseline: do it on purpose, after an intended change to a solver.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "input_error.h"
+#include "machine_info.h"
+#include "registry.h"
+#include "run_engines.h"
+#include "scene_loader.h"
+
+namespace ballbench::cli {
+namespace {
+
+// The suite: our double-precision solvers, which are deterministic (same build, scene and settings
+// give the same bits), on seed-box (whole), seed-bowl (its first 10 s) and the small scenes in
+// tests/regress/scenes/ (their own duration). Under a second in a release build, so it runs with
+// every test.
+const char* const kEngines[] = {"home", "exact"};
+struct SuiteScene {
+  std::string scene;  // built-in name or path
+  long steps;         // < 0: the scene's duration / dt
+};
+std::vector<SuiteScene> suite() {
+  std::vector<SuiteScene> out{{"seed-box", 3000}, {"seed-bowl", 1000}};
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(BALLBENCH_REGRESS_DIR) + "/scenes", ec))
+    if (e.path().extension() == ".toml") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) out.push_back({f, -1});
+  return out;
+}
+
+// Default tolerances, written into a new baseline; a baseline's own "tolerances" are the ones used
+// (so they can be changed there) and survive --update. A metric passes if
+// |now - baseline| <= abs + rel |baseline|.
+// - Counts (steps, tunnelling and sticking events) and the status: exact. A count that moves is a
+//   behaviour change, never round-off.
+// - Real-valued metrics: relative 1e-9 with an absolute floor of 1e-12 (for values that are round-off
+//   around zero, such as the momentum drift of a conserving solver). Our solvers compute in double
+//   with -ffp-contract=off, so the same source gives the same bits on every x86-64 build we make
+//   (checked: g++ -O2, and -O0 and -O1 with ASan and UBSan, give identical checksums); 1e-9 still
+//   leaves room for a different compiler or libm reordering a sum, while any change of algorithm or
+//   constant moves these metrics by far more (home's contact_iterations 50 -> 4 moves energy.final
+//   on seed-bowl by 0.6%).
+// - The checksums of the final state and of the whole trajectory (Result::checksum_*): exact.
+nlohmann::json default_tolerances() {
+  const nlohmann::json exact = {{"rel", 0.0}, {"abs", 0.0}};
+  const nlohmann::json real = {{"rel", 1e-9}, {"abs", 1e-12}};
+  return {{"steps_done", exact},
+          {"diverged_step", exact},
+          {"tunnelling.wall", exact},
+          {"tunnelling.pair", exact},
+          {"sticking.wall", exact},
+          {"sticking.pair", exact},
+          {"energy.initial", real},
+          {"energy.final", real},
+          {"energy.max_rel_drift", real},
+          {"energy.max_abs_drift", real},
+          {"momentum.max_abs_drift", real},
+          {"penetration.max", real},
+          {"penetration.mean", real}};
+}
+
+const char* kAbout =
+    "ballbench regress baseline: our deterministic solvers on the suite in core/cli/cmd_regress.cpp. "
+    "A metric passes if |now - baseline| <= abs + rel * |baseline| (tolerances below: counts exact, "
+    "real-valued metrics relative 1e-9, see the comment in cmd_regress.cpp); status, settings, "
+    "engine_version and both checksums must match exactly. Regenerate on purpose with "
+    "`ballbench regress --update` after an intended solver change.";
+
+// One run as the baseline stores it. Null for a metric the run does not have (energy drift when
+// the initial energy is zero, diverged_step of a run that did not diverge).
+nlohmann::json record(const Result& r) {
+  const auto& m = r.metrics;
+  nlohmann::json metrics = {
+      {"steps_done", r.steps_done},
+      {"diverged_step", r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr)},
+      {"tunnelling.wall", m.tunnelling_wall},
+      {"tunnelling.pair", m.tunnelling_pair},
+      {"sticking.wall", m.sticking_wall},
+      {"sticking.pair", m.sticking_pair},
+      {"energy.initial", m.energy.initial},
+      {"energy.final", m.energy.final},
+      {"energy.max_rel_drift", m.energy.max_rel_drift ? nlohmann::json(*m.energy.max_rel_drift) : nlohmann::json(nullptr)},
+      {"energy.max_abs_drift", m.energy.max_abs_drift},
+      {"momentum.max_abs_drift", m.momentum.max_abs_drift},
+      {"penetration.max", m.penetration_max},
+      {"penetration.mean", m.penetration_mean}};
+  return {{"scene", r.scene},
+          {"engine", r.engine},
+          {"engine_version", r.engine_version},
+          {"steps", r.steps},
+          {"status", r.status},
+          {"error", r.error},
+          {"checksum", {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}}},
+          {"metrics", metrics},
+          {"settings", r.settings}};
+}
+
+std::string text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+// The differences between one baseline record and one new one, as lines.
+void compare(const nlohmann::json& base, const nlohmann::json& now, const nlohmann::json& tolerances,
+             std::vector<std::string>& lines) {
+  const std::string who = fmt::format("{} {}", text(now["scene"]), text(now["engine"]));
+  auto differs = [&](const std::string& what, const nlohmann::json& b, const nlohmann::json& n, const std::string& note) {
+    lines.push_back(fmt::format("{} {}: baseline {}, now {}{}", who, what, text(b), text(n), note));
+  };
+  for (const char* key : {"engine_version", "steps", "status"})
+    if (base.value(key, nlohmann::json()) != now[key]) differs(key, base.value(key, nlohmann::json()), now[key], "");
+  for (const auto& [key, n] : now["metrics"].items()) {
+    const nlohmann::json b = base.contains("metrics") ? base["metrics"].value(key, nlohmann::json()) : nlohmann::json();
+    const nlohmann::json tol = tolerances.value(key, nlohmann::json{{"rel", 0.0}, {"abs", 0.0}});
+    const double rel = tol.value("rel", 0.0), abs = tol.value("abs", 0.0);
+    const std::string note = rel == 0 && abs == 0 ? " (must match exactly)" : fmt::format(" (tolerance: rel {}, abs {})", rel, abs);
+    if (b.is_number() && n.is_number()) {
+      const double bv = b.get<double>(), nv = n.get<double>();
+      if (!(std::abs(nv - bv) <= abs + rel * std::abs(bv))) differs(key, b, n, note);
+    } else if (b != n) {
+      differs(key, b, n, note);
+    }
+  }
+  for (const char* which : {"final", "trajectory"}) {
+    const nlohmann::json b = base.contains("checksum") ? base["checksum"].value(which, nlohmann::json()) : nlohmann::json();
+    if (b != now["checksum"][which]) differs(fmt::format("checksum.{}", which), b, now["checksum"][which], "");
+  }
+  const nlohmann::json bs = base.value("settings", nlohmann::json::object()), ns = now["settings"];
+  for (const auto& [key, n] : ns.items())
+    if (bs.value(key, nlohmann::json()) != n) differs("settings." + key, bs.value(key, nlohmann::json()), n, "");
+  for (const auto& [key, b] : bs.items())
+    if (!ns.contains(key)) differs("settings." + key, b, nlohmann::json(), "");
+}
+
+nlohmann::json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(fmt::format("{}: cannot read the baseline (create it with ballbench regress --update)", path));
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a regress baseline: {}", path, e.what()));
+  }
+}
+
+void write_json_file(const std::string& path, const nlohmann::json& j) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(2) << '\n';
+    if (!out) throw InputError(fmt::format("{}: cannot write the baseline", path));
+  }
+  std::filesystem::rename(tmp, path);
+}
+
+struct RegressArgs {
+  std::string baseline = std::string(BALLBENCH_REGRESS_DIR) + "/baseline.json";
+  bool update = false;
+  std::vector<std::string> sets;
+  double timeout_s = 120;
+};
+
+void regress(const RegressArgs& a) {
+  RunOptions options;
+  for (const auto& s : a.sets) add_setting(options.overrides, s);
+  std::vector<const EngineEntry*> engines;
+  for (const char* name : kEngines) engines.push_back(&find_engine(name));
+  for (const auto& [name, v] : options.overrides.items())
+    if (std::none_of(std::begin(kEngines), std::end(kEngines), [&](const char* e) { return name == e; }))
+      throw InputError(fmt::format("--set {}: regress runs only {}", name, fmt::join(kEngines, ", ")));
+
+  // Read before running, so a missing or broken baseline is reported at once.
+  nlohmann::json baseline;
+  if (!a.update) {
+    baseline = read_json_file(a.baseline);
+    if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
+      throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
+  }
+
+  std::vector<nlohmann::json> runs;
+  for (const SuiteScene& item : suite()) {
+    const Scene scene = load_scene(item.scene);
+    options.steps = item.steps;
+    for (const Result& r : run_all(scene, engines, "", options, true, Isolation{true, a.timeout_s}))
+      runs.push_back(record(r));
+    fmt::print(stderr, "regress: ran {}\n", scene.name);
+  }
+
+  if (a.update) {
+    nlohmann::json tolerances = default_tolerances();
+    if (std::filesystem::exists(a.baseline)) {
+      const nlohmann::json old = read_json_file(a.baseline);
+      if (old.contains("tolerances")) tolerances = old["tolerances"];
+    }
+    const MachineInfo m = machine_info();
+    write_json_file(a.baseline, {{"about", kAbout},
+                                 {"generated_with", fmt::format("{}, {} build", m.compiler, m.build_type)},
+                                 {"tolerances", tolerances},
+                                 {"runs", runs}});
+    fmt::print("regress: wrote {} ({} runs)\n", a.baseline, runs.size());
+    return;
+  }
+
+  const nlohmann::json tolerances = baseline.value("tolerances", default_tolerances());
+  auto key = [](const nlohmann::json& r) { return text(r.value("scene", nlohmann::json())) + " " + text(r.value("engine", nlohmann::json())); };
+  std::vector<std::string> lines;
+  try {
+    for (const auto& now : runs) {
+      const auto& base = baseline["runs"];
+      const auto it = std::find_if(base.begin(), base.end(), [&](const nlohmann::json& b) { return key(b) == key(now); });
+      if (it == base.end()) lines.push_back(fmt::format("{}: not in the baseline", key(now)));
+      else compare(*it, now, tolerances, lines);
+    }
+    for (const auto& b : baseline["runs"])
+      if (std::none_of(runs.begin(), runs.end(), [&](const nlohmann::json& r) { return key(r) == key(b); }))
+        lines.push_back(fmt::format("{}: in the baseline but no longer in the suite", key(b)));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a regress baseline: {}", a.baseline, e.what()));
+  }
+
+  if (lines.empty()) {
+    fmt::print("regress: {} runs match {}\n", runs.size(), a.baseline);
+    return;
+  }
+  for (const auto& l : lines) fmt::print("regressed: {}\n", l);
+  fmt::print("regress: {} difference{} from {} (if intended: ballbench regress --update)\n", lines.size(),
+             lines.size() == 1 ? "" : "s", a.baseline);
+  throw CheckFailed{1};
+}
+
+}  // namespace
+
+void add_regress(CLI::App& app) {
+  auto a = std::make_shared<RegressArgs>();
+  auto* cmd = app.add_subcommand("regress", "run our solvers on the regression suite and compare with the baseline");
+  cmd->add_option("--baseline", a->baseline, "baseline file (default: tests/regress/baseline.json in the source tree)");
+  auto* set = cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable): see what a change does");
+  cmd->add_flag("--update", a->update, "rewrite the baseline from this run (after an intended change)")->excludes(set);
+  cmd->add_option("--timeout", a->timeout_s, "seconds each run may take before it is killed (default 120)")
+      ->check(CLI::PositiveNumber);
+  cmd->callback([a] { regress(*a); });
+}
+
+}  // namespace ballbench::cli

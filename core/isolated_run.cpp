@@ -1,0 +1,269 @@
+#include "isolated_run.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <functional>
+#include <optional>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+#include "trajectory_csv.h"
+
+// The child talks to the parent through a pipe in lines of text:
+//   progress DONE TOTAL      now and then (run_engine's progress callback, every 1% of the steps)
+//   result JSON              the Result (to_json, on one line), last
+//   input_error MESSAGE      run_engine threw InputError (bad settings): rethrown here
+//   error MESSAGE            any other exception escaped run_engine
+// then exits with status 0. Anything else (a signal, another exit status, silence past the time
+// limit) is the engine's doing and becomes the run's result.
+
+namespace ballbench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::string one_line(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  return s;
+}
+
+// write() until everything is out; a dead parent ends the child by SIGPIPE, which is fine.
+void send(int fd, const std::string& text) {
+  const char* p = text.data();
+  size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd, p, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return;
+    p += n, left -= static_cast<size_t>(n);
+  }
+}
+
+[[noreturn]] void child_main(int fd, const Scene& scene, const EngineEntry& entry, RunOptions options,
+                             const IsolationOptions& isolation) {
+  std::string message;
+  try {
+    std::optional<TrajectoryCsv> trajectory;
+    if (!isolation.trajectory_path.empty())
+      trajectory.emplace(isolation.trajectory_path), options.trajectory = &*trajectory;
+    options.progress = [fd](long done, long total) { send(fd, fmt::format("progress {} {}\n", done, total)); };
+    const Result r = run_engine(scene, entry, options);
+    if (trajectory) trajectory->close();
+    // Invalid UTF-8 in an engine's error text must not lose the result: replace it.
+    message = "result " + to_json(r).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  } catch (const InputError& e) {
+    message = "input_error " + one_line(e.what()) + "\n";
+  } catch (const std::exception& e) {
+    message = "error " + one_line(e.what()) + "\n";
+  } catch (...) {
+    message = "error an exception that is not a std::exception\n";
+  }
+  send(fd, message);
+  // _exit, not exit: no atexit handlers, static destructors or stdio flushes of the parent's state.
+  ::_exit(0);
+}
+
+// What the parent saw of the child.
+struct ChildOutcome {
+  bool timed_out = false;
+  bool reaped = false;
+  int wait_status = 0;
+  long last_done = 0;      // the last step the child reported done
+  std::string kind, body;  // the final message ("result", "input_error", "error"), if any
+};
+
+class ChildWatcher {
+ public:
+  ChildWatcher(pid_t pid, int fd, double timeout_s, const std::function<void(long, long)>& progress)
+      : pid_(pid), fd_(fd), progress_(progress),
+        deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                     std::chrono::duration<double>(std::min(timeout_s, 1e8)))) {}
+
+  ChildOutcome watch() {
+    read_until_eof();
+    if (!out_.timed_out) reap_before_deadline();
+    if (!out_.reaped) {
+      ::kill(pid_, SIGKILL);
+      while (::waitpid(pid_, &out_.wait_status, 0) < 0 && errno == EINTR) {
+      }
+      out_.reaped = true;
+    }
+    return out_;
+  }
+
+ private:
+  int ms_left() const {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count() + 1;
+    return static_cast<int>(std::clamp<long long>(left, 0, 60'000));  // poll again at least every minute
+  }
+  bool past_deadline() const { return Clock::now() >= deadline_; }
+
+  void read_until_eof() {
+    char buf[1 << 16];
+    for (;;) {
+      if (past_deadline()) {
+        out_.timed_out = true;
+        return;
+      }
+      pollfd p{fd_, POLLIN, 0};
+      const int ready = ::poll(&p, 1, ms_left());
+      if (ready < 0 && errno != EINTR) return;  // cannot watch the pipe: fall back to waiting
+      if (ready <= 0) continue;
+      const ssize_t n = ::read(fd_, buf, sizeof buf);
+      if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+      if (n <= 0) return;  // end of file: the child exited or closed the pipe
+      inbox_.append(buf, static_cast<size_t>(n));
+      take_lines();
+    }
+  }
+
+  void take_lines() {
+    size_t start = 0;
+    for (size_t end; (end = inbox_.find('\n', start)) != std::string::npos; start = end + 1) {
+      const std::string line = inbox_.substr(start, end - start);
+      const size_t space = line.find(' ');
+      const std::string kind = line.substr(0, space), body = space == std::string::npos ? "" : line.substr(space + 1);
+      if (kind == "progress") {
+        long done = 0, total = 0;
+        if (std::sscanf(body.c_str(), "%ld %ld", &done, &total) == 2) {
+          out_.last_done = done;
+          if (progress_) progress_(done, total);
+        }
+      } else {
+        out_.kind = kind, out_.body = body;
+      }
+    }
+    inbox_.erase(0, start);
+  }
+
+  // After end of file the child is exiting; give it until the deadline.
+  void reap_before_deadline() {
+    for (;;) {
+      const pid_t w = ::waitpid(pid_, &out_.wait_status, WNOHANG);
+      if (w == pid_) {
+        out_.reaped = true;
+        return;
+      }
+      if (w < 0 && errno != EINTR) return;
+      if (past_deadline()) {
+        out_.timed_out = true;
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  }
+
+  pid_t pid_;
+  int fd_;
+  const std::function<void(long, long)>& progress_;
+  Clock::time_point deadline_;
+  std::string inbox_;
+  ChildOutcome out_;
+};
+
+// The fields run_engine fills before building the world, for results the child never sent.
+Result skeleton(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+  Result r;
+  r.engine = entry.info.name;
+  r.engine_version = entry.info.version;
+  r.profile = options.profile.empty() ? entry.info.profiles.front() : options.profile;
+  r.scene = scene.name;
+  r.scene_source = scene.source;
+  r.n = scene.n();
+  r.dt = scene.dt;
+  r.steps = options.steps >= 0 ? options.steps : scene.steps();
+  r.metrics_config = options.metrics;
+  return r;
+}
+
+Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
+  const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
+  if (c.timed_out) {
+    r.status = "timed out";
+    r.error = fmt::format("no result within the time limit of {} s{}: killed", timeout_s, after);
+    return r;
+  }
+  const int st = c.wait_status;
+  if (WIFSIGNALED(st)) {
+    r.status = "crashed";
+    r.error = fmt::format("killed by {}{}", signal_description(WTERMSIG(st)), after);
+    return r;
+  }
+  if (c.kind == "input_error") throw InputError(c.body);
+  const int code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  if (code == 0 && c.kind == "result") {
+    try {
+      return result_from_json(nlohmann::json::parse(c.body));
+    } catch (const nlohmann::json::exception& e) {
+      r.status = "failed";
+      r.error = fmt::format("the run's result could not be read back: {}", e.what());
+      return r;
+    }
+  }
+  if (code == 0 && c.kind == "error") {
+    r.status = "failed";
+    r.error = c.body;
+    return r;
+  }
+  r.status = "crashed";
+  r.error = fmt::format("the engine's process exited with status {}{} without a result", code, after);
+  return r;
+}
+
+}  // namespace
+
+std::string signal_description(int sig) {
+  static const std::pair<int, const char*> names[] = {
+      {SIGSEGV, "SIGSEGV"}, {SIGABRT, "SIGABRT"}, {SIGBUS, "SIGBUS"},   {SIGFPE, "SIGFPE"},
+      {SIGILL, "SIGILL"},   {SIGKILL, "SIGKILL"}, {SIGTERM, "SIGTERM"}, {SIGINT, "SIGINT"},
+      {SIGTRAP, "SIGTRAP"}, {SIGSYS, "SIGSYS"},   {SIGPIPE, "SIGPIPE"}, {SIGXCPU, "SIGXCPU"},
+      {SIGXFSZ, "SIGXFSZ"}, {SIGHUP, "SIGHUP"},   {SIGQUIT, "SIGQUIT"}, {SIGALRM, "SIGALRM"},
+  };
+  std::string name = fmt::format("signal {}", sig);
+  for (const auto& [n, text] : names)
+    if (n == sig) name = text;
+  std::string what = ::strsignal(sig);
+  if (!what.empty()) what[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(what[0])));
+  return fmt::format("{} ({})", name, what);
+}
+
+Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
+                           const IsolationOptions& isolation) {
+  Result r = skeleton(scene, entry, options);
+  int fds[2];
+  if (::pipe(fds) != 0) {
+    r.status = "failed";
+    r.error = fmt::format("cannot isolate the run: pipe: {}", std::strerror(errno));
+    return r;
+  }
+  std::fflush(nullptr);  // or the child's copies of unwritten output could be written twice
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int err = errno;
+    ::close(fds[0]), ::close(fds[1]);
+    r.status = "failed";
+    r.error = fmt::format("cannot isolate the run: fork: {}", std::strerror(err));
+    return r;
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    child_main(fds[1], scene, entry, options, isolation);
+  }
+  ::close(fds[1]);
+  const ChildOutcome outcome = ChildWatcher(pid, fds[0], isolation.timeout_s, options.progress).watch();
+  ::close(fds[0]);
+  return outcome_to_result(outcome, std::move(r), isolation.timeout_s);
+}
+
+}  // namespace ballbench

@@ -1,0 +1,33 @@
+#pragma once
+// One engine run in a child process with a time limit: a segfault, abort or hang in an engine
+// becomes that run's result ("crashed" naming the signal, "timed out" naming the limit) and the
+// rest of a comparison goes on. POSIX only (fork, pipe, poll, waitpid).
+#include <string>
+
+#include "engine.h"
+#include "result.h"
+#include "runner.h"
+#include "scene.h"
+
+namespace ballbench {
+
+struct IsolationOptions {
+  // Wall-clock limit for the whole run, building the world included (s). Generous by default: the
+  // slowest engine on the largest built-in scene takes minutes, a hang takes forever.
+  double timeout_s = 600;
+  // If not empty, the child writes the run's trajectory CSV (header included, core/trajectory_csv.h)
+  // to this file. A run that crashes or times out leaves no file.
+  std::string trajectory_path;
+};
+
+// run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits.
+// The same contract as run_engine: throws InputError for bad settings (found by the child), never
+// for what the engine does. `options.trajectory` must be null (use isolation.trajectory_path);
+// `options.progress` is called in this process, as the child reports progress.
+Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
+                           const IsolationOptions& isolation);
+
+// "SIGSEGV (segmentation fault)": the signal's name and what it means.
+std::string signal_description(int sig);
+
+}  // namespace ballbench

@@ -1,0 +1,243 @@
+// Engine runs in child processes (core/isolated_run.h, run_all in core/cli/run_engines.h): a
+// segfault, abort or hang in one engine marks that row and the rest of the comparison completes;
+// a run that blows up numerically stops at the step it diverged, keeping the metrics before it.
+// The misbehaving engines exist only in this file, never in the product's registry.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include "input_error.h"
+#include "isolated_run.h"
+#include "registry.h"
+#include "run_engines.h"
+#include "scene_loader.h"
+
+namespace ballbench {
+namespace {
+
+enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth };
+
+// Balls in free flight (no collisions), misbehaving at step `at`.
+class TestEngine : public Engine {
+ public:
+  TestEngine(const Scene& s, Misbehaviour m, long at) : state_(s.initial), m_(m), at_(at) {}
+  void step(double dt) override {
+    ++k_;
+    if (k_ == at_) misbehave();
+    if (m_ == Misbehaviour::EnergyGrowth && k_ >= at_) state_.vel *= 2.0;  // kinetic energy x4 per step
+    state_.pos += dt * state_.vel;
+    state_.t += dt;
+  }
+  void read(State& out) const override { out = state_; }
+  nlohmann::json settings() const override { return nlohmann::json::object(); }
+
+ private:
+  void misbehave() {
+    switch (m_) {
+      case Misbehaviour::Segfault:
+        // As an engine built without sanitizers would die: the sanitizers' own SIGSEGV handler
+        // (in the sanitize build) would otherwise turn the signal into exit status 1.
+        std::signal(SIGSEGV, SIG_DFL);
+        std::raise(SIGSEGV);
+        break;
+      case Misbehaviour::Abort: std::abort();
+      case Misbehaviour::Hang:
+        for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+      case Misbehaviour::Throw: throw std::runtime_error("the test engine gave up");
+      case Misbehaviour::Exit3: std::_Exit(3);
+      case Misbehaviour::NonFinite: state_.pos(0, 0) = std::numeric_limits<double>::quiet_NaN(); break;
+      default: break;
+    }
+  }
+  State state_;
+  Misbehaviour m_;
+  long at_, k_ = 0;
+};
+
+EngineEntry test_engine(const std::string& name, Misbehaviour m, long at = 5) {
+  EngineEntry e;
+  e.info.name = name;
+  e.info.version = "test";
+  e.create = [m, at](const Scene& s, const std::string&, const nlohmann::json&) {
+    return std::make_unique<TestEngine>(s, m, at);
+  };
+  return e;
+}
+
+const Scene& box() {
+  static const Scene s = load_scene("seed-box");
+  return s;
+}
+
+RunOptions steps(long n) {
+  RunOptions o;
+  o.steps = n;
+  return o;
+}
+
+Result isolated(const EngineEntry& e, double timeout_s = 30, long n = 50) {
+  return run_engine_isolated(box(), e, steps(n), {timeout_s, ""});
+}
+
+TEST(Isolation, ASegfaultIsACrashNamingTheSignal) {
+  const Result r = isolated(test_engine("segv", Misbehaviour::Segfault));
+  EXPECT_EQ(r.status, "crashed");
+  EXPECT_NE(r.error.find("SIGSEGV"), std::string::npos) << r.error;
+  EXPECT_EQ(r.engine, "segv");
+  EXPECT_EQ(r.steps, 50);
+  EXPECT_EQ(r.steps_done, 0);
+}
+
+TEST(Isolation, AnAbortIsACrashNamingTheSignal) {
+  const Result r = isolated(test_engine("abort", Misbehaviour::Abort));
+  EXPECT_EQ(r.status, "crashed");
+  EXPECT_NE(r.error.find("SIGABRT"), std::string::npos) << r.error;
+}
+
+TEST(Isolation, AnExitWithoutAResultIsACrash) {
+  const Result r = isolated(test_engine("exit", Misbehaviour::Exit3));
+  EXPECT_EQ(r.status, "crashed");
+  EXPECT_NE(r.error.find("exited with status 3"), std::string::npos) << r.error;
+}
+
+TEST(Isolation, AHangTimesOutAtTheLimit) {
+  const Result r = isolated(test_engine("hang", Misbehaviour::Hang), 1.0);
+  EXPECT_EQ(r.status, "timed out");
+  EXPECT_NE(r.error.find("time limit of 1 s"), std::string::npos) << r.error;
+}
+
+TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {
+  const Result r = isolated(test_engine("throw", Misbehaviour::Throw));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_NE(r.error.find("step 5 threw: the test engine gave up"), std::string::npos) << r.error;
+  EXPECT_EQ(r.steps_done, 4);  // the metrics of the steps before are kept
+  EXPECT_EQ(r.metrics.samples, 5);
+}
+
+TEST(Isolation, BadSettingsFoundInTheChildAreTheUsersError) {
+  RunOptions o = steps(10);
+  o.overrides = {{"no_such_setting", 1}};
+  try {
+    run_engine_isolated(box(), find_engine("home"), o, {});
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_setting"), std::string::npos) << e.what();
+  }
+}
+
+// The child's result is the in-process result, bit for bit, timing aside.
+TEST(Isolation, GivesTheSameResultAsARunInThisProcess) {
+  for (const char* name : {"home", "home-seed"}) {
+    nlohmann::json a = to_json(run_engine(box(), find_engine(name), steps(300)));
+    nlohmann::json b = to_json(isolated(find_engine(name), 60, 300));
+    for (const char* timing : {"wall_s", "ns_per_step", "ns_per_ball_step", "harness_s"}) a.erase(timing), b.erase(timing);
+    EXPECT_EQ(a, b) << name;
+    EXPECT_EQ(a["checksum"]["trajectory"].get<std::string>().size(), 16u);
+  }
+}
+
+// The scenario: good engines before and after a crashing, an aborting and a hanging one.
+TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
+  const EngineEntry segv = test_engine("segv", Misbehaviour::Segfault), abrt = test_engine("abort", Misbehaviour::Abort),
+                    hang = test_engine("hang", Misbehaviour::Hang), free = test_engine("free", Misbehaviour::None);
+  const std::vector<const EngineEntry*> engines{&find_engine("home"), &segv, &hang, &abrt, &free};
+  const std::string csv = (std::filesystem::temp_directory_path() / "bb_isolation_traj.csv").string();
+  const long n = 40;
+  const auto results = cli::run_all(box(), engines, "", steps(n), true, {true, 1.5}, csv);
+  ASSERT_EQ(results.size(), 5u);
+  EXPECT_EQ(results[0].status, "ok");
+  EXPECT_EQ(results[1].status, "crashed");
+  EXPECT_EQ(results[2].status, "timed out");
+  EXPECT_EQ(results[3].status, "crashed");
+  EXPECT_EQ(results[4].status, "ok");
+  for (int i : {0, 4}) {
+    EXPECT_EQ(results[i].steps_done, n);
+    EXPECT_EQ(results[i].metrics.samples, n + 1);
+  }
+  // One header, then (n + 1) samples x 20 balls for each complete run, none for the others.
+  std::ifstream in(csv);
+  std::string line;
+  long header = 0, home = 0, free_rows = 0, other = 0;
+  while (std::getline(in, line)) {
+    if (line == "engine,step,t,id,x,y,vx,vy") ++header;
+    else if (line.rfind("home,", 0) == 0) ++home;
+    else if (line.rfind("free,", 0) == 0) ++free_rows;
+    else ++other;
+  }
+  EXPECT_EQ(header, 1);
+  EXPECT_EQ(home, (n + 1) * 20);
+  EXPECT_EQ(free_rows, (n + 1) * 20);
+  EXPECT_EQ(other, 0);
+  // No part files left behind.
+  for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+    EXPECT_EQ(e.path().filename().string().find("bb_isolation_traj.csv."), std::string::npos) << e.path();
+}
+
+// The trajectory CSV is the same whether runs are isolated or not.
+TEST(Isolation, TrajectoryIsTheSameWithAndWithoutIsolation) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string a = (dir / "bb_iso_a.csv").string(), b = (dir / "bb_iso_b.csv").string();
+  const std::vector<const EngineEntry*> engines{&find_engine("home-seed"), &find_engine("home")};
+  cli::run_all(box(), engines, "", steps(30), true, {true, 60}, a);
+  cli::run_all(box(), engines, "", steps(30), true, {false, 60}, b);
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_FALSE(slurp(a).empty());
+  EXPECT_EQ(slurp(a), slurp(b));
+}
+
+TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
+  const Result r = run_engine(box(), test_engine("nan", Misbehaviour::NonFinite, 7), steps(50));
+  EXPECT_EQ(r.status, "diverged");
+  EXPECT_TRUE(r.diverged);
+  EXPECT_EQ(r.diverged_step, 7);
+  EXPECT_EQ(r.steps_done, 6);         // the last good step
+  EXPECT_EQ(r.metrics.samples, 7);    // steps 0..6: the metrics before the bad state
+  EXPECT_TRUE(std::isfinite(r.metrics.energy.final));
+}
+
+TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
+  // From step 10 on the speed doubles every step, so the energy quadruples. The bound is 100 x
+  // (E0 + initial kinetic energy) (MetricsConfig::divergence_energy_factor, metrics.cpp), here
+  // 200 E0 as there is no gravity; 4^3 = 64 < 200 < 256 = 4^4, so the fourth doubling, at step
+  // 13, crosses it.
+  const Result r = run_engine(box(), test_engine("grow", Misbehaviour::EnergyGrowth, 10), steps(50));
+  EXPECT_EQ(r.status, "diverged");
+  EXPECT_EQ(r.diverged_step, 13);
+  EXPECT_EQ(r.steps_done, 13);  // the step that crossed the bound is observed, then the run stops
+  EXPECT_NE(r.error.find("energy above 100 x"), std::string::npos) << r.error;
+  EXPECT_GT(r.metrics.energy.final, 100 * r.metrics.energy.initial);
+}
+
+TEST(DivergingRun, OneDivergingEngineLeavesTheOthersRunning) {
+  const EngineEntry nan = test_engine("nan", Misbehaviour::NonFinite, 3);
+  const std::vector<const EngineEntry*> engines{&nan, &find_engine("home")};
+  for (const bool isolate : {true, false}) {
+    const auto results = cli::run_all(box(), engines, "", steps(20), true, {isolate, 60});
+    ASSERT_EQ(results.size(), 2u);
+    EXPECT_EQ(results[0].status, "diverged") << results[0].error << (isolate ? " (isolated)" : "");
+    EXPECT_EQ(results[0].diverged_step, 3);
+    EXPECT_EQ(results[1].status, "ok");
+    EXPECT_EQ(results[1].steps_done, 20);
+  }
+}
+
+TEST(Isolation, SignalDescriptionsNameTheSignal) {
+  EXPECT_EQ(signal_description(SIGSEGV).rfind("SIGSEGV (", 0), 0u) << signal_description(SIGSEGV);
+  EXPECT_EQ(signal_description(SIGKILL).rfind("SIGKILL (", 0), 0u);
+}
+
+}  // namespace
+}  // namespace ballbench

@@ -1,0 +1,123 @@
+// `ballbench regress` fails, naming the metric, when the solvers no longer give the baseline: here
+// a baseline made by this build is perturbed on purpose (one number changed in a copy), and a
+// solver setting is changed with --set. The committed baseline itself is checked by the ctest
+// `regress` (so these tests stay meaningful while a solver changes and its baseline is stale).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Outcome {
+  int status;
+  std::string out, err;
+};
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+Outcome regress(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string tag = std::to_string(::getpid());  // per process: ctest runs tests in parallel
+  const std::string out = (dir / ("bb_regress_out." + tag)).string(), err = (dir / ("bb_regress_err." + tag)).string();
+  const int rc = std::system((std::string(BALLBENCH_CLI) + " regress " + args + " >" + out + " 2>" + err).c_str());
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
+}
+
+// A baseline from this build, made once for the tests below.
+const std::string& fresh_baseline_path() {
+  static const std::string path = [] {
+    const std::string p =
+        (std::filesystem::temp_directory_path() / ("bb_fresh_baseline." + std::to_string(::getpid()) + ".json")).string();
+    std::filesystem::remove(p);
+    const Outcome o = regress("--update --baseline " + p);
+    if (o.status != 0) throw std::runtime_error("regress --update failed: " + o.err);
+    return p;
+  }();
+  return path;
+}
+
+nlohmann::json fresh_baseline() {
+  std::ifstream in(fresh_baseline_path());
+  return nlohmann::json::parse(in);
+}
+
+nlohmann::json& find_run(nlohmann::json& baseline, const std::string& scene, const std::string& engine) {
+  for (auto& r : baseline["runs"])
+    if (r["scene"] == scene && r["engine"] == engine) return r;
+  throw std::runtime_error("no run " + scene + " " + engine + " in the baseline");
+}
+
+// One test, so the baseline it compares with is made once (three regress runs in all: they take
+// a while under the sanitizers).
+TEST(Regress, FailsNamingWhatChanged) {
+  nlohmann::json baseline = fresh_baseline();
+
+  // A perturbed copy of the baseline: one number moved by 1e-6 relative, a thousand times its
+  // tolerance. Exactly that difference is reported: the rest of this build's baseline matches.
+  {
+    nlohmann::json copy = baseline;
+    nlohmann::json& run = find_run(copy, "seed-bowl", "home");
+    const double now = run["metrics"]["energy.final"].get<double>();
+    const double perturbed = now * (1 + 1e-6);
+    run["metrics"]["energy.final"] = perturbed;
+    const std::string path =
+        (std::filesystem::temp_directory_path() / ("bb_perturbed_baseline." + std::to_string(::getpid()) + ".json")).string();
+    std::ofstream(path) << copy.dump(2);
+    const Outcome o = regress("--baseline " + path);
+    EXPECT_EQ(o.status, 1) << o.out << o.err;
+    const std::string line = "regressed: seed-bowl home energy.final: baseline " + nlohmann::json(perturbed).dump() +
+                             ", now " + nlohmann::json(now).dump() + " (tolerance: rel 1e-09, abs 1e-12)\n";
+    EXPECT_NE(o.out.find(line), std::string::npos) << "expected: " << line << "got:\n" << o.out;
+    EXPECT_EQ(o.out.find("regressed:"), o.out.rfind("regressed:")) << "more than that one difference:\n" << o.out;
+    std::filesystem::remove(path);
+  }
+
+  // A solver constant changed (through --set, as a changed default would): named by the setting.
+  {
+    const auto& settings = find_run(baseline, "seed-bowl", "home")["settings"];
+    ASSERT_TRUE(settings.contains("contact_iterations"));
+    const int was = settings["contact_iterations"].get<int>();
+    const Outcome o =
+        regress("--baseline " + fresh_baseline_path() + " --set home.contact_iterations=" + std::to_string(was + 1));
+    EXPECT_EQ(o.status, 1) << o.out << o.err;
+    EXPECT_NE(o.out.find("seed-bowl home settings.contact_iterations: baseline " + std::to_string(was) + ", now " +
+                         std::to_string(was + 1)),
+              std::string::npos)
+        << o.out;
+  }
+}
+
+TEST(Regress, UpdateWithASettingIsContradictory) {
+  const Outcome o = regress("--update --set home.contact_iterations=3 --baseline /tmp/bb_never.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("excludes"), std::string::npos) << o.err;
+  EXPECT_FALSE(std::filesystem::exists("/tmp/bb_never.json"));
+}
+
+TEST(Regress, AMissingBaselineIsOneLine) {
+  const Outcome o = regress("--baseline /nonexistent/baseline.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("/nonexistent/baseline.json: cannot read the baseline"), std::string::npos) << o.err;
+  EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << o.err;
+}
+
+TEST(Regress, ABaselineThatIsNotOneIsOneLine) {
+  const std::string path = (std::filesystem::temp_directory_path() / "bb_bad_baseline.json").string();
+  std::ofstream(path) << "{\"runs\": 3}";
+  const Outcome o = regress("--baseline " + path);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("not a regress baseline"), std::string::npos) << o.err;
+}
+
+}  // namespace

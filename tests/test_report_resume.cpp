@@ -1,0 +1,116 @@
+// `ballbench report` resumes where it stopped: a scene whose results file already holds every run
+// the report makes of it (every engine x profile, the scene's full step count) is reused, not run
+// again, unless --fresh. Results files are written whole (tmp + rename), so one that reads back is
+// complete. The report runs the built-in scenes: here $BALLBENCH_SCENARIOS points them at tiny
+// stand-ins, so a whole report takes a moment.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "result.h"
+
+namespace ballbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+class ReportResume : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root_ = fs::temp_directory_path() / ("bb_report_resume." + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_ / "scenarios");
+    std::ofstream(root_ / "scenarios" / "seed-box.toml") << R"(name = "seed-box"
+dt = 0.01
+duration = 0.2
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[random]
+count = 3
+radius = 0.1
+vel_max = [2.0, 2.0]
+)";
+    std::ofstream(root_ / "scenarios" / "seed-bowl.toml") << R"(name = "seed-bowl"
+dt = 0.01
+duration = 0.2
+gravity = [0.0, -10.0]
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[random]
+count = 3
+radius = 0.1
+)";
+  }
+  void TearDown() override { fs::remove_all(root_); }
+
+  // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
+  int report(const std::string& args = "") {
+    const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI +
+                            " report --out " + out().string() + " " + args + " >/dev/null 2>" +
+                            (root_ / "err.txt").string();
+    const int rc = std::system(cmd.c_str());
+    err_ = slurp(root_ / "err.txt");
+    return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
+  }
+  fs::path out() const { return root_ / "out"; }
+  fs::path results(const char* scene) const { return out() / "results" / (std::string(scene) + ".json"); }
+  bool reused(const char* scene) const { return err_.find("reusing " + results(scene).string()) != std::string::npos; }
+  bool ran(const char* scene) const { return err_.find(std::string("ran ") + scene + "\n") != std::string::npos; }
+
+  fs::path root_;
+  std::string err_;
+};
+
+TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
+  ASSERT_EQ(report(), 0) << err_;
+  EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
+  ASSERT_TRUE(fs::exists(out() / "REPORT.md"));
+
+  // As if the report had stopped during seed-bowl: its file is not there yet.
+  fs::remove(results("seed-bowl"));
+  const std::string box_before = slurp(results("seed-box"));
+  ASSERT_EQ(report(), 0) << err_;
+  EXPECT_TRUE(reused("seed-box")) << err_;
+  EXPECT_FALSE(ran("seed-box")) << err_;
+  EXPECT_TRUE(ran("seed-bowl")) << err_;
+  EXPECT_EQ(slurp(results("seed-box")), box_before);  // not rewritten
+
+  // A file missing one run is incomplete: run again.
+  auto runs = read_results_file(results("seed-bowl").string());
+  runs.pop_back();
+  write_results_file(results("seed-bowl").string(), runs);
+  ASSERT_EQ(report(), 0) << err_;
+  EXPECT_TRUE(reused("seed-box")) << err_;
+  EXPECT_TRUE(ran("seed-bowl")) << err_;
+
+  // --fresh runs everything.
+  ASSERT_EQ(report("--fresh"), 0) << err_;
+  EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
+  EXPECT_FALSE(reused("seed-box")) << err_;
+}
+
+TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
+  ASSERT_EQ(report(), 0) << err_;
+  // The scene changed since (more steps): its old results no longer describe it.
+  std::string text = slurp(root_ / "scenarios" / "seed-box.toml");
+  text.replace(text.find("duration = 0.2"), 14, "duration = 0.3");
+  std::ofstream(root_ / "scenarios" / "seed-box.toml") << text;
+  ASSERT_EQ(report(), 0) << err_;
+  EXPECT_TRUE(ran("seed-box")) << err_;
+  EXPECT_TRUE(reused("seed-bowl")) << err_;
+}
+
+}  // namespace
+}  // namespace ballbench
