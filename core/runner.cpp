@@ -113,6 +113,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   };
   const auto harness_start = Clock::now();
   double engine_s = 0;
+  State next;
   engine->read(state);
   metrics.observe(state);
   record(0);
@@ -131,13 +132,16 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       break;
     }
     engine_s += seconds_since(t0);
-    engine->read(state);
+    // Read into a scratch state and keep it only if finite: a run that blew up ends with its last
+    // good state, from which the final figures (positions, jitter, speed distribution) come.
+    engine->read(next);
     r.out_of_plane_max = std::max(r.out_of_plane_max, engine->out_of_plane());
-    if (!finite(state)) {
+    if (!finite(next)) {
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
       r.error = fmt::format("non-finite position or velocity at step {}", k);
       break;
     }
+    std::swap(state, next);
     metrics.observe(state);
     if (reference) {
       try {

@@ -87,7 +87,8 @@ std::string display_path(const std::string& source) {
 }
 
 std::string verdict(const Result& r) {
-  if (r.status == "unsupported" || r.status == "failed") return fmt::format("{}: {}", r.status, r.error);
+  if (r.status == "unsupported" || r.status == "failed" || r.status == "crashed" || r.status == "timed out")
+    return fmt::format("{}: {}", r.status, r.error);
   std::vector<std::string> parts;
   if (r.diverged) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   const auto& m = r.metrics;

@@ -206,6 +206,9 @@ TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
   EXPECT_EQ(r.steps_done, 6);         // the last good step
   EXPECT_EQ(r.metrics.samples, 7);    // steps 0..6: the metrics before the bad state
   EXPECT_TRUE(std::isfinite(r.metrics.energy.final));
+  // The final figures come from the last good state, not from the non-finite one.
+  ASSERT_FALSE(r.series.final_pos.empty());
+  for (const auto& p : r.series.final_pos) EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
 }
 
 TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
