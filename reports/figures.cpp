@@ -17,6 +17,7 @@ void run_gnuplot(const fs::path& script) {
   const std::string cmd = fmt::format("gnuplot '{}' 2>'{}.log'", script.string(), script.string());
   if (std::system(cmd.c_str()) != 0)
     throw std::runtime_error(fmt::format("gnuplot failed on {} (see {}.log)", script.string(), script.string()));
+  fs::remove(script.string() + ".log");  // kept only when it has something to say
 }
 
 // A name safe for files: "box2d/tuned" -> "box2d-tuned".

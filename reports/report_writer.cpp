@@ -86,6 +86,8 @@ std::string display_path(const std::string& source) {
   return p.parent_path().filename() == "scenarios" ? "scenarios/" + p.filename().string() : source;
 }
 
+std::string times(int n) { return n == 1 ? "once" : fmt::format("{} times", n); }
+
 std::string verdict(const Result& r) {
   if (r.status == "unsupported" || r.status == "failed" || r.status == "crashed" || r.status == "timed out")
     return fmt::format("{}: {}", r.status, r.error);
@@ -93,10 +95,10 @@ std::string verdict(const Result& r) {
   if (r.diverged) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   const auto& m = r.metrics;
   const int tunnels = m.tunnelling_wall + m.tunnelling_pair, sticks = m.sticking_wall + m.sticking_pair;
-  parts.push_back(tunnels ? fmt::format("tunnelled {} times ({} through walls, {} through balls)", tunnels,
+  parts.push_back(tunnels ? fmt::format("tunnelled {} ({} through walls, {} through balls)", times(tunnels),
                                         m.tunnelling_wall, m.tunnelling_pair)
                           : "no tunnelling");
-  parts.push_back(sticks ? fmt::format("got stuck {} times ({} in walls, {} in balls)", sticks, m.sticking_wall,
+  parts.push_back(sticks ? fmt::format("got stuck {} ({} in walls, {} in balls)", times(sticks), m.sticking_wall,
                                        m.sticking_pair)
                          : "no sticking");
   if (m.energy.max_rel_drift) parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *m.energy.max_rel_drift));

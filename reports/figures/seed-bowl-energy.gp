@@ -1,0 +1,9 @@
+set terminal pngcairo size 900,500 font 'sans,10'
+set output 'seed-bowl-energy.png'
+set title 'Energy over time, seed-bowl'
+set xlabel 'time (s)'
+set ylabel 'E / E0'
+set logscale y
+set key outside right
+set grid
+plot 'seed-bowl-energy-home-seed.dat' with lines lw 2 dt 1 title 'home-seed', 'seed-bowl-energy-home.dat' with lines lw 2 dt 1 title 'home', 'seed-bowl-energy-exact.dat' with lines lw 2 dt 1 title 'exact', 'seed-bowl-energy-box2d-tuned.dat' with lines lw 2 dt 1 title 'box2d/tuned', 'seed-bowl-energy-box2d-stock.dat' with lines lw 2 dt 1 title 'box2d/stock', 'seed-bowl-energy-bullet-tuned.dat' with lines lw 2 dt 1 title 'bullet/tuned', 'seed-bowl-energy-bullet-stock.dat' with lines lw 2 dt 1 title 'bullet/stock', 'seed-bowl-energy-ode-tuned.dat' with lines lw 2 dt 1 title 'ode/tuned', 'seed-bowl-energy-ode-stock.dat' with lines lw 2 dt 2 title 'ode/stock'
