@@ -172,21 +172,6 @@ class ChildWatcher {
   ChildOutcome out_;
 };
 
-// The fields run_engine fills before building the world, for results the child never sent.
-Result skeleton(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
-  Result r;
-  r.engine = entry.info.name;
-  r.engine_version = entry.info.version;
-  r.profile = options.profile.empty() ? entry.info.profiles.front() : options.profile;
-  r.scene = scene.name;
-  r.scene_source = scene.source;
-  r.n = scene.n();
-  r.dt = scene.dt;
-  r.steps = options.steps >= 0 ? options.steps : scene.steps();
-  r.metrics_config = options.metrics;
-  return r;
-}
-
 Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
   if (c.timed_out) {
@@ -240,7 +225,7 @@ std::string signal_description(int sig) {
 
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
                            const IsolationOptions& isolation) {
-  Result r = skeleton(scene, entry, options);
+  Result r = result_header(scene, entry, options);
   int fds[2];
   if (::pipe(fds) != 0) {
     r.status = "failed";

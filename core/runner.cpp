@@ -47,7 +47,7 @@ nlohmann::json merged_settings(const Scene& scene, const std::string& engine, co
   return merged;
 }
 
-Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+Result result_header(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   Result r;
   r.engine = entry.info.name;
   r.engine_version = entry.info.version;
@@ -59,6 +59,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   r.dt = scene.dt;
   r.steps = options.steps >= 0 ? options.steps : scene.steps();
   r.metrics_config = options.metrics;
+  return r;
+}
+
+Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+  Result r = result_header(scene, entry, options);
 
   if (std::string why = unsupported_reason(entry.info, scene); !why.empty()) {
     r.status = "unsupported";

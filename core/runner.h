@@ -46,6 +46,10 @@ uint64_t chain_checksum(uint64_t trajectory, uint64_t state);
 // 16 lower-case hex digits.
 std::string checksum_hex(uint64_t h);
 
+// What a result says before anything runs: engine, version, limits, profile, scene, n, dt, steps,
+// metrics configuration. Also the start of the results of runs that crashed or timed out.
+Result result_header(const Scene& scene, const EngineEntry& entry, const RunOptions& options);
+
 // The engine's settings overrides: the scene's [settings.NAME] table, then `overrides` on top.
 nlohmann::json merged_settings(const Scene& scene, const std::string& engine, const nlohmann::json& overrides);
 
