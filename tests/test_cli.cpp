@@ -11,26 +11,13 @@
 #include <fstream>
 #include <string>
 
+#include "cli_runner.h"
+
 namespace {
 
-struct Outcome {
-  int status;
-  std::string out, err;
-};
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-Outcome cli(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  // Per process: ctest runs tests in parallel.
-  const std::string tag = std::to_string(::getpid());
-  const std::string out = (dir / ("ballbench_cli_out." + tag)).string(), err = (dir / ("ballbench_cli_err." + tag)).string();
-  const int rc = std::system((std::string(BALLBENCH_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
-}
+using Outcome = ballbench::testing::CliOutcome;
+using ballbench::testing::slurp;
+const auto cli = ballbench::testing::run_cli;
 
 std::string write_scene(const std::string& name, const std::string& text) {
   const auto path = std::filesystem::temp_directory_path() / name;

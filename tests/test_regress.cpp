@@ -14,25 +14,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.h"
+
 namespace {
 
-struct Outcome {
-  int status;
-  std::string out, err;
-};
+using ballbench::testing::slurp;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using Outcome = ballbench::testing::CliOutcome;
 
-Outcome regress(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string tag = std::to_string(::getpid());  // per process: ctest runs tests in parallel
-  const std::string out = (dir / ("bb_regress_out." + tag)).string(), err = (dir / ("bb_regress_err." + tag)).string();
-  const int rc = std::system((std::string(BALLBENCH_CLI) + " regress " + args + " >" + out + " 2>" + err).c_str());
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
-}
+Outcome regress(const std::string& args) { return ballbench::testing::run_cli("regress " + args); }
 
 // A baseline from this build, made once for the tests below.
 const std::string& fresh_baseline_path() {

@@ -6,14 +6,14 @@
 #include <memory>
 #include <string>
 
+#include "cli_runner.h"
+
 namespace {
 
+// stdout and stderr together: the table, or the one-line error.
 std::string capture(const std::string& args) {
-  std::string out;
-  std::unique_ptr<FILE, int (*)(FILE*)> p(popen((std::string(BALLBENCH_CLI) + " " + args + " 2>&1").c_str(), "r"), pclose);
-  char buf[4096];
-  while (p && fgets(buf, sizeof buf, p.get())) out += buf;
-  return out;
+  const auto o = ballbench::testing::run_cli(args);
+  return o.out + o.err;
 }
 
 TEST(StressCli, PrintsOneFrontierTable) {

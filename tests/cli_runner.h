@@ -1,0 +1,34 @@
+#pragma once
+// Running the `ballbench` binary from a test, as a user would: exit status, stdout and stderr.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace ballbench::testing {
+
+struct CliOutcome {
+  int status;  // exit status, or 128 + the signal that ended it
+  std::string out, err;
+};
+
+inline std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Runs `ballbench ARGS` (BALLBENCH_CLI, set by tests/CMakeLists.txt).
+inline CliOutcome run_cli(const std::string& args) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string tag = std::to_string(::getpid());  // per process: ctest runs tests in parallel
+  const std::string out = (dir / ("ballbench_cli_out." + tag)).string();
+  const std::string err = (dir / ("ballbench_cli_err." + tag)).string();
+  const int rc = std::system((std::string(BALLBENCH_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
+  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
+}
+
+}  // namespace ballbench::testing
