@@ -1,10 +1,12 @@
 #include "runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "input_error.h"
 #include "metrics/speed_distribution.h"
@@ -64,6 +66,10 @@ Result result_header(const Scene& scene, const EngineEntry& entry, const RunOpti
 
 Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   Result r = result_header(scene, entry, options);
+  // Every engine's profiles are checked here, once, against what it declares.
+  const auto& profiles = entry.info.profiles;
+  if (std::find(profiles.begin(), profiles.end(), r.profile) == profiles.end())
+    throw InputError(fmt::format("{}: unknown profile '{}' (known: {})", entry.info.name, r.profile, fmt::join(profiles, ", ")));
 
   if (std::string why = unsupported_reason(entry.info, scene); !why.empty()) {
     r.status = "unsupported";

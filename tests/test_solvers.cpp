@@ -1,6 +1,7 @@
 // Our own solvers on the seed scenes: home-seed reproduces the thesis's problems, home has none.
 #include <gtest/gtest.h>
 
+#include "input_error.h"
 #include "registry.h"
 #include "runner.h"
 #include "scene_loader.h"
@@ -51,6 +52,14 @@ TEST_P(HomeOnTheBowl, NeitherTunnelsNorSticksAtOtherSteps) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Steps, HomeOnTheBowl, ::testing::Values(0.005, 0.02, 0.03));
+
+// Profiles are checked once, by the runner, for every engine (exact's factory does not look).
+TEST(Runner, RejectsAProfileTheEngineDoesNotDeclare) {
+  RunOptions o;
+  o.profile = "tuned";
+  for (const std::string engine : {"home", "home-seed", "exact"})
+    EXPECT_THROW(run_engine(load_scene("two-ball-1"), find_engine(engine), o), InputError) << engine;
+}
 
 }  // namespace
 }  // namespace ballbench

@@ -424,8 +424,7 @@ EngineEntry home_engine() {
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
-  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
-            if (profile != "default") throw InputError(fmt::format("home: unknown profile '{}' (known: default)", profile));
+  return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSettings s;
             SettingsReader r("home", overrides);
             r.get("contact_iterations", s.contact_iterations);

@@ -160,9 +160,7 @@ EngineEntry home_seed_engine() {
   info.summary = "faithful port of the 2017 thesis's MATLAB programs (sticks and tunnels on purpose)";
   info.caps.any_restitution = true;
   info.caps.continuous_collision = false;
-  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
-            if (profile != "default")
-              throw InputError(fmt::format("home-seed: unknown profile '{}' (known: default)", profile));
+  return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSeedSettings s;
             SettingsReader r("home-seed", overrides);
             r.get("flags", s.flags, {"per-ball", "per-pair"});
