@@ -39,6 +39,14 @@ class Engine {
   virtual double out_of_plane() const { return 0.0; }
 };
 
+// An accuracy knob `ballbench sweep` varies: a settings key and the values it tries, one at a time,
+// on top of each profile. The step size is varied for every engine by the sweep itself, so it is
+// not listed here.
+struct SweepKnob {
+  std::string key;
+  nlohmann::json values;  // a JSON array of setting values
+};
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
@@ -46,6 +54,7 @@ struct EngineInfo {
   std::string limits;      // what in the engine shapes results (clamps, slops, precision), for the report
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
+  std::vector<SweepKnob> sweep_knobs;             // what trades its run time for accuracy
 };
 
 // Builds an engine for a scene. `settings` is a JSON object of overrides (from the scene's

@@ -7,14 +7,14 @@
 
 #include <fmt/format.h>
 
+#include "data_file.h"
 #include "input_error.h"
+#include "json_number.h"
 
 namespace ballbench {
 namespace {
 
-// JSON has no NaN or infinity: nlohmann writes them as null, so null reads back as NaN (a metric of
-// a run that blew up to infinity must not make its whole result unreadable).
-double num(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
+double num(const nlohmann::json& j) { return json_number(j); }
 
 // The same inside arrays (series of samples), at any depth: null elements become NaN, which a
 // json value can hold.
@@ -181,16 +181,7 @@ Result result_from_json(const nlohmann::json& j) {
 void write_results_file(const std::string& path, const std::vector<Result>& results) {
   nlohmann::json arr = nlohmann::json::array();
   for (const auto& r : results) arr.push_back(to_json(r));
-  const std::filesystem::path target(path);
-  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    if (!out) throw InputError(fmt::format("{}: cannot write the results file", path));
-    out << arr.dump(2) << '\n';
-    if (!out) throw InputError(fmt::format("{}: writing the results file failed", path));
-  }
-  std::filesystem::rename(tmp, target);
+  write_file_atomically(path, arr.dump(2) + "\n", "the results file");
 }
 
 std::vector<Result> read_results_file(const std::string& path) {

@@ -1,5 +1,6 @@
 #include "figures.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -49,7 +50,7 @@ Figure energy_figure(const std::string& scene, const std::vector<const Result*>&
      << "plot " << plot << '\n';
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {scene, "figures/" + base + ".png",
+  return {"energy", scene, "figures/" + base + ".png",
           "Energy over time, relative to the start (log scale), one line per engine and profile."};
 }
 
@@ -96,9 +97,145 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
   gp << "unset multiplot\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {scene, "figures/" + base + ".png",
+  return {"picture", scene, "figures/" + base + ".png",
           "The scene at the end: balls (blue), the tracks of four balls, and the centre-of-mass trail (pink), as in "
           "the thesis's figures 3 to 5."};
+}
+
+
+std::string label(const std::string& engine, const std::string& profile) {
+  return profile == "default" ? engine : engine + "/" + profile;
+}
+
+// gnuplot line style k: 8 colours, then the same colours dashed, so no two lines look alike.
+std::string style(int k) { return fmt::format("lc {} dt {}", 1 + k % 8, 1 + k / 8); }
+
+// Error against step time, log-log: per engine and profile a line through its step-size series
+// (x error bars: the spread of the timing repeats), and its other knob settings as open points in
+// the same colour. The reference itself (error 0) cannot be drawn on a log scale.
+Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
+  const std::string base = slug(sw.scene) + "-work-precision";
+  std::vector<std::string> order;  // engine/profile in the sweep's order
+  for (const SweepPoint& p : sw.points) {
+    const std::string l = label(p.engine, p.profile);
+    if (p.engine != sw.reference && std::find(order.begin(), order.end(), l) == order.end()) order.push_back(l);
+  }
+  std::vector<double> dts;
+  for (const SweepPoint& p : sw.points)
+    if (p.knob == "dt" && std::find(dts.begin(), dts.end(), p.dt) == dts.end()) dts.push_back(p.dt);
+  std::string plot;
+  for (size_t k = 0; k < order.size(); ++k) {
+    const std::string name = slug(order[k]);
+    std::ofstream line(dir / fmt::format("{}-{}-dt.dat", base, name)), knobs(dir / fmt::format("{}-{}-knobs.dat", base, name));
+    int drawn = 0;
+    for (const SweepPoint& p : sw.points) {
+      if (label(p.engine, p.profile) != order[k] || p.status != "ok" || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
+      const auto [lo, hi] = std::minmax_element(p.engine_s.begin(), p.engine_s.end());
+      (p.knob == "dt" ? line : knobs) << 1e3 * p.engine_s_median() << ' ' << p.pos_rms << ' ' << 1e3 * *lo << ' '
+                                      << 1e3 * *hi << '\n';
+      drawn += p.knob == "dt";
+    }
+    line << "\n", knobs << "\n";  // never empty: gnuplot rejects a data file without points
+    if (drawn == 0) continue;
+    plot += fmt::format("{}'{}-{}-dt.dat' using 1:2:3:4 with xerrorlines {} lw 2 pt 7 ps 0.8 title '{}', "
+                        "'{}-{}-knobs.dat' using 1:2 with points {} pt 6 ps 1.2 notitle",
+                        plot.empty() ? "" : ", ", base, name, style(k), order[k], base, name, style(k));
+  }
+  std::ofstream gp(dir / (base + ".gp"));
+  gp << "set terminal pngcairo size 900,600 font 'sans,10'\n"
+     << "set output '" << base << ".png'\n"
+     << "set title 'Work against precision, " << sw.scene << ": error at t = " << sw.horizon << " s'\n"
+     << "set xlabel 'engine time to t = " << sw.horizon << " s (ms, median of " << sw.repeats << ")'\n"
+     << "set ylabel 'position RMS error against " << sw.reference << " (m)'\n"
+     << "set logscale xy\nset key outside right\nset grid\n"
+     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n';
+  gp.close();
+  run_gnuplot(dir / (base + ".gp"));
+  return {"work-precision", sw.scene, "figures/" + base + ".png",
+          fmt::format("Work against precision on {}: each line is one engine and profile at the step sizes {} s "
+                      "(cost grows as dt shrinks), x bars the spread of {} timing runs; open circles are the same "
+                      "engine with one of its own knobs changed at the scene's dt (table below). Lower left is better.",
+                      sw.scene, fmt::join(dts, ", "), sw.repeats)};
+}
+
+// ns per ball-step against ball count, log-log, one panel per benchmark scene, one line per engine
+// and profile.
+Figure scaling_figure(const BenchResults& bench, const fs::path& dir) {
+  const std::string base = "scaling";
+  std::vector<std::string> scenes, order;
+  for (const BenchRow& r : bench.rows) {
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    const std::string l = label(r.engine, r.profile);
+    if (std::find(order.begin(), order.end(), l) == order.end()) order.push_back(l);
+  }
+  std::ofstream gp(dir / (base + ".gp"));
+  gp << "set terminal pngcairo size " << 560 * scenes.size() << ",520 font 'sans,10'\n"
+     << "set output '" << base << ".png'\nset multiplot layout 1," << scenes.size() << "\n"
+     << "set logscale xy\nset grid\nset key top left font ',8'\n"
+     << "set xlabel 'balls'\nset ylabel 'ns per ball-step'\n";
+  for (const std::string& scene : scenes) {
+    std::string plot;
+    for (size_t k = 0; k < order.size(); ++k) {
+      const std::string data = fmt::format("{}-{}-{}.dat", base, scene, slug(order[k]));
+      std::ofstream f(dir / data);
+      int points = 0;
+      for (const BenchRow& r : bench.rows)
+        if (r.scene == scene && label(r.engine, r.profile) == order[k] && r.error.empty())
+          f << r.n << ' ' << r.ns_per_ball_step << '\n', ++points;
+      if (points)
+        plot += fmt::format("{}'{}' with linespoints {} lw 2 pt 7 title '{}'", plot.empty() ? "" : ", ", data, style(k),
+                            order[k]);
+    }
+    gp << "set title 'Step cost, " << scene << "'\nplot " << (plot.empty() ? "1/0 notitle" : plot) << '\n';
+  }
+  gp << "unset multiplot\n";
+  gp.close();
+  run_gnuplot(dir / (base + ".gp"));
+  return {"scaling", "", "figures/" + base + ".png",
+          "Step cost against ball count (bench/ballbench_step_benchmark, engine step only), one line per engine and "
+          "profile: flat is linear scaling."};
+}
+
+// Doublings each engine survived per knob, as clustered bars (engines along x, one bar per knob).
+Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
+  const std::string base = slug(f.scene) + "-frontier";
+  std::vector<std::string> knobs, engines;
+  for (const FrontierRow& r : f.rows) {
+    if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end()) knobs.push_back(r.knob);
+    const std::string l = label(r.engine, r.profile);
+    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+  }
+  {
+    std::ofstream d(dir / (base + ".dat"));
+    d << "engine";
+    for (const auto& k : knobs) d << ' ' << k;
+    d << '\n';
+    for (const auto& e : engines) {
+      d << e;
+      for (const auto& k : knobs) {
+        int passed = 0;
+        for (const FrontierRow& r : f.rows)
+          if (label(r.engine, r.profile) == e && r.knob == k) passed = r.levels_passed;
+        d << ' ' << passed;
+      }
+      d << '\n';
+    }
+  }
+  std::ofstream gp(dir / (base + ".gp"));
+  gp << "set terminal pngcairo size 1000,480 font 'sans,10'\n"
+     << "set output '" << base << ".png'\n"
+     << "set title 'Stability frontier, " << f.scene << ": levels passed of " << f.levels << " (level k: knob x 2^(k-1))'\n"
+     << "set style data histogram\nset style histogram cluster gap 1\nset style fill solid 0.8 border -1\n"
+     << "set boxwidth 0.9\nset yrange [0:" << f.levels + 0.5 << "]\nset ytics 1\nset grid y\nset key outside right\n"
+     << "set xtics rotate by -30\nset ylabel 'levels passed'\n"
+     << "plot for [k=2:" << knobs.size() + 1 << "] '" << base << ".dat' using k:xtic(1) title columnheader\n";
+  gp.close();
+  run_gnuplot(dir / (base + ".gp"));
+  return {"frontier", f.scene, "figures/" + base + ".png",
+          fmt::format("Stability frontier on {}: for each engine, how many doublings of each knob it survived ({} "
+                      "steps per run; a run fails on tunnelling, a non-finite state, or energy off the reference by "
+                      "more than {:.0f}%). 0: the scene itself already failed.",
+                      f.scene, f.steps, 100 * f.energy_tolerance)};
 }
 
 }  // namespace
@@ -123,6 +260,9 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
         if ((r->engine == "home-seed" || r->engine == "home") && !r->series.final_pos.empty()) pictured.push_back(r);
       if (!pictured.empty()) figures.push_back(scene_figure(scene, pictured, "."));
     }
+    for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));
+    for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f, "."));
+    if (in.bench && !in.bench->rows.empty()) figures.push_back(scaling_figure(*in.bench, "."));
   } catch (...) {
     fs::current_path(here);
     throw;

@@ -1,7 +1,8 @@
 #pragma once
 // Figures for the report, drawn by gnuplot (Debian's gnuplot-nox, pngcairo) from the series in the
-// result files: energy over time per engine, and pictures of a scene like the thesis's figures 3-5
-// (final positions, the tracks of a few balls, the centre-of-mass trail).
+// result files: energy over time per engine, pictures of a scene like the thesis's figures 3-5
+// (final positions, the tracks of a few balls, the centre-of-mass trail), work against precision
+// (sweeps), the stability frontier (stress) and scaling (the step benchmark).
 #include <string>
 #include <vector>
 

@@ -115,6 +115,145 @@ struct MarkdownBuffer {
   }
 };
 
+
+std::string label(const std::string& engine, const std::string& profile) {
+  return profile == "default" ? engine : engine + "/" + profile;
+}
+
+std::string setting_text(const SweepPoint& p) {
+  if (p.knob == "dt") return "dt";
+  return p.knob + " = " + (p.value.is_string() ? p.value.get<std::string>() : p.value.dump());
+}
+
+void put_figures(MarkdownBuffer& put, const std::vector<Figure>& figures, const std::string& kind,
+                 const std::string& scene) {
+  for (const Figure& f : figures)
+    if (f.kind == kind && f.scene == scene) put("![{}]({})\n\n*{}*\n\n", f.caption, f.file, f.caption);
+}
+
+void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Figure>& figures) {
+  put("## Work against precision: `{}`\n\n", sw.scene);
+  put("`ballbench sweep` on {} balls: every engine and profile at several step sizes, and with each of its own "
+      "accuracy knobs changed one at a time. Error: position RMS against `{}` at t = {} s (short enough that the "
+      "trajectories of a chaotic many-ball system have not yet parted completely); engine time: the engine's own "
+      "step time to reach it, median of {} runs. Every point, with its settings: `results/sweep-{}.json` (and "
+      "`.csv`).\n\n",
+      sw.n, sw.reference, sw.horizon, sw.repeats, sw.scene);
+  put_figures(put, figures, "work-precision", sw.scene);
+  put("Each engine's Pareto front (no other setting of the same engine is both faster and more accurate), fastest "
+      "first:\n\n");
+  put("| engine | profile | setting | dt (s) | engine time (ms): median [min, max] | ns/ball-step | pos error (m) | "
+      "energy error | tunnelling | sticking |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  std::vector<const SweepPoint*> front;
+  for (const SweepPoint& p : sw.points)
+    if (p.pareto) front.push_back(&p);
+  std::map<std::string, size_t> engine_rank;  // engines in the sweep's order, each fastest first
+  for (const SweepPoint& p : sw.points) engine_rank.emplace(p.engine, engine_rank.size());
+  std::sort(front.begin(), front.end(), [&](const SweepPoint* a, const SweepPoint* b) {
+    const size_t ra = engine_rank[a->engine], rb = engine_rank[b->engine];
+    return ra != rb ? ra < rb : a->engine_s_median() < b->engine_s_median();
+  });
+  for (const SweepPoint* p : front) {
+    const auto [lo, hi] = std::minmax_element(p->engine_s.begin(), p->engine_s.end());
+    put("| {} | {} | {} | {} | {:.3g} [{:.3g}, {:.3g}] | {:.0f} | {:.3g} | {:.3g} | {} | {} |\n", p->engine, p->profile,
+        table_cell(setting_text(*p)), p->dt, 1e3 * p->engine_s_median(), 1e3 * *lo, 1e3 * *hi, p->ns_median(),
+        p->pos_rms, p->energy_rel, p->tunnelling, p->sticking);
+  }
+  std::vector<std::string> failed;
+  for (const SweepPoint& p : sw.points)
+    if (p.status != "ok")
+      failed.push_back(fmt::format("{} {}: {}{}", label(p.engine, p.profile), setting_text(p), p.status,
+                                   p.error.empty() ? "" : " (" + p.error + ")"));
+  if (!failed.empty()) put("\nPoints that did not complete: {}.\n", fmt::join(failed, "; "));
+  put("\n");
+}
+
+void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vector<Figure>& figures) {
+  put("## Stability frontier: `{}`\n\n", f.scene);
+  put("`ballbench stress` on {} balls: each knob doubled until a run of {} steps fails (level k runs the knob at "
+      "2^(k-1) times the scene's value; `count` tiles the scene side by side). The table gives the largest value "
+      "that passed and why the next level failed. Source: `results/stress-{}.json`.\n\n",
+      f.n, f.steps, f.scene);
+  put_figures(put, figures, "frontier", f.scene);
+  std::vector<std::string> knobs, engines;
+  for (const FrontierRow& r : f.rows) {
+    if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end()) knobs.push_back(r.knob);
+    const std::string l = label(r.engine, r.profile);
+    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+  }
+  put("| engine |");
+  for (const auto& k : knobs) put(" {} |", k);
+  put("\n|---|");
+  for (size_t k = 0; k < knobs.size(); ++k) put("---|");
+  put("\n");
+  for (const auto& e : engines) {
+    put("| {} |", e);
+    for (const auto& k : knobs)
+      for (const FrontierRow& r : f.rows)
+        if (label(r.engine, r.profile) == e && r.knob == k)
+          put(" {} ({}) |", r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor),
+              r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
+    put("\n");
+  }
+  put("\nAt coarse sampling (a step long enough for a ball to collide more than once) the pair pass-through test "
+      "cannot tell a pass-through from a path bent twice, so it can flag even `exact` there: read a frontier set by "
+      "pair pass-throughs beside `exact`'s own.\n\n");
+}
+
+void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vector<Figure>& figures) {
+  put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
+      "scenes (`gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; box side sqrt(5 n), the seed's "
+      "density). Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
+  put_figures(put, figures, "scaling", "");
+  std::vector<std::string> scenes;
+  std::vector<long> counts;
+  std::vector<std::string> engines;
+  for (const BenchRow& r : bench.rows) {
+    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    if (std::find(counts.begin(), counts.end(), r.n) == counts.end()) counts.push_back(r.n);
+    const std::string l = label(r.engine, r.profile);
+    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+  }
+  std::sort(counts.begin(), counts.end());
+  for (const auto& scene : scenes) {
+    put("ns per ball-step, `{}`:\n\n| engine |", scene);
+    for (long n : counts) put(" {} |", n);
+    put("\n|---|");
+    for (size_t k = 0; k < counts.size(); ++k) put("---:|");
+    put("\n");
+    for (const auto& e : engines) {
+      put("| {} |", e);
+      for (long n : counts) {
+        std::string cell = "";
+        for (const BenchRow& r : bench.rows)
+          if (r.scene == scene && r.n == n && label(r.engine, r.profile) == e)
+            cell = r.error.empty() ? fmt::format("{:.0f}", r.ns_per_ball_step) : "failed";
+        put(" {} |", cell);
+      }
+      put("\n");
+    }
+    // Our solver against the fastest external engine at each count both ran (issue 6's measure).
+    std::vector<std::string> ratios;
+    for (long n : counts) {
+      const BenchRow* ours = nullptr;
+      const BenchRow* fastest = nullptr;
+      for (const BenchRow& r : bench.rows) {
+        if (r.scene != scene || r.n != n || !r.error.empty()) continue;
+        if (r.engine == "home") ours = &r;
+        const bool external = r.engine != "home" && r.engine != "home-seed" && r.engine != "exact";
+        if (external && (!fastest || r.ns_per_ball_step < fastest->ns_per_ball_step)) fastest = &r;
+      }
+      if (ours && fastest)
+        ratios.push_back(fmt::format("{} balls: {:.1f}x (vs {})", n, fastest->ns_per_ball_step / ours->ns_per_ball_step,
+                                     label(fastest->engine, fastest->profile)));
+    }
+    if (!ratios.empty())
+      put("\n`home` against the fastest external engine (its ns per ball-step over ours, same run): {}.\n",
+          fmt::join(ratios, "; "));
+    put("\n");
+  }
+}
+
 }  // namespace
 
 ReportInputs read_report_inputs(const std::string& results_dir) {
@@ -126,12 +265,19 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   if (ec) throw InputError(fmt::format("{}: cannot read the results folder: {}", results_dir, ec.message()));
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
-    if (f.filename() == "run.json") {
+    const std::string name = f.filename().string();
+    if (name == "run.json") {
       std::ifstream s(f);
       in.run = nlohmann::json::parse(s, nullptr, false);
-      continue;
+    } else if (name == "bench.json") {
+      in.bench = read_bench_file(f.string());
+    } else if (name.starts_with("sweep-")) {
+      in.sweeps.push_back(read_sweep_file(f.string()));
+    } else if (name.starts_with("stress-")) {
+      in.frontiers.push_back(read_frontier_file(f.string()));
+    } else {
+      for (auto& r : read_results_file(f.string())) in.results.push_back(std::move(r));
     }
-    for (auto& r : read_results_file(f.string())) in.results.push_back(std::move(r));
   }
   return in;
 }
@@ -189,9 +335,12 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
         "accuracy).\n\n");
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
-    for (const Figure& f : figures)
-      if (f.scene == scene) put("![{}]({})\n\n*{}*\n\n", f.caption, f.file, f.caption);
+    put_figures(put, figures, "energy", scene);
+    put_figures(put, figures, "picture", scene);
   }
+  for (const SweepResult& sw : in.sweeps) put_sweep(put, sw, figures);
+  if (in.bench && !in.bench->rows.empty()) put_scaling(put, *in.bench, figures);
+  for (const FrontierResult& f : in.frontiers) put_frontier(put, f, figures);
 
   put("## Engines, profiles and limits\n\n`stock` is the engine as shipped (its defaults); `tuned` is what its own "
       "documentation and issue tracker recommend for elastic balls; our solvers have one profile, `default`. Details "
@@ -241,6 +390,14 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       "(chaotic scenes part from any reference, so this says more than a long-run RMS; `never`: it stayed within). "
       "Where `exact` itself failed, the comparison runs up to that step.\n");
   put("- **ns/step, ns/ball-step**: engine step time only, per step and per ball per step.\n");
+  put("- **work against precision**: for each engine and setting, the engine's step time to reach a fixed simulated "
+      "time (median of repeated runs, with their spread) against its position RMS error against `exact` at that "
+      "time and its energy error (max |E - E_exact| / E0); the **Pareto front** of an engine is its settings that no "
+      "other setting of it beats in both.\n");
+  put("- **stability frontier**: the largest multiple of a knob (dt, initial speeds, the mass of every other ball, "
+      "ball count) at which a run still passes: status ok, no tunnelling, energy within the tolerance of `exact`'s "
+      "and not grown.\n");
+  put("- **scaling**: ns per ball-step from the step benchmark at each ball count; flat lines are linear cost.\n");
   put("- **diverged@k**: the state became non-finite, or the energy exceeded {} times its initial value, at step k; "
       "metrics cover the steps before.\n", cfg.divergence_energy_factor);
   return fmt::to_string(put.out);

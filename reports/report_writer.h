@@ -1,23 +1,31 @@
 #pragma once
 // Results (JSON files) -> REPORT.md. It reads result files only: every number in the report can be
 // traced to a file in the results folder.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "bench_results.h"
+#include "frontier_result.h"
 #include "result.h"
+#include "sweep_result.h"
 
 namespace ballbench {
 
 struct ReportInputs {
   nlohmann::json run;                // results/run.json: machine, compiler, command, date
-  std::vector<Result> results;       // every results/*.json but run.json, in file order
+  std::vector<Result> results;       // every other results/*.json, in file order
+  std::vector<SweepResult> sweeps;   // results/sweep-*.json (`ballbench sweep`)
+  std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
+  std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
 };
 
 // A figure drawn for the report (figures.h).
 struct Figure {
-  std::string scene;
+  std::string kind;     // "energy", "picture" (per scene), "work-precision", "frontier" (per scene), "scaling"
+  std::string scene;    // "" for scaling
   std::string file;     // relative to the report's folder: figures/NAME.png
   std::string caption;
 };

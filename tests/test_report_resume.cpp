@@ -58,7 +58,7 @@ radius = 0.1
   // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
   int report(const std::string& args = "") {
     const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI +
-                            " report --out " + out().string() + " " + args + " >/dev/null 2>" +
+                            " report --no-bench --out " + out().string() + " " + args + " >/dev/null 2>" +
                             (root_ / "err.txt").string();
     const int rc = std::system(cmd.c_str());
     err_ = slurp(root_ / "err.txt");
@@ -77,6 +77,14 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
   ASSERT_EQ(report(), 0) << err_;
   EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
   ASSERT_TRUE(fs::exists(out() / "REPORT.md"));
+  // The quick suite's other parts: a sweep and a stability frontier, each with its figure.
+  const std::string md = slurp(out() / "REPORT.md");
+  for (const char* want : {"## Work against precision: `seed-box`", "figures/seed-box-work-precision.png",
+                           "## Stability frontier: `seed-box`", "figures/seed-box-frontier.png"})
+    EXPECT_NE(md.find(want), std::string::npos) << want;
+  EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
+  EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
+  EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench
 
   // As if the report had stopped during seed-bowl: its file is not there yet.
   fs::remove(results("seed-bowl"));

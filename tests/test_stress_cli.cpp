@@ -6,7 +6,10 @@
 #include <memory>
 #include <string>
 
+#include <filesystem>
+
 #include "cli_runner.h"
+#include "frontier_result.h"
 
 namespace {
 
@@ -31,3 +34,29 @@ TEST(StressCli, RejectsAnUnknownKnob) {
 }
 
 }  // namespace
+
+namespace ballbench {
+namespace {
+
+TEST(StressCli, WritesTheFrontierAsJson) {
+  const std::string path = std::filesystem::temp_directory_path() / ("bb_stress." + std::to_string(::getpid()) + ".json");
+  const auto o = testing::run_cli("stress --scene bullet --engine home,home-seed --knobs dt --levels 2 --quiet --json " + path);
+  ASSERT_EQ(o.status, 0) << o.err;
+  const FrontierResult f = read_frontier_file(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(f.scene, "bullet");
+  EXPECT_EQ(f.levels, 2);
+  ASSERT_EQ(f.rows.size(), 2u);
+  // In the order of --engine.
+  EXPECT_EQ(f.rows[0].engine, "home");
+  EXPECT_EQ(f.rows[0].levels_passed, 2);
+  EXPECT_EQ(f.rows[0].factor, 2);
+  EXPECT_EQ(f.rows[0].failed_next, "");
+  EXPECT_EQ(f.rows[1].engine, "home-seed");
+  EXPECT_EQ(f.rows[1].levels_passed, 0);
+  EXPECT_EQ(f.rows[1].factor, 0);
+  EXPECT_NE(f.rows[1].failed_next, "");
+}
+
+}  // namespace
+}  // namespace ballbench

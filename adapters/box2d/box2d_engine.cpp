@@ -220,6 +220,12 @@ EngineEntry box2d_engine() {
       "these constants are compiled into 2.4.1";
   info.summary = "Box2D (float32 sequential impulses + TOI); tuned: elastic fast balls, stock: game defaults";
   info.profiles = {"tuned", "stock"};
+  // Solver sweeps and both kinds of continuous collision (b2World::SetContinuousPhysics for
+  // ball-wall, b2BodyDef::bullet for ball-ball).
+  info.sweep_knobs = {{"velocity_iterations", {2, 8, 32}},
+                      {"position_iterations", {1, 3, 10}},
+                      {"continuous_physics", {false, true}},
+                      {"bullet", {false, true}}};
   info.caps.open_space = true;
   info.caps.gravity = true;
   info.caps.per_ball_radius = true;

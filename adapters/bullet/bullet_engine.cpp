@@ -59,9 +59,12 @@ class BulletWorld final : public Engine {
   }
 
   void step(double dt) override {
-    // maxSubSteps = 1 with fixedTimeStep = dt: exactly one internal step of dt per harness step
-    // (Bullet's accumulator starts at 0 and timeStep == fixedTimeStep), never an interpolated one.
-    world_.stepSimulation(btScalar(dt), 1, btScalar(dt));
+    // One call per internal step, each with maxSubSteps = 1 and fixedTimeStep = timeStep: exactly
+    // one step of h per call (Bullet's accumulator goes h - h = 0 every time), never an
+    // interpolated one. A single call with maxSubSteps = k could round to k - 1 steps and carry the
+    // rest in the float accumulator, and the clamp to k would then drop a step.
+    const btScalar h = btScalar(dt / s_.substeps);
+    for (int k = 0; k < s_.substeps; ++k) world_.stepSimulation(h, 1, h);
     t_ += dt;
   }
 
@@ -79,6 +82,7 @@ class BulletWorld final : public Engine {
 
   nlohmann::json settings() const override {
     return {{"solver_iterations", s_.solver_iterations},
+            {"substeps", s_.substeps},
             {"split_impulse", s_.split_impulse},
             {"split_impulse_penetration_threshold", s_.split_impulse_penetration_threshold},
             {"erp", s_.erp},
@@ -179,6 +183,7 @@ BulletSettings read_settings(const std::string& profile, const nlohmann::json& o
   BulletSettings s = bullet_profile(profile);
   SettingsReader r("bullet", overrides);
   r.get("solver_iterations", s.solver_iterations);
+  r.get("substeps", s.substeps);
   r.get("split_impulse", s.split_impulse);
   r.get("split_impulse_penetration_threshold", s.split_impulse_penetration_threshold);
   r.get("erp", s.erp);
@@ -192,6 +197,7 @@ BulletSettings read_settings(const std::string& profile, const nlohmann::json& o
   r.get("speculative_contact_restitution", s.speculative_contact_restitution);
   r.finish();
   if (s.solver_iterations < 1) throw InputError("settings.bullet.solver_iterations: must be at least 1");
+  if (s.substeps < 1) throw InputError("settings.bullet.substeps: must be at least 1");
   if (s.ccd_motion_threshold < 0) throw InputError("settings.bullet.ccd_motion_threshold: must be >= 0");
   if (s.ccd_swept_sphere_radius < 0 || s.ccd_swept_sphere_radius > 1)
     throw InputError("settings.bullet.ccd_swept_sphere_radius: must be in [0, 1] radii");
@@ -229,6 +235,8 @@ EngineEntry bullet_engine() {
       "motion clamping of a 0.4 r core against start-of-step positions (tuned only)";
   info.summary = "Bullet Physics (float), 3D spheres held to the plane; sequential impulses";
   info.profiles = {"tuned", "stock"};
+  // Solver sweeps, Bullet's own sub-stepping and CCD off / on (threshold in radii, 0 = off).
+  info.sweep_knobs = {{"solver_iterations", {4, 10, 50}}, {"substeps", {1, 2, 4}}, {"ccd_motion_threshold", {0.0, 1.0}}};
   // As in the default profile, "tuned" (README.md says what "stock" lacks).
   info.caps.any_restitution = true;        // restitution_velocity_threshold = 0
   info.caps.continuous_collision = true;   // CCD clamping: no wall escapes; grazing ball passes remain

@@ -15,6 +15,9 @@ struct BulletSettings {
   /// Sequential-impulse sweeps per step (btContactSolverInfo::m_numIterations). Too few leaves
   /// contacts in a pile unresolved; more costs time per step. (count)
   int solver_iterations = 10;
+  /// Internal steps per harness step: stepSimulation(dt, substeps, dt / substeps), Bullet's own
+  /// sub-stepping (fixed internal step, no interpolation since dt is a whole number of them). (count)
+  int substeps = 1;
   /// Split impulse (m_splitImpulse): penetration is removed by a separate "push" velocity that is
   /// thrown away after the position update, so position correction adds no kinetic energy.
   bool split_impulse = true;

@@ -243,6 +243,8 @@ EngineEntry ode_engine() {
   info.caps.continuous_collision = false;  // discrete overlap tests only: fast balls tunnel
   info.caps.deterministic = true;          // single-threaded stepping, fixed insertion order
   info.profiles = {kProfiles[0], kProfiles[1]};
+  // The iterative stepper's sweeps, and the exact (big-matrix) stepper against it. ODE has no CCD.
+  info.sweep_knobs = {{"quickstep_iterations", {5, 20, 80}}, {"stepper", {"step", "quickstep"}}};
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             OdeSettings s = ode_settings_for_profile(profile);
             SettingsReader r("ode", overrides);

@@ -1,6 +1,9 @@
-// `ballbench report`: run the standard comparison, write the results and render REPORT.md.
+// `ballbench report`: run the standard comparison (scene tables, work-precision sweeps, stability
+// frontiers, the step benchmark), write the results and render REPORT.md with its figures.
+#include <unistd.h>
+
 #include <algorithm>
-#include <ctime>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -8,21 +11,67 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "input_error.h"
-#include "machine_info.h"
+#include "data_file.h"
 #include "figures.h"
+#include "bench_results.h"
+#include "input_error.h"
 #include "registry.h"
 #include "report_writer.h"
 #include "run_engines.h"
 #include "scene_loader.h"
+#include "stability_frontier.h"
+#include "sweep.h"
 
 namespace ballbench::cli {
 namespace {
 
+namespace fs = std::filesystem;
+
+// What a report runs. `quick` is what scripts/report runs and fits in 3 minutes on 2 cores; `full`
+// is the complete evidence (tens of minutes).
+struct Suite {
+  std::vector<std::string> scenes;        // a comparison table each, every engine and profile
+  std::vector<std::string> sweep_scenes;  // work against precision
+  std::vector<std::string> stress_scenes; // stability frontier
+  int stress_levels = 5;
+  std::string bench_filter;               // Google Benchmark --benchmark_filter
+  double bench_min_time = 0.05;           // s per benchmark
+  double timeout_s = 600;                 // per engine run
+};
+
+Suite quick_suite() {
+  Suite s;
+  s.scenes = {"seed-box", "seed-bowl"};
+  s.sweep_scenes = {"seed-box"};
+  s.stress_scenes = {"seed-box"};
+  s.stress_levels = 5;
+  // Every engine up to 10^4 balls, ours to 10^5 as well.
+  s.bench_filter = "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas|bowl)/100000(/|$)";
+  s.bench_min_time = 0.05;
+  s.timeout_s = 120;
+  return s;
+}
+
+Suite full_suite() {
+  Suite s;
+  s.scenes = {"seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile"};
+  s.sweep_scenes = {"seed-box", "seed-bowl"};
+  s.stress_scenes = {"seed-box", "seed-bowl"};
+  s.stress_levels = 6;
+  s.bench_filter = "^step/";  // everything registered: 10 .. 10^5 balls, 10^6 for ours
+  s.bench_min_time = 0.2;
+  s.timeout_s = 600;
+  return s;
+}
+
 struct ReportArgs {
   std::string out = "reports";
+  bool quick = false;  // the default; the flag is there to say so
+  bool full = false;
   bool render_only = false;
   bool fresh = false;
+  bool no_bench = false;
+  std::string bench_binary;  // default: beside this executable's build tree
 };
 
 // A results file holding exactly the runs a report makes of `scene` (every engine x profile),
@@ -47,28 +96,53 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
   return want == have;
 }
 
-nlohmann::json run_context(const std::string& command) {
-  const MachineInfo m = machine_info();
-  char date[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
-  return {{"cpu", m.cpu},
-          {"cores", m.cores},
-          {"os", m.os},
-          {"compiler", m.compiler},
-          {"build_type", m.build_type},
-          {"flags", m.flags},
-          {"command", command},
-          {"date", date}};
+
+// The step benchmark built beside this executable (build/<preset>/bench/ next to core/cli/).
+std::string default_bench_binary() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  return (self.parent_path().parent_path().parent_path() / "bench" / "ballbench_step_benchmark").string();
+}
+
+// Runs the step benchmark into `path` (Google Benchmark's JSON, via its own --benchmark_out); its
+// console table goes to stderr as progress. A missing binary or a failed run is reported and
+// skipped: the rest of the report stands without the scaling section.
+void run_bench(const ReportArgs& a, const Suite& suite, const std::string& path) {
+  const std::string bin = a.bench_binary.empty() ? default_bench_binary() : a.bench_binary;
+  if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
+    if (!a.bench_binary.empty()) throw InputError(fmt::format("--bench-binary {}: not an executable file", bin));
+    fmt::print(stderr, "scaling skipped: no step benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", bin);
+    return;
+  }
+  fmt::print(stderr, "running the step benchmark ({}), about a minute\n", bin);
+  const std::string tmp = path + ".running";
+  const std::string cmd = fmt::format("'{}' --benchmark_filter='{}' --benchmark_min_time={} --benchmark_out='{}' "
+                                      "--benchmark_out_format=json 1>&2",
+                                      bin, suite.bench_filter, suite.bench_min_time, tmp);
+  const int rc = std::system(cmd.c_str());
+  std::string why = rc != 0 ? fmt::format("it failed (status {})", rc) : "";
+  if (why.empty()) try {
+      if (read_bench_file(tmp).rows.empty()) why = "no benchmark matched " + suite.bench_filter;
+    } catch (const InputError& e) {
+      why = e.what();
+    }
+  if (!why.empty()) {
+    fmt::print(stderr, "scaling skipped: the step benchmark: {}; its output is in {}\n", why, tmp);
+    return;
+  }
+  fs::rename(tmp, path);
 }
 
 void report(const ReportArgs& a) {
   const std::string results_dir = a.out + "/results";
+  const Suite suite = a.full ? full_suite() : quick_suite();
   if (!a.render_only) {
-    std::filesystem::create_directories(results_dir);
+    fs::create_directories(results_dir);
     const auto engines = parse_engine_list("all");
-    bool ran = false;
-    for (const std::string name : {"seed-box", "seed-bowl"}) {
+    Isolation isolation;
+    isolation.timeout_s = suite.timeout_s;
+    for (const std::string& name : suite.scenes) {
       const Scene scene = load_scene(name);
       const std::string path = fmt::format("{}/{}.json", results_dir, name);
       if (!a.fresh && complete_results(path, scene, engines)) {
@@ -77,33 +151,79 @@ void report(const ReportArgs& a) {
       }
       RunOptions options;
       options.reference = reference_engine();  // error against `exact` in every row
-      write_results_file(path, run_all(scene, engines, "all", options, false));
+      write_results_file(path, run_all(scene, engines, "all", options, false, isolation));
       fmt::print(stderr, "ran {}\n", name);
-      ran = true;
     }
-    if (ran || !std::filesystem::exists(results_dir + "/run.json")) {
-      nlohmann::json context = run_context("scripts/report");
-      context["scenes"] = {"seed-box", "seed-bowl"};  // the report's order
-      std::ofstream(results_dir + "/run.json") << context.dump(2) << '\n';
+    for (const std::string& name : suite.sweep_scenes) {
+      const Scene scene = load_scene(name);
+      const std::string path = fmt::format("{}/sweep-{}.json", results_dir, name);
+      if (!a.fresh && fs::exists(path)) {
+        fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
+        continue;
+      }
+      SweepOptions o;
+      o.horizon = 0.2;
+      o.repeats = 5;
+      o.reference = reference_engine();
+      o.isolation = isolation;
+      write_sweep_files(run_sweep(scene, engines, o, run_context()), path,
+                        fmt::format("{}/sweep-{}.csv", results_dir, name));
+      fmt::print(stderr, "swept {}\n", name);
     }
+    for (const std::string& name : suite.stress_scenes) {
+      const Scene scene = load_scene(name);
+      const std::string path = fmt::format("{}/stress-{}.json", results_dir, name);
+      if (!a.fresh && fs::exists(path)) {
+        fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
+        continue;
+      }
+      StressOptions o;
+      o.profile = "all";
+      o.levels = suite.stress_levels;
+      o.reference = reference_engine();
+      o.isolation = isolation;
+      if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
+      write_frontier_file(path, run_frontier(scene, engines, o, run_context()));
+      fmt::print(stderr, "stressed {}\n", name);
+    }
+    const std::string bench_path = results_dir + "/bench.json";
+    if (a.no_bench) {
+      fs::remove(bench_path);
+    } else if (!a.fresh && fs::exists(bench_path)) {
+      fmt::print(stderr, "reusing {} (--fresh runs it again)\n", bench_path);
+    } else {
+      run_bench(a, suite, bench_path);
+    }
+    nlohmann::json context = run_context();
+    context["suite"] = a.full ? "full" : "quick";
+    context["scenes"] = suite.scenes;  // the report's order
+    write_file_atomically(results_dir + "/run.json", context.dump(2) + "\n", "the run record");
   }
   const ReportInputs inputs = read_report_inputs(results_dir);
   const std::string md = render_report(inputs, draw_figures(inputs, a.out));
-  const std::string path = a.out + "/REPORT.md";
-  std::ofstream(path + ".tmp") << md;
-  std::filesystem::rename(path + ".tmp", path);
-  fmt::print("wrote {}\n", path);
+  write_file_atomically(a.out + "/REPORT.md", md, "the report");
+  fmt::print("wrote {}/REPORT.md\n", a.out);
 }
 
 }  // namespace
 
 void add_report(CLI::App& app) {
   auto a = std::make_shared<ReportArgs>();
-  auto* cmd = app.add_subcommand("report", "run the standard comparison and write REPORT.md");
-  cmd->add_option("--out", a->out, "folder for REPORT.md and results/ (default: reports)");
+  auto* cmd = app.add_subcommand(
+      "report", "run the standard comparison (tables, sweeps, stability frontiers, scaling) and write REPORT.md");
+  cmd->add_option("--out", a->out, "folder for REPORT.md, figures/ and results/ (default: reports)");
+  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite, within 3 minutes on 2 cores (the default)");
+  cmd->add_flag("--full", a->full, "the complete evidence: more scenes, sweeps and frontiers, every benchmark "
+                                   "(tens of minutes)")
+      ->excludes(quick);
   auto* render_only =
       cmd->add_flag("--render-only", a->render_only, "only rebuild REPORT.md from the results already in OUT/results");
-  cmd->add_flag("--fresh", a->fresh, "run every scene again, even one whose complete results are already in OUT/results")
+  cmd->add_flag("--fresh", a->fresh, "run everything again, even what complete results in OUT/results already hold")
+      ->excludes(render_only);
+  cmd->add_flag("--no-bench", a->no_bench, "leave the step benchmark (and the scaling section) out")
+      ->excludes(render_only);
+  cmd->add_option("--bench-binary", a->bench_binary,
+                  "the step benchmark to run (default: bench/ballbench_step_benchmark in this build)")
       ->excludes(render_only);
   cmd->callback([a] { report(*a); });
 }

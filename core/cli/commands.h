@@ -11,6 +11,7 @@ void add_run(CLI::App& app);
 void add_report(CLI::App& app);
 void add_regress(CLI::App& app);
 void add_stress(CLI::App& app);
+void add_sweep(CLI::App& app);
 
 // Thrown by a subcommand that ran to the end but found what it checks failing (`regress`, having
 // printed what differs): main exits with `status`, printing nothing more.

@@ -7,15 +7,18 @@
 
 #include "commands.h"
 #include "input_error.h"
+#include "run_engines.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"ballbench: compare 2D ball physics engines on identical scenes"};
   app.require_subcommand(1);
+  ballbench::cli::set_command_line(argc, argv);
   ballbench::cli::add_list(app);
   ballbench::cli::add_run(app);
   ballbench::cli::add_report(app);
   ballbench::cli::add_regress(app);
   ballbench::cli::add_stress(app);
+  ballbench::cli::add_sweep(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {

@@ -1,6 +1,7 @@
 #include "run_engines.h"
 
 #include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -9,6 +10,7 @@
 
 #include "input_error.h"
 #include "isolated_run.h"
+#include "machine_info.h"
 #include "progress.h"
 #include "trajectory_csv.h"
 
@@ -61,7 +63,37 @@ class TrajectoryParts {
   int count_ = 0;
 };
 
+std::string& command_line_store() {
+  static std::string line;
+  return line;
+}
+
 }  // namespace
+
+void set_command_line(int argc, char** argv) {
+  std::string& line = command_line_store();
+  line.clear();
+  for (int k = 0; k < argc; ++k) {
+    const std::string arg = argv[k];
+    const bool plain = !arg.empty() && arg.find_first_of(" \t'\"$\\;&|<>*?()") == std::string::npos;
+    line += (k ? " " : "") + (plain ? arg : "'" + arg + "'");
+  }
+}
+
+nlohmann::json run_context() {
+  const MachineInfo m = machine_info();
+  char date[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  return {{"cpu", m.cpu},
+          {"cores", m.cores},
+          {"os", m.os},
+          {"compiler", m.compiler},
+          {"build_type", m.build_type},
+          {"flags", m.flags},
+          {"command", command_line_store()},
+          {"date", date}};
+}
 
 void add_setting(nlohmann::json& overrides, const std::string& item) {
   const auto dot = item.find('.'), eq = item.find('=');

@@ -37,6 +37,12 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation = {}, const std::string& trajectory_path = "");
 
+// The command line as typed (main stores it), for the record of what produced a result.
+void set_command_line(int argc, char** argv);
+
+// Machine, compiler, build type and flags, the command line and the date: written beside results.
+nlohmann::json run_context();
+
 void print_table(const std::vector<Result>& results);
 
 // "--set home.contact_iterations=4" -> overrides["home"]["contact_iterations"] = 4. The value is

@@ -1,0 +1,134 @@
+#include "sweep.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+#include "isolated_run.h"
+#include "progress.h"
+
+namespace ballbench::cli {
+namespace {
+
+std::string value_text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
+
+// The profile's effective settings, to skip knob values it already has; empty if the engine cannot
+// be built here (the points then all run, and their runs report why).
+nlohmann::json profile_settings(const Scene& scene, const EngineEntry& e, const std::string& profile) {
+  try {
+    return e.create(scene, profile, merged_settings(scene, e.info.name, {}))->settings();
+  } catch (const std::exception&) {
+    return nlohmann::json::object();
+  }
+}
+
+}  // namespace
+
+std::vector<SweepPlanItem> plan_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                                      const SweepOptions& o) {
+  if (!(o.horizon > 0)) throw InputError("--horizon: must be positive");
+  std::vector<SweepPlanItem> plan;
+  auto steps_for = [&](double dt) {
+    const long steps = std::lround(o.horizon / dt);
+    if (steps < 1 || std::abs(steps * dt - o.horizon) > 1e-9 * o.horizon)
+      throw InputError(fmt::format("--horizon {} s is not a whole number of steps of {} s (dt factors {})", o.horizon,
+                                   dt, fmt::join(o.dt_factors, ",")));
+    return steps;
+  };
+  for (const EngineEntry* e : engines)
+    for (const std::string& profile : profiles_for(*e, o.profile)) {
+      for (double f : o.dt_factors) {
+        const double dt = scene.dt * f;
+        plan.push_back({e, profile, "dt", dt, nlohmann::json::object(), dt, steps_for(dt)});
+      }
+      if (!o.knobs || e->info.sweep_knobs.empty()) continue;
+      const nlohmann::json base = profile_settings(scene, *e, profile);
+      for (const SweepKnob& k : e->info.sweep_knobs)
+        for (const auto& v : k.values) {
+          if (base.contains(k.key) && base[k.key] == v) continue;  // the dt series has this point
+          plan.push_back({e, profile, k.key, v, {{k.key, v}}, scene.dt, steps_for(scene.dt)});
+        }
+    }
+  return plan;
+}
+
+SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines, const SweepOptions& o,
+                      const nlohmann::json& context) {
+  if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
+  if (!o.reference) throw InputError("sweep: no reference engine");
+  const auto plan = plan_sweep(scene, engines, o);
+  SweepResult out;
+  out.scene = scene.name;
+  out.n = scene.n();
+  out.horizon = o.horizon;
+  out.reference = o.reference->info.name;
+  out.repeats = o.repeats;
+  out.context = context;
+  const IsolationOptions child{o.isolation.timeout_s, ""};
+  Progress progress(fmt::format("sweep {} ({} points x {} runs)", scene.name, plan.size(), o.repeats + 1));
+  // Runs in this process or a child, as asked.
+  auto run = [&](const Scene& s, const EngineEntry& e, const RunOptions& r) {
+    return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
+  };
+  for (size_t k = 0; k < plan.size(); ++k) {
+    const SweepPlanItem& item = plan[k];
+    Scene s = scene;
+    s.dt = item.dt;
+    RunOptions options;
+    options.steps = item.steps;
+    options.profile = item.profile;
+    options.overrides = item.overrides;
+    // The measured run: error against the reference, metrics. Its timing is not used, since the
+    // reference stepping in lockstep shares the caches.
+    options.reference = item.engine == o.reference ? nullptr : o.reference;
+    const Result r = run(s, *item.engine, options);
+    SweepPoint p;
+    p.engine = item.engine->info.name;
+    p.profile = item.profile;
+    p.knob = item.knob;
+    p.value = item.value;
+    p.dt = item.dt;
+    p.steps = item.steps;
+    p.settings = r.settings;
+    p.status = r.status;
+    p.error = r.error;
+    if (options.reference) {
+      p.pos_rms = r.reference.pos_rms_final, p.vel_rms = r.reference.vel_rms_final;
+      p.energy_rel = r.reference.energy_rel_max;
+    }  // else: the reference against itself, error 0 by definition
+    p.tunnelling = r.metrics.tunnelling_wall + r.metrics.tunnelling_pair;
+    p.sticking = r.metrics.sticking_wall + r.metrics.sticking_pair;
+    // The timing runs: the engine alone, the same steps.
+    options.reference = nullptr;
+    for (int rep = 0; rep < o.repeats && r.status == "ok"; ++rep) {
+      const Result t = run(s, *item.engine, options);
+      if (t.status != "ok") break;
+      p.ns_per_ball_step.push_back(t.ns_per_ball_step);
+      p.engine_s.push_back(t.wall_s);
+    }
+    out.points.push_back(std::move(p));
+    if (!o.quiet) progress.update(double(k + 1) / plan.size());
+  }
+  mark_pareto(out.points);
+  return out;
+}
+
+void print_pareto(const SweepResult& s) {
+  fmt::print("Pareto fronts on {} ({} balls): position RMS error against {} at t = {} s vs engine time\n", s.scene,
+             s.n, s.reference, s.horizon);
+  fmt::print("{:<10} {:<8} {:<22} {:>9} {:>12} {:>12} {:>11} {:>11}\n", "engine", "profile", "knob = value", "dt",
+             "engine ms", "ns/ball-step", "pos.err", "E err");
+  for (const SweepPoint& p : s.points) {
+    if (!p.pareto) continue;
+    fmt::print("{:<10} {:<8} {:<22} {:>9.4g} {:>12.4g} {:>12.1f} {:>11.3g} {:>11.3g}\n", p.engine, p.profile,
+               p.knob == "dt" ? "dt" : p.knob + " = " + value_text(p.value), p.dt, 1e3 * p.engine_s_median(),
+               p.ns_median(), p.pos_rms, p.energy_rel);
+  }
+  for (const SweepPoint& p : s.points)
+    if (p.status != "ok")
+      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, value_text(p.value), p.status,
+                 p.error.empty() ? "" : ": " + p.error);
+}
+
+}  // namespace ballbench::cli

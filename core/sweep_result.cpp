@@ -1,0 +1,130 @@
+#include "sweep_result.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "data_file.h"
+#include "input_error.h"
+#include "json_number.h"
+
+namespace ballbench {
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  const size_t mid = v.size() / 2;
+  std::nth_element(v.begin(), v.begin() + mid, v.end());
+  if (v.size() % 2) return v[mid];
+  return 0.5 * (v[mid] + *std::max_element(v.begin(), v.begin() + mid));
+}
+
+double SweepPoint::ns_median() const { return median(ns_per_ball_step); }
+double SweepPoint::engine_s_median() const { return median(engine_s); }
+
+void mark_pareto(std::vector<SweepPoint>& points) {
+  std::map<std::string, std::vector<SweepPoint*>> by_engine;
+  for (auto& p : points) {
+    p.pareto = false;
+    if (p.status == "ok" && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
+  }
+  for (auto& [engine, ps] : by_engine) {
+    // Fastest first (ties: the more accurate first); a point is on the front if it is more accurate
+    // than every faster one.
+    std::sort(ps.begin(), ps.end(), [](const SweepPoint* a, const SweepPoint* b) {
+      const double ta = a->engine_s_median(), tb = b->engine_s_median();
+      return ta != tb ? ta < tb : a->pos_rms < b->pos_rms;
+    });
+    double best = std::numeric_limits<double>::infinity();
+    for (SweepPoint* p : ps)
+      if (p->pos_rms < best) p->pareto = true, best = p->pos_rms;
+  }
+}
+
+nlohmann::json to_json(const SweepResult& s) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const SweepPoint& p : s.points)
+    points.push_back({{"engine", p.engine},
+                      {"profile", p.profile},
+                      {"knob", p.knob},
+                      {"value", p.value},
+                      {"dt", p.dt},
+                      {"steps", p.steps},
+                      {"settings", p.settings},
+                      {"status", p.status},
+                      {"error", p.error},
+                      {"ns_per_ball_step", p.ns_per_ball_step},
+                      {"ns_per_ball_step_median", p.ns_median()},
+                      {"engine_s", p.engine_s},
+                      {"engine_s_median", p.engine_s_median()},
+                      {"pos_rms", p.pos_rms},
+                      {"vel_rms", p.vel_rms},
+                      {"energy_rel", p.energy_rel},
+                      {"tunnelling", p.tunnelling},
+                      {"sticking", p.sticking},
+                      {"pareto", p.pareto}});
+  return {{"scene", s.scene},   {"n", s.n},           {"horizon", s.horizon}, {"reference", s.reference},
+          {"repeats", s.repeats}, {"context", s.context}, {"points", points}};
+}
+
+SweepResult sweep_from_json(const nlohmann::json& j) {
+  SweepResult s;
+  s.scene = j.at("scene").get<std::string>();
+  s.n = j.at("n").get<int>();
+  s.horizon = j.at("horizon").get<double>();
+  s.reference = j.at("reference").get<std::string>();
+  s.repeats = j.at("repeats").get<int>();
+  s.context = j.value("context", nlohmann::json::object());
+  for (const auto& q : j.at("points")) {
+    SweepPoint p;
+    p.engine = q.at("engine").get<std::string>();
+    p.profile = q.at("profile").get<std::string>();
+    p.knob = q.at("knob").get<std::string>();
+    p.value = q.at("value");
+    p.dt = q.at("dt").get<double>();
+    p.steps = q.at("steps").get<long>();
+    p.settings = q.at("settings");
+    p.status = q.at("status").get<std::string>();
+    p.error = q.at("error").get<std::string>();
+    for (const auto& x : q.at("ns_per_ball_step")) p.ns_per_ball_step.push_back(json_number(x));
+    for (const auto& x : q.at("engine_s")) p.engine_s.push_back(json_number(x));
+    p.pos_rms = json_number(q.at("pos_rms"));
+    p.vel_rms = json_number(q.at("vel_rms"));
+    p.energy_rel = json_number(q.at("energy_rel"));
+    p.tunnelling = q.at("tunnelling").get<int>();
+    p.sticking = q.at("sticking").get<int>();
+    p.pareto = q.at("pareto").get<bool>();
+    s.points.push_back(std::move(p));
+  }
+  return s;
+}
+
+std::string sweep_csv(const SweepResult& s) {
+  std::string out =
+      "engine,profile,knob,value,dt,steps,status,ns_per_ball_step_median,ns_per_ball_step_min,ns_per_ball_step_max,"
+      "engine_s_median,pos_rms,vel_rms,energy_rel,tunnelling,sticking,pareto\n";
+  for (const SweepPoint& p : s.points) {
+    const auto [lo, hi] = p.ns_per_ball_step.empty()
+                              ? std::pair{std::nan(""), std::nan("")}
+                              : std::pair{*std::min_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end()),
+                                          *std::max_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end())};
+    const std::string value = p.value.is_string() ? p.value.get<std::string>() : p.value.dump();
+    out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", p.engine,
+                       p.profile, p.knob, value, p.dt, p.steps, p.status, p.ns_median(), lo, hi, p.engine_s_median(),
+                       p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);
+  }
+  return out;
+}
+
+void write_sweep_files(const SweepResult& s, const std::string& json_path, const std::string& csv_path) {
+  if (!json_path.empty()) write_file_atomically(json_path, to_json(s).dump(2) + "\n", "the sweep results");
+  if (!csv_path.empty()) write_file_atomically(csv_path, sweep_csv(s), "the sweep CSV");
+}
+
+SweepResult read_sweep_file(const std::string& path) {
+  return read_json_file(path, "a sweep result", [](const nlohmann::json& j) { return sweep_from_json(j); });
+}
+
+}  // namespace ballbench

@@ -1,0 +1,56 @@
+#pragma once
+// A work-precision sweep (`ballbench sweep`): for each engine, points that vary one accuracy knob
+// at a time, each with its step time (median of repeated runs, with spread) and its error against
+// the reference at a fixed horizon. Written as JSON and CSV; the report reads the JSON.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ballbench {
+
+struct SweepPoint {
+  std::string engine, profile;
+  std::string knob;                 // "dt", or the settings key varied on top of the profile
+  nlohmann::json value;             // the knob's value at this point
+  double dt = 0;                    // (s)
+  long steps = 0;                   // to the horizon
+  nlohmann::json settings;          // the engine's effective settings (every knob, defaults included)
+  std::string status = "ok";        // of the run measured against the reference (Result::status)
+  std::string error;
+  std::vector<double> ns_per_ball_step;  // one per timing repeat (engine step time only)
+  std::vector<double> engine_s;     // one per timing repeat: engine time to the horizon (s)
+  double pos_rms = 0;               // position RMS error against the reference at the horizon (m)
+  double vel_rms = 0;               // the same for velocities (m/s)
+  double energy_rel = 0;            // max |E - E_ref| / E_ref(0) over the run
+  int tunnelling = 0, sticking = 0; // wall + pair events (metrics/tunnelling.h, metrics/sticking.h)
+  bool pareto = false;              // on its engine's Pareto front (engine time vs pos_rms)
+
+  double ns_median() const;
+  double engine_s_median() const;
+};
+
+struct SweepResult {
+  std::string scene;
+  int n = 0;
+  double horizon = 0;        // simulated time at which the error is taken (s)
+  std::string reference;     // engine the error is measured against
+  int repeats = 0;           // timing runs per point
+  nlohmann::json context;    // machine, compiler, command, date
+  std::vector<SweepPoint> points;
+};
+
+double median(std::vector<double> v);
+
+// Marks each engine's Pareto front: ok points not beaten in both engine time and position error by
+// another ok point of the same engine (any profile).
+void mark_pareto(std::vector<SweepPoint>& points);
+
+nlohmann::json to_json(const SweepResult& s);
+SweepResult sweep_from_json(const nlohmann::json& j);
+std::string sweep_csv(const SweepResult& s);
+
+void write_sweep_files(const SweepResult& s, const std::string& json_path, const std::string& csv_path);
+SweepResult read_sweep_file(const std::string& path);
+
+}  // namespace ballbench

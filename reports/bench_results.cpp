@@ -1,0 +1,48 @@
+#include "bench_results.h"
+
+#include <sstream>
+
+#include "data_file.h"
+
+namespace ballbench {
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  for (std::string part; std::getline(in, part, sep);) parts.push_back(part);
+  return parts;
+}
+
+BenchResults bench_from_json(const nlohmann::json& j) {
+  BenchResults out;
+  out.context = j.value("context", nlohmann::json::object());
+  for (const auto& b : j.at("benchmarks")) {
+    if (b.value("run_type", "iteration") != "iteration") continue;
+    const auto parts = split(b.at("name").get<std::string>(), '/');
+    if (parts.size() < 5 || parts[0] != "step") continue;  // then options, e.g. min_time:0.200
+    BenchRow row;
+    row.engine = parts[1], row.profile = parts[2], row.scene = parts[3];
+    try {
+      row.n = std::stol(parts[4]);
+    } catch (const std::exception&) {
+      continue;  // not one of ours
+    }
+    if (b.value("error_occurred", false)) {
+      row.error = b.value("error_message", "skipped");
+    } else {
+      row.ns_per_ball_step = b.at("ns_per_ball_step").get<double>();
+      if (b.contains("peak_rss_bytes_per_ball")) row.peak_rss_bytes_per_ball = b["peak_rss_bytes_per_ball"].get<double>();
+    }
+    out.rows.push_back(std::move(row));
+  }
+  return out;
+}
+
+}  // namespace
+
+BenchResults read_bench_file(const std::string& path) {
+  return read_json_file(path, "Google Benchmark JSON", [](const nlohmann::json& j) { return bench_from_json(j); });
+}
+
+}  // namespace ballbench

@@ -1,0 +1,30 @@
+#pragma once
+// The step benchmark's results (bench/step_benchmark.cpp run with --benchmark_format=json or
+// --benchmark_out), read for the report's scaling figure and table. Read through nlohmann-json from
+// Google Benchmark's own JSON output, never from its console text.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace ballbench {
+
+struct BenchRow {
+  std::string engine, profile, scene;  // from the benchmark name step/ENGINE/PROFILE/SCENE/N
+  long n = 0;
+  double ns_per_ball_step = 0;         // the benchmark's counter
+  std::optional<double> peak_rss_bytes_per_ball;  // when the benchmark reports it
+  std::string error;                   // the benchmark skipped with this message ("" = ran)
+};
+
+struct BenchResults {
+  nlohmann::json context;              // Google Benchmark's context: host, CPU, library versions
+  std::vector<BenchRow> rows;          // in the file's order; aggregates (mean, median) left out
+};
+
+// Rows whose names do not start step/ENGINE/PROFILE/SCENE/N (other benchmarks in the same file) are
+// skipped. Throws InputError naming the file if it is not Google Benchmark JSON.
+BenchResults read_bench_file(const std::string& path);
+
+}  // namespace ballbench

@@ -1,0 +1,55 @@
+// The report reads Google Benchmark's JSON: our step benchmarks by name, errors kept as errors,
+// aggregates and other benchmarks left out, and a file that is not such JSON named in one line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "bench_results.h"
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+TEST(BenchResults, ReadsStepBenchmarksFromGoogleBenchmarkJson) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_bench." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({
+  "context": {"host_name": "x", "num_cpus": 2},
+  "benchmarks": [
+    {"name": "step/home/default/gas/1000/min_time:0.200", "run_type": "iteration", "ns_per_ball_step": 55.5,
+     "balls": 1000},
+    {"name": "step/ode/stock/gas/10000/min_time:0.200", "run_type": "iteration", "error_occurred": true,
+     "error_message": "ode: out of memory"},
+    {"name": "step/home/default/gas/1000_mean", "run_type": "aggregate", "ns_per_ball_step": 1},
+    {"name": "BM_other", "run_type": "iteration"},
+    {"name": "step/home/default/bowl/1000000", "run_type": "iteration", "ns_per_ball_step": 20,
+     "peak_rss_bytes_per_ball": 150}
+  ]})";
+  const BenchResults b = read_bench_file(path.string());
+  std::filesystem::remove(path);
+  EXPECT_EQ(b.context["num_cpus"], 2);
+  ASSERT_EQ(b.rows.size(), 3u);
+  EXPECT_EQ(b.rows[0].engine, "home");
+  EXPECT_EQ(b.rows[0].scene, "gas");
+  EXPECT_EQ(b.rows[0].n, 1000);
+  EXPECT_EQ(b.rows[0].ns_per_ball_step, 55.5);
+  EXPECT_EQ(b.rows[1].profile, "stock");
+  EXPECT_EQ(b.rows[1].error, "ode: out of memory");
+  EXPECT_EQ(b.rows[2].n, 1000000);
+  EXPECT_EQ(b.rows[2].peak_rss_bytes_per_ball, 150);
+}
+
+TEST(BenchResults, AFileThatIsNotBenchmarkJsonIsAnInputError) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_bench_bad." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({"results": []})";
+  try {
+    read_bench_file(path.string());
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace ballbench
