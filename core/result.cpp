@@ -54,7 +54,6 @@ nlohmann::json to_json(const Result& r) {
   j["ns_per_step"] = r.ns_per_step;
   j["ns_per_ball_step"] = r.ns_per_ball_step;
   j["harness_s"] = r.harness_s;
-  j["sample_every"] = r.sample_every;
   j["out_of_plane_max"] = r.out_of_plane_max;
   j["samples"] = m.samples;
   j["energy"] = {{"initial", m.energy.initial},
@@ -69,7 +68,8 @@ nlohmann::json to_json(const Result& r) {
   j["penetration"] = {{"max", m.penetration_max}, {"mean", m.penetration_mean}};
   j["metrics_config"] = {{"contact_tolerance", r.metrics_config.contact_tolerance},
                          {"stuck_samples", r.metrics_config.stuck_samples},
-                         {"divergence_energy_factor", r.metrics_config.divergence_energy_factor}};
+                         {"divergence_energy_factor", r.metrics_config.divergence_energy_factor},
+                         {"sample_every", r.metrics_config.sample_every}};
   j["settings"] = r.settings;
   j["speed_ks"] = r.speed_ks ? nlohmann::json(*r.speed_ks) : nlohmann::json(nullptr);
   j["speed_ks_critical"] = r.speed_ks_critical ? nlohmann::json(*r.speed_ks_critical) : nlohmann::json(nullptr);
@@ -117,7 +117,6 @@ Result result_from_json(const nlohmann::json& j) {
   r.ns_per_step = j.at("ns_per_step");
   r.ns_per_ball_step = j.at("ns_per_ball_step");
   r.harness_s = j.value("harness_s", 0.0);
-  r.sample_every = j.value("sample_every", 1L);
   r.out_of_plane_max = j.value("out_of_plane_max", 0.0);
   MetricsSummary& m = r.metrics;
   m.samples = j.value("samples", 0L);
@@ -141,6 +140,7 @@ Result result_from_json(const nlohmann::json& j) {
     r.metrics_config.contact_tolerance = c.at("contact_tolerance");
     r.metrics_config.stuck_samples = c.at("stuck_samples");
     r.metrics_config.divergence_energy_factor = c.at("divergence_energy_factor");
+    r.metrics_config.sample_every = c.value("sample_every", 1);
   }
   r.settings = j.value("settings", nlohmann::json::object());
   if (j.contains("speed_ks") && !j["speed_ks"].is_null()) {

@@ -34,7 +34,6 @@ struct Result {
   double ns_per_step = 0;
   double ns_per_ball_step = 0;
   double harness_s = 0;         // reading states, metrics and trajectory output (s)
-  long sample_every = 1;        // metrics see every k-th step
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;
   ReferenceErrorSummary reference;  // error against `exact`, when it ran alongside

@@ -156,6 +156,7 @@ TEST(BulletEngine, SameInputSameTrajectory) {
 TEST(BulletSettings, ListsEveryKnobWithItsProfileValue) {
   const Scene scene = load_scene("seed-box");
   const std::vector<std::string> knobs = {"solver_iterations",
+                                          "substeps",
                                           "split_impulse",
                                           "split_impulse_penetration_threshold",
                                           "erp",
@@ -177,6 +178,7 @@ TEST(BulletSettings, ListsEveryKnobWithItsProfileValue) {
   }
   // Bullet 3.24's own defaults (btContactSolverInfo, btCollisionObject).
   EXPECT_EQ(stock["solver_iterations"], 10);
+  EXPECT_EQ(stock["substeps"], 1);
   EXPECT_EQ(stock["split_impulse"], true);
   EXPECT_DOUBLE_EQ(stock["restitution_velocity_threshold"].get<double>(), 0.2);
   EXPECT_DOUBLE_EQ(stock["ccd_motion_threshold"].get<double>(), 0.0);

@@ -60,23 +60,39 @@ TEST(Momentum, DriftIsTheLargestChangeOfTheTotal) {
   EXPECT_DOUBLE_EQ(m.summary().momentum.final.y(), -12.0);
 }
 
+// Steps through `states` as the runner does: the motion of every step, then the sample.
+void feed(MetricsAccumulator& m, const std::vector<State>& states) {
+  for (size_t k = 0; k < states.size(); ++k) {
+    if (k > 0) m.observe_motion(states[k - 1], states[k]);
+    m.observe(states[k]);
+  }
+}
+
 TEST(Tunnelling, AnInjectedWallEscapeCountsOne) {
   const Scene s = two_balls();
   MetricsAccumulator m(s, {});
-  m.observe(s.initial);
-  m.observe(state({-1, 0, 1, -4.9}, {0, 0, 0, 0}));
-  m.observe(state({-1, 0, 1, -5.2}, {0, 0, 0, 0}));  // centre beyond the floor
-  m.observe(state({-1, 0, 1, -5.3}, {0, 0, 0, 0}));  // still beyond: the same escape
+  feed(m, {s.initial, state({-1, 0, 1, -4.9}, {0, 0, 0, 0}),
+           state({-1, 0, 1, -5.2}, {0, 0, 0, 0}),    // centre beyond the floor
+           state({-1, 0, 1, -5.3}, {0, 0, 0, 0})});  // still beyond: the same escape
   EXPECT_EQ(m.summary().tunnelling_wall, 1);
 }
 
 TEST(Tunnelling, AnInjectedPassThroughCountsOne) {
   const Scene s = two_balls();
   MetricsAccumulator m(s, {});
-  m.observe(state({-1, 0, 1, 0}, {0, 0, 0, 0}));
-  m.observe(state({1, 0, -1, 0}, {0, 0, 0, 0}));  // swapped places without ever overlapping in a sample
+  // Swapped places without ever overlapping in a sample.
+  feed(m, {state({-1, 0, 1, 0}, {0, 0, 0, 0}), state({1, 0, -1, 0}, {0, 0, 0, 0})});
   EXPECT_EQ(m.summary().tunnelling_pair, 1);
   EXPECT_EQ(m.summary().sticking_pair, 0);
+}
+
+TEST(Tunnelling, OnlyTheMotionCounts) {
+  // The same two samples fed as samples only (no motion between them): nothing to judge.
+  const Scene s = two_balls();
+  MetricsAccumulator m(s, {});
+  m.observe(state({-1, 0, 1, 0}, {0, 0, 0, 0}));
+  m.observe(state({1, 0, -1, 0}, {0, 0, 0, 0}));
+  EXPECT_EQ(m.summary().tunnelling_pair, 0);
 }
 
 TEST(Tunnelling, AResolvedBounceDoesNotCount) {
@@ -84,9 +100,26 @@ TEST(Tunnelling, AResolvedBounceDoesNotCount) {
   EXPECT_GE(closest_approach({-0.6, 0.3}, {-0.6, 0.35}), 0.5);
   const Scene s = two_balls();
   MetricsAccumulator m(s, {});
-  m.observe(state({-0.6, 0, 0, 0.3}, {0, 0, 0, 0}));
-  m.observe(state({-0.6, 0, 0, 0.35}, {0, 0, 0, 0}));
+  feed(m, {state({-0.6, 0, 0, 0.3}, {0, 0, 0, 0}), state({-0.6, 0, 0, 0.35}, {0, 0, 0, 0})});
   EXPECT_EQ(m.summary().tunnelling_pair, 0);
+}
+
+TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
+  // Balls moving less than a chord through the contact circle (2 s (r_i + r_j), s = sqrt(1 - 0.98^2))
+  // are not searched. The tightest pass that counts: apart by a hair more than r_i + r_j in both
+  // samples, closest approach just inside 98% of it, so its travel is barely above that chord.
+  const Scene s = two_balls();  // radius 0.25 each: rs = 0.5
+  const double rs = 0.5, b = 0.979 * rs, half = 1.0001 * std::sqrt(rs * rs - b * b);  // d: (-half, b) -> (half, b)
+  MetricsAccumulator m(s, {});
+  feed(m, {state({-half / 2, b / 2, half / 2, -b / 2}, {0, 0, 0, 0}),
+           state({half / 2, b / 2, -half / 2, -b / 2}, {0, 0, 0, 0})});
+  EXPECT_EQ(m.summary().tunnelling_pair, 1);
+  // The same pass just outside 98%: not counted.
+  MetricsAccumulator wide(s, {});
+  const double b2 = 0.981 * rs, half2 = 1.0001 * std::sqrt(rs * rs - b2 * b2);
+  feed(wide, {state({-half2 / 2, b2 / 2, half2 / 2, -b2 / 2}, {0, 0, 0, 0}),
+              state({half2 / 2, b2 / 2, -half2 / 2, -b2 / 2}, {0, 0, 0, 0})});
+  EXPECT_EQ(wide.summary().tunnelling_pair, 0);
 }
 
 TEST(Sticking, APairHeldOverlappingKPlusOneSamplesCountsOne) {

@@ -137,6 +137,13 @@ void run_bench(const ReportArgs& a, const Suite& suite, const std::string& path)
 void report(const ReportArgs& a) {
   const std::string results_dir = a.out + "/results";
   const Suite suite = a.full ? full_suite() : quick_suite();
+  if (a.fresh) {
+    // What an earlier report left (a --full one has more parts) must not reach this one.
+    std::error_code ec;
+    for (const std::string dir : {results_dir, a.out + "/figures"})
+      for (const auto& e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file()) fs::remove(e.path(), ec);
+  }
   if (!a.render_only) {
     fs::create_directories(results_dir);
     const auto engines = parse_engine_list("all");
@@ -162,7 +169,6 @@ void report(const ReportArgs& a) {
         continue;
       }
       SweepOptions o;
-      o.horizon = 0.2;
       o.repeats = 5;
       o.reference = reference_engine();
       o.isolation = isolation;

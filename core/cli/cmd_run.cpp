@@ -22,6 +22,7 @@ struct RunArgs {
   std::vector<std::string> sets;
   bool quiet = false;
   bool no_reference = false;
+  int sample_every = 1;
   Isolation isolation;
 };
 
@@ -48,6 +49,7 @@ void run(const RunArgs& a) {
   for (const auto& s : a.sets) add_setting(options.overrides, s);
   for (const auto& [name, v] : options.overrides.items()) find_engine(name);  // a typo in --set
   if (!a.no_reference) options.reference = reference_engine();
+  options.metrics.sample_every = a.sample_every;
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
@@ -70,6 +72,10 @@ void add_run(CLI::App& app) {
   cmd->add_option("--profile", a->profile,
                   "settings profile (see `ballbench list`): a name, or all; engines without it run their default");
   cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable)");
+  cmd->add_option("--sample-every", a->sample_every,
+                  "sampled metrics (energy, momentum, overlaps, sticking, error, checksums) see every K-th step "
+                  "(default 1); tunnelling sees every step")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-reference", a->no_reference,
                 "do not run `exact` alongside to measure the error against it (it runs by default)");

@@ -48,8 +48,8 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
   cmd->add_option("--profile", a->options.profile, "settings profile, or all (default: all)");
   cmd->add_option("--horizon", a->options.horizon,
-                  "simulated time at which the position error is taken (s, default 1; a whole number of steps at "
-                  "every dt)")
+                  "simulated time at which the position error is taken (s, default 0.2; a whole number of steps "
+                  "at every dt)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--dt-factors", a->dt_factors, "the step sizes tried, as factors of the scene's dt (default 2,1,0.5,0.25)")
       ->delimiter(',')

@@ -14,7 +14,7 @@ namespace ballbench::cli {
 struct SweepOptions {
   std::string profile = "all";                  // as for `run --profile`
   std::vector<double> dt_factors{2, 1, 0.5, 0.25};  // the step-size series, times the scene's dt
-  double horizon = 1.0;                         // error taken at this simulated time (s)
+  double horizon = 0.2;                         // error taken at this simulated time (s)
   int repeats = 3;                              // timing runs per point
   bool knobs = true;                            // also each engine's SweepKnobs (EngineInfo)
   Isolation isolation{true, 120};

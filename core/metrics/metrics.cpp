@@ -21,9 +21,6 @@ void MetricsAccumulator::observe(const State& s) {
     m_.energy.initial = e;
     m_.momentum.initial = p;
     ke0_ = kinetic_energy(s, scene_.mass);
-  } else {
-    m_.tunnelling_wall += wall_escapes(prev_, s, scene_.container);
-    m_.tunnelling_pair += pair_passthroughs(prev_, s, scene_.radius, cfg_.contact_tolerance, grid_);
   }
   m_.energy.final = e;
   m_.energy.max_abs_drift = std::max(m_.energy.max_abs_drift, std::abs(e - m_.energy.initial));
@@ -59,7 +56,11 @@ void MetricsAccumulator::observe(const State& s) {
   m_.sticking_wall = sticking_.wall_events();
   m_.penetration_mean = penetration_count_ ? penetration_sum_ / penetration_count_ : 0.0;
   ++m_.samples;
-  prev_ = s;
+}
+
+void MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
+  m_.tunnelling_wall += wall_escapes(prev, cur, scene_.container);
+  m_.tunnelling_pair += pair_passthroughs(prev, cur, scene_.radius, cfg_.contact_tolerance, passthrough_);
 }
 
 bool MetricsAccumulator::energy_blew_up() const {

@@ -25,24 +25,48 @@ double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
 }
 
 int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
-                      UniformGrid& grid) {
+                      PassthroughScratch& scratch) {
   const int n = cur.n();
   if (n < 2) return 0;
+  // A straight relative path that starts and ends at least r_i + r_j apart but comes within
+  // (1 - tolerance)(r_i + r_j) of contact crosses that circle along a chord at least
+  // 2 s (r_i + r_j) long, s = sqrt(1 - (1 - tolerance)^2), so the two balls moved at least that much
+  // between them. Pairs that moved less cannot count; in most steps of most scenes no ball moves
+  // that far, and the search is skipped.
+  const double s = std::sqrt(1.0 - (1.0 - tolerance) * (1.0 - tolerance));
+  Eigen::VectorXd& moved = scratch.moved;
+  moved.resize(n);
+  moved.noalias() = (cur.pos - prev.pos).rowwise().norm();
+  const double dmax = moved.maxCoeff();
+  // One of the two moved at least s (r_i + r_j) >= 2 s r_min: the search starts from those balls
+  // only (in most steps of most scenes, none).
+  const double mover = 2.0 * s * radius.minCoeff();
+  if (dmax < mover) return 0;
   // Each ball sweeps a segment within half its displacement of the midpoint, so a pair whose
-  // segments come within r_i + r_j has midpoints within 2 r_max + d_max: one grid cell.
-  const Eigen::MatrixX2d mid = 0.5 * (prev.pos + cur.pos);
-  const double dmax = std::sqrt((cur.pos - prev.pos).rowwise().squaredNorm().maxCoeff());
+  // segments come within r_i + r_j has midpoints within 2 r_max + d_max: adjacent grid cells.
+  Eigen::MatrixX2d& mid = scratch.mid;
+  mid.resize(n, 2);
+  mid.noalias() = 0.5 * (prev.pos + cur.pos);
+  UniformGrid& grid = scratch.grid;
   grid.build(mid, 2.0 * radius.maxCoeff() + dmax);
   const double h = cur.t - prev.t;
   int count = 0;
-  grid.for_each_candidate_pair([&](int i, int j) {
-    const double rs = radius(i) + radius(j);
-    const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
-    const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
-    if (d0.norm() < rs || d1.norm() < rs) return;  // overlapping in a sample: sticking's business
-    const double bend = 0.25 * h * ((cur.vel.row(i) - cur.vel.row(j)) - (prev.vel.row(i) - prev.vel.row(j))).norm();
-    if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
-  });
+  for (int i = 0; i < n; ++i) {
+    if (moved(i) < mover) continue;
+    grid.for_each_near(mid(i, 0), mid(i, 1), [&](int j) {
+      if (j == i || (moved(j) >= mover && j < i)) return;  // a pair of movers is seen from its smaller index
+      const double rs = radius(i) + radius(j), travel = moved(i) + moved(j);
+      if (travel < 2.0 * s * rs) return;
+      const double dx = mid(i, 0) - mid(j, 0), dy = mid(i, 1) - mid(j, 1), reach = rs + 0.5 * travel;
+      if (dx * dx + dy * dy >= reach * reach) return;  // the segments never come within rs
+      const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
+      const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
+      if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) return;  // overlapping: sticking's business
+      const double bend =
+          0.25 * h * ((cur.vel.row(i) - cur.vel.row(j)) - (prev.vel.row(i) - prev.vel.row(j))).norm();
+      if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
+    });
+  }
   return count;
 }
 

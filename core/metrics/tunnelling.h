@@ -24,8 +24,15 @@ bool beyond_wall(const Eigen::Vector2d& p, const Container& box);
 // chord, so that much of a dip is explained by the velocities the samples show. Two balls that
 // pass through each other without interacting keep dw = 0 and are counted in full. `tolerance`
 // absorbs the rounding of soft contacts (see MetricsConfig).
+// Its working memory lives in `scratch`, kept across calls: it runs every step, and fresh
+// allocations of a few MB per step cost page faults that outweigh the search at 10^5 balls.
+struct PassthroughScratch {
+  UniformGrid grid;
+  Eigen::MatrixX2d mid;     // midpoints of each ball's step
+  Eigen::VectorXd moved;    // each ball's displacement over the step
+};
 int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
-                      UniformGrid& grid);
+                      PassthroughScratch& scratch);
 
 // Closest approach over s in [0, 1] of d0 + s (d1 - d0), the relative position moving linearly.
 double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1);
