@@ -1,12 +1,22 @@
 // Step cost of every engine (every profile) on the scaled standard scenes, across ball counts
 // 10 .. 10^5 (10^6 for home). The world is built and warmed up outside the timed loop; the loop
-// times Engine::step only. Counters: ns per ball-step and balls per second.
+// times Engine::step only, in wall-clock time (home runs its per-ball loops on every core).
+// Counters: ns per ball-step, balls per second, steps per second, and memory:
+// - peak_rss_bytes_per_ball: the process's peak resident set (getrusage ru_maxrss) over n. It
+//   counts everything the process ever held (the scenes of earlier benchmarks too), so read it
+//   from a fresh process running one benchmark: --benchmark_filter='step/home/default/bowl/1000000/'.
+// - engine_bytes_per_ball: growth of the current resident set (/proc/self/statm) from just before
+//   the engine is built to the end of the timed steps, over n: what the engine holds.
 //
 //   build/release/bench/ballbench_step_benchmark --benchmark_format=json > step.json
 //
 // Read the ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <map>
 
 #include <fmt/format.h>
@@ -25,6 +35,23 @@ int max_balls(const std::string& engine) {
   return 100'000;
 }
 
+// Current resident set (bytes), from /proc/self/statm.
+double resident_bytes() {
+  long pages = 0, resident = 0;
+  if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+    if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+    std::fclose(f);
+  }
+  return static_cast<double>(resident) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+}
+
+// Peak resident set of the process so far (bytes; ru_maxrss is in KiB on Linux).
+double peak_resident_bytes() {
+  rusage u{};
+  ::getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) * 1024.0;
+}
+
 void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::string profile, SceneKind kind, int n) {
   // Scenes are shared between engines of one run (building 10^6 random balls takes a while).
   static std::map<std::pair<SceneKind, int>, Scene> scenes;
@@ -32,6 +59,7 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
   if (it == scenes.end()) it = scenes.emplace(std::make_pair(kind, n), scaled_scene(kind, n)).first;
   const Scene& scene = it->second;
   std::unique_ptr<Engine> engine;
+  const double resident_before = resident_bytes();
   try {
     engine = entry->create(scene, profile, {});
     for (int k = 0; k < 5; ++k) engine->step(scene.dt);  // warm up: contacts, caches
@@ -53,6 +81,9 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
       benchmark::Counter(static_cast<double>(n) * 1e-9, benchmark::Counter::kIsIterationInvariantRate |
                                                             benchmark::Counter::kInvert);
   state.counters["balls_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["steps_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["peak_rss_bytes_per_ball"] = peak_resident_bytes() / n;
+  state.counters["engine_bytes_per_ball"] = (resident_bytes() - resident_before) / n;
 }
 
 void register_all() {
@@ -65,6 +96,7 @@ void register_all() {
               fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n).c_str(),
               step_benchmark, &e, profile, kind, n)
               ->Unit(benchmark::kMicrosecond)
+              ->UseRealTime()
               ->MinTime(0.2);
   }
 }

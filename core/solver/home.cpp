@@ -1,11 +1,13 @@
 #include "solver/home.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
-#include <queue>
 #include <stdexcept>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -13,10 +15,16 @@
 
 #include "engine_settings.h"
 #include "input_error.h"
-#include "uniform_grid.h"
+#include "solver/fork_join.h"
+#include "solver/home_grid.h"
 
+#include <chrono>
+#include <cstdio>
 namespace ballbench {
 namespace {
+struct PhaseTimer { double t[8] = {}; long steps = 0; const char* names[8] = {"kick+vbound","grid","walls","pairs","contacts","predict","events","advance"};
+  ~PhaseTimer() { if (steps) { for (int k=0;k<8;k++) fprintf(stderr, "%s %.1f ns/step-ball  ", names[k], t[k]/steps); fprintf(stderr, "\n"); } } };
+static double now_ns() { return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 // How much faster than the fastest ball at the start of the step a ball may become through
@@ -27,6 +35,41 @@ constexpr double kSpeedMargin = 1.5;
 constexpr int kClusterIterations = 200;
 // Fraction of its gap a speculative contact may close in one step (see add_contact).
 constexpr double kSpeculativeFraction = 0.5;
+// From this many balls the per-ball loops run on every core (measured: below it the hand-over
+// between threads costs more than the halved loop saves, PERFORMANCE.md).
+constexpr int kParallelBalls = 2'000;
+// Every this many steps the balls are renumbered in the grid's cell order, so that neighbours in
+// space are neighbours in memory (measured at 10^6 balls: PERFORMANCE.md). Balls drift by under a
+// cell per step, so the order stays good for a while; read() maps back to the scene's order.
+// Only from kReorderBalls balls: below, everything fits in cache and it saves nothing, and
+// renumbering changes the order of the contact solve, to which seed-bowl is sensitive (a known
+// issue, PERFORMANCE.md: permuting its balls in the scene file makes it diverge, with or without
+// renumbering).
+constexpr int kReorderSteps = 16;
+constexpr int kReorderBalls = 50'000;
+
+int reorder_steps(int n, int requested) {
+  if (requested >= 0) return requested;
+  return n >= kReorderBalls ? kReorderSteps : 0;
+}
+
+int thread_count(int n, int requested) {
+  if (requested > 0) return requested;
+  if (n < kParallelBalls) return 1;
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+}
+
+// The shortcuts this scene allows among those `allow` permits.
+HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow) {
+  const SceneFeatures f = scene.features();
+  HomeShortcuts s;
+  s.no_gravity = allow.no_gravity && !f.gravity;
+  s.no_walls = allow.no_walls && !f.walls;
+  s.equal_radii = allow.equal_radii && f.equal_radii && scene.n() > 0;
+  s.equal_masses = allow.equal_masses && f.equal_masses && scene.n() > 0;
+  s.no_pairs = allow.no_pairs && scene.n() < 2;
+  return s;
+}
 
 struct Event {
   double t;         // time within the step (s)
@@ -47,39 +90,62 @@ class Home final : public Engine {
  public:
   Home(const Scene& scene, HomeSettings s)
       : s_(s),
+        sc_(shortcuts(scene, s.allow)),
+        reorder_(reorder_steps(scene.n(), s.reorder_steps)),
         n_(scene.n()),
         e_(scene.restitution),
         g_(scene.gravity),
         box_(scene.container),
         walls_(scene.container.kind == ContainerKind::Box),
-        r_(scene.radius),
-        inv_m_(scene.mass.cwiseInverse()),
+        r0_(n_ > 0 ? scene.radius(0) : 0.0),
+        inv_m0_(n_ > 0 ? 1.0 / scene.mass(0) : 0.0),
         rmax_(scene.radius.maxCoeff()),
         p_(scene.initial.pos),
         v_(scene.initial.vel),
         t_local_(n_),
         count_(n_, 0),
-        stamp_(n_, 0) {}
+        stamp_(n_, 0),
+        active_(n_, 0),
+        pool_(thread_count(n_, s.threads)),
+        pair_hits_(pool_.parts()),
+        wall_hits_(pool_.parts()) {
+    // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
+    if (!sc_.equal_radii) r_ = scene.radius;
+    if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
+    ext_.resize(n_);
+    for (int i = 0; i < n_; ++i) ext_[i] = i;
+  }
 
   void step(double dt) override {
+    if (!sc_.no_pairs && reorder_ > 0 && steps_ % reorder_ == 1 % reorder_) reorder_by_cell();  // from the second step on
+    ++steps_;
     t_ += dt;
     dt_ = dt;
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
-    v_.col(0).array() += g_.x() * dt;
-    v_.col(1).array() += g_.y() * dt;
-    start_ = p_;
+    double t0 = now_ns();
+    if (!sc_.no_gravity) {
+      v_.col(0).array() += g_.x() * dt;
+      v_.col(1).array() += g_.y() * dt;
+    }
+    vbound_ = n_ > 0 ? kSpeedMargin * std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0;
+    double t1 = now_ns(); pt_.t[0] += (t1-t0)/n_;
     build_broad_phase(dt);
+    double t2 = now_ns(); pt_.t[1] += (t2-t1)/n_;
     v_tol_ = velocity_tolerance();
     contact_pass();
     drift();
+    pt_.steps++;
   }
 
   void read(State& out) const override {
     out.t = t_;
-    out.pos = p_;
-    out.vel = v_;
+    out.resize(n_);
+    for (int i = 0; i < n_; ++i) {
+      out.pos.row(ext_[i]) = p_.row(i);
+      out.vel.row(ext_[i]) = v_.row(i);
+    }
   }
 
   nlohmann::json settings() const override {
@@ -92,17 +158,22 @@ class Home final : public Engine {
  private:
   // Grid over the positions at the start of the step, with cells wide enough that any two balls
   // which can touch during the rest of the step are in adjacent cells.
+  // Positions and velocities are copied into it in cell order, for the pair screen.
   void build_broad_phase(double horizon) {
-    vbound_ = kSpeedMargin * std::sqrt(v_.rowwise().squaredNorm().maxCoeff());
-    grid_.build(start_, 2.0 * rmax_ + 2.0 * vbound_ * horizon);
+    vbound_ = n_ > 0 ? kSpeedMargin * std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0;
+    if (!sc_.no_pairs) grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_);
   }
 
-  double touch_pair(int i, int j) const { return s_.contact_slop * (r_(i) + r_(j)); }
-  double touch_wall(int i) const { return s_.contact_slop * r_(i); }
+  // One branch on a flag fixed at construction; the hot pair screen is compiled per case instead.
+  double radius(int i) const { return sc_.equal_radii ? r0_ : r_(i); }
+  double inv_mass(int i) const { return sc_.equal_masses ? inv_m0_ : inv_m_(i); }
+
+  double touch_pair(int i, int j) const { return s_.contact_slop * (radius(i) + radius(j)); }
+  double touch_wall(int i) const { return s_.contact_slop * radius(i); }
 
   // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
   double wall_gap(int i, int axis, int side) const {
-    return side == 0 ? p_(i, axis) - r_(i) - box_.min(axis) : box_.max(axis) - r_(i) - p_(i, axis);
+    return side == 0 ? p_(i, axis) - radius(i) - box_.min(axis) : box_.max(axis) - radius(i) - p_(i, axis);
   }
 
   double relative_normal_velocity(int i, int j, double nx, double ny) const {
@@ -112,8 +183,12 @@ class Home final : public Engine {
   }
 
   void apply_impulse(int i, int j, double nx, double ny, double J) {
-    v_(i, 0) += J * inv_m_(i) * nx, v_(i, 1) += J * inv_m_(i) * ny;
-    if (j >= 0) v_(j, 0) -= J * inv_m_(j) * nx, v_(j, 1) -= J * inv_m_(j) * ny;
+    const double mi = inv_mass(i);
+    v_(i, 0) += J * mi * nx, v_(i, 1) += J * mi * ny;
+    if (j >= 0) {
+      const double mj = inv_mass(j);
+      v_(j, 0) -= J * mj * nx, v_(j, 1) -= J * mj * ny;
+    }
   }
 
   // The velocity constraint of one contact, for the sequential-impulse solve:
@@ -136,26 +211,30 @@ class Home final : public Engine {
     else if (touching) target = close_overlap ? std::max(-gap, 0.0) / horizon : 0.0;
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
-    const double inv_mass = 1.0 / (inv_m_(i) + (j >= 0 ? inv_m_(j) : 0.0));
-    contacts_.push_back({i, j, nx, ny, target, inv_mass, 0.0});
+    const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
+    contacts_.push_back({i, j, nx, ny, target, eff, 0.0});
   }
 
-  void add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
-    if (!walls_) return;
+  // Returns whether any wall was within reach (a contact was considered).
+  bool add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
+    if (!walls_) return false;
+    bool near = false;
     for (int axis = 0; axis < 2; ++axis)
       for (int side = 0; side < 2; ++side) {
         const double gap = wall_gap(i, axis, side), touch = touch_wall(i);
         if (gap >= std::max(touch, reach)) continue;
+        near = true;
         const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
         add_contact(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
                     close_overlap);
       }
+    return near;
   }
 
   // Adds the contact of pair (i, j) if their gap is below max(touch, reach); returns whether it was.
   bool add_pair_contact(int i, int j, double reach, double horizon, bool close_overlap) {
     const double dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
-    const double rs = r_(i) + r_(j), limit = rs + std::max(touch_pair(i, j), reach);
+    const double rs = radius(i) + radius(j), limit = rs + std::max(touch_pair(i, j), reach);
     const double d2 = dx * dx + dy * dy;
     if (d2 >= limit * limit || d2 == 0) return false;  // squared first: most candidates are far
     const double d = std::sqrt(d2);
@@ -189,11 +268,33 @@ class Home final : public Engine {
   //
   // Warm started (Catto 2005): each contact begins with the impulse it ended the last step with, so
   // a pile at rest needs a sweep or two instead of as many as it is high.
+  //
+  // The same sweep screens the drift (see screen_pairs): a ball is `active` when it may have an
+  // event this step; only active balls are predicted, the rest just move dt along their lines.
   void contact_pass() {
     contacts_.clear();
     const double reach = v_rest_ * dt_;
-    for (int i = 0; i < n_; ++i) add_wall_contacts(i, reach, dt_, true);
-    grid_.for_each_candidate_pair([&](int i, int j) { add_pair_contact(i, j, reach, dt_, true); });
+    if (sc_.no_walls) {
+      std::fill(active_.begin(), active_.end(), 0);
+    } else {
+      double a = now_ns();
+      screen_walls(reach);
+      for (const auto& near : wall_hits_)
+        for (int i : near) add_wall_contacts(i, reach, dt_, true);
+      pt_.t[2] += (now_ns()-a)/n_;
+    }
+    double tp = now_ns();
+    if (!sc_.no_pairs) {
+      sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
+      pt_.t[3] += (now_ns()-tp)/n_; tp = now_ns();
+      const int* id = grid_.id();
+      for (const auto& hits : pair_hits_)
+        for (const auto& [a, b] : hits) {
+          // The contact changes both velocities, which the screen could not know: predict both.
+          active_[id[a]] = active_[id[b]] = 1;
+          add_pair_contact(id[a], id[b], reach, dt_, true);
+        }
+    }
     for (Contact& c : contacts_) {
       const auto it = warm_.find(contact_key(c));
       if (it == warm_.end()) continue;
@@ -204,11 +305,148 @@ class Home final : public Engine {
     warm_.clear();
     for (const Contact& c : contacts_)
       if (c.impulse > 0) warm_.emplace(contact_key(c), c.impulse);
+    pt_.t[4] += (now_ns()-tp)/n_;
+  }
+
+  // Per ball, in parallel: `active` if it can reach the wall it moves towards within the step
+  // (predict's test max(gap, 0) / |v| <= dt, as gap <= |v| dt with a relative margin far above
+  // round-off, so it never says no where predict would say yes), and listed in wall_hits_, in
+  // ball order, if a wall is within contact reach (add_wall_contacts' test, the same expressions).
+  void screen_walls(double reach) {
+    const int parts = pool_.parts();
+    pool_.run([&](int p) {
+      wall_hits_[p].clear();
+      const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
+      const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+      sc_.equal_radii ? screen_wall_range<true>(b, e, reach, wall_hits_[p])
+                      : screen_wall_range<false>(b, e, reach, wall_hits_[p]);
+    });
+  }
+
+  template <bool kEqualRadii>
+  void screen_wall_range(int b, int e, double reach, std::vector<int>& near) {
+    const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
+    const double* __restrict x = p_.col(0).data();
+    const double* __restrict y = p_.col(1).data();
+    const double* __restrict vx = v_.col(0).data();
+    const double* __restrict vy = v_.col(1).data();
+    const double* __restrict rad = r_.data();
+    uint8_t* __restrict active = active_.data();
+    const double x0 = box_.min(0), x1 = box_.max(0), y0 = box_.min(1), y1 = box_.max(1), r0 = r0_;
+    const bool walls = walls_;
+    for (int i = b; i < e; ++i) {
+      if (!walls) {  // open space without the no-walls shortcut: the general path asks per ball
+        active[i] = 0;
+        continue;
+      }
+      const double r = kEqualRadii ? r0 : rad[i];
+      const double gx0 = x[i] - r - x0, gx1 = x1 - r - x[i], gy0 = y[i] - r - y0, gy1 = y1 - r - y[i];
+      const bool touch = std::min(std::min(gx0, gx1), std::min(gy0, gy1)) < std::max(slop * r, reach);
+      const bool hit = (vx[i] < 0 ? gx0 : gx1) <= std::abs(vx[i]) * k || (vy[i] < 0 ? gy0 : gy1) <= std::abs(vy[i]) * k;
+      active[i] = touch | hit;
+      if (touch) [[unlikely]] near.push_back(i);
+    }
+  }
+
+  // One sweep over every pair of balls in adjacent cells, on the cell-ordered copy, in parallel
+  // over runs of cells. It records (a) the pairs within contact reach, in the order the contact
+  // pass has always added them, and (b) marks `active` both balls of every pair predict could find
+  // an event for: approaching (b < 0) and not provably apart at the end of the step by the very
+  // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
+  // wall reach has no event this step (its predict would find none), so it is not predicted:
+  // results are bit-identical to predicting every ball. In a dilute gas ~2% of balls are active.
+  template <bool kEqualRadii>
+  void screen_pairs(double reach) {
+    const int parts = pool_.parts();
+    pool_.run([&](int p) {
+      pair_hits_[p].clear();
+      const int n = grid_.balls();
+      screen_cells<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
+                                static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p]);
+    });
+  }
+
+  // The screen's kernel over slots [s0, s1). Everything it reads is copied into locals first, so
+  // the compiler knows the push_back cannot change them (measured: 1.6x faster than reading
+  // through the members). The rare outcome (a contact, or an approach within the step) takes one
+  // branch, decided by both tests at once.
+  template <bool kEqualRadii>
+  void screen_cells(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
+    const double slop = s_.contact_slop, two_dt = 2.0, dt = dt_, rs0 = r0_ + r0_;
+    const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
+    const double* __restrict x = grid_.x();
+    const double* __restrict y = grid_.y();
+    const double* __restrict vx = grid_.vx();
+    const double* __restrict vy = grid_.vy();
+    const double* __restrict r = grid_.r();
+    const int* __restrict id = grid_.id();
+    uint8_t* active = active_.data();
+    grid_.for_each_forward_pair(s0, s1, [&](int a, int b) {
+      const double dx = x[a] - x[b], dy = y[a] - y[b];
+      const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
+      const double d2 = dx * dx + dy * dy, bb = dx * wx + dy * wy;
+      double rs, lim2, rs2;
+      if constexpr (kEqualRadii) {
+        rs = rs0, lim2 = lim0_2, rs2 = rs0_2;
+      } else {
+        rs = r[a] + r[b];
+        const double lim = rs + std::max(slop * rs, reach);
+        lim2 = lim * lim, rs2 = rs * rs;
+      }
+      (void)rs;
+      const bool contact = d2 < lim2 && d2 != 0;
+      const bool approach = bb < 0 && (d2 - rs2) + two_dt * bb * dt <= 0;
+      if (contact | approach) [[unlikely]] {
+        if (contact) hits.push_back({a, b});
+        if (approach) {
+          // Both parts may mark the same ball (the same value): atomic, relaxed, free on x86.
+          std::atomic_ref<uint8_t>(active[id[a]]).store(1, std::memory_order_relaxed);
+          std::atomic_ref<uint8_t>(active[id[b]]).store(1, std::memory_order_relaxed);
+        }
+      }
+    });
   }
 
   // Pair (i, j) or ball i and wall -1 - k, as one number.
-  uint64_t contact_key(const Contact& c) const {
-    return static_cast<uint64_t>(c.i) * (static_cast<uint64_t>(n_) + 4) + static_cast<uint64_t>(c.j + 4);
+  uint64_t contact_key(const Contact& c) const { return contact_key(c.i, c.j); }
+  uint64_t contact_key(int i, int j) const {
+    return static_cast<uint64_t>(i) * (static_cast<uint64_t>(n_) + 4) + static_cast<uint64_t>(j + 4);
+  }
+
+  // Renumbers the balls in the cell order of the last grid (slot s becomes ball s). Everything
+  // indexed by ball moves with them; the warm-start impulses are re-keyed.
+  void reorder_by_cell() {
+    const int* id = grid_.id();
+    if (grid_.balls() != n_) return;
+    inv_.resize(n_);
+    for (int s = 0; s < n_; ++s) inv_[id[s]] = s;
+    auto permute_rows = [&](Eigen::MatrixX2d& m) {
+      scratch_.resize(n_, 2);
+      const int parts = pool_.parts();
+      pool_.run([&](int p) {
+        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+        for (long s = b; s < e; ++s) scratch_(s, 0) = m(id[s], 0), scratch_(s, 1) = m(id[s], 1);
+      });
+      m.swap(scratch_);
+    };
+    permute_rows(p_);
+    permute_rows(v_);
+    auto permute = [&](auto& a) {
+      auto copy = a;
+      for (int s = 0; s < n_; ++s) a[s] = copy[id[s]];
+    };
+    if (r_.size()) permute(r_);
+    if (inv_m_.size()) permute(inv_m_);
+    permute(ext_);
+    permute(count_);
+    std::unordered_map<uint64_t, double> warm;
+    warm.reserve(warm_.size());
+    const uint64_t stride = static_cast<uint64_t>(n_) + 4;
+    for (const auto& [key, impulse] : warm_) {
+      const int i = static_cast<int>(key / stride), j = static_cast<int>(key % stride) - 4;
+      warm.emplace(contact_key(inv_[i], j >= 0 ? inv_[j] : j), impulse);
+    }
+    warm_.swap(warm);
   }
 
   // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
@@ -230,7 +468,8 @@ class Home final : public Engine {
     for (size_t k = 0; k < cluster_.size(); ++k) {
       const int a = cluster_[k];
       add_wall_contacts(a, 0.0, horizon, false);
-      grid_.for_each_near(start_(a, 0), start_(a, 1), [&](int b) {
+      if (sc_.no_pairs) continue;
+      grid_.for_each_near(a, [&](int b) {
         if (b == a) return;
         if (stamp_[b] == stamp_now_) {
           if (b > a) return;  // both in the cluster: the pair is added once, from the larger index
@@ -258,13 +497,15 @@ class Home final : public Engine {
   // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
   void drift() {
     std::fill(t_local_.begin(), t_local_.end(), 0.0);
-    queue_ = {};
-    for (int i = 0; i < n_; ++i) predict(i);
+    queue_.clear();
+    double a = now_ns();
+    for (int i = 0; i < n_; ++i)
+      if (active_[i]) predict(i);
+    double b = now_ns(); pt_.t[5] += (b-a)/n_;
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
-      const Event ev = queue_.top();
-      queue_.pop();
+      const Event ev = pop_event();
       if (count_[ev.i] != ev.ci) continue;  // i collided since: its new event is queued
       if (ev.j >= 0 && count_[ev.j] != ev.cj) {
         predict(ev.i);  // the partner changed course: look again
@@ -290,7 +531,27 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
-    for (int i = 0; i < n_; ++i) advance(i, dt_);
+    double c = now_ns(); pt_.t[6] += (c-b)/n_;
+    const int parts = pool_.parts();
+    pool_.run([&](int p) {
+      const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
+      const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+      for (int i = b; i < e; ++i) advance(i, dt_);
+    });
+    pt_.t[7] += (now_ns()-c)/n_;
+  }
+
+  // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
+  // operated exactly as std::priority_queue does (so the order of simultaneous events is too).
+  void push_event(const Event& ev) {
+    queue_.push_back(ev);
+    std::push_heap(queue_.begin(), queue_.end(), std::greater<>());
+  }
+  Event pop_event() {
+    std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
+    const Event ev = queue_.back();
+    queue_.pop_back();
+    return ev;
   }
 
   // Normal approach speed of an event's pair (or ball and wall) at the event time.
@@ -307,9 +568,8 @@ class Home final : public Engine {
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
     for (int i = 0; i < n_; ++i) advance(i, t);
-    start_ = p_;
     build_broad_phase(dt_ - t);
-    queue_ = {};
+    queue_.clear();
     for (int i = 0; i < n_; ++i) {
       ++count_[i];
       predict(i);
@@ -341,7 +601,7 @@ class Home final : public Engine {
         const double t = ti + std::max(gap, 0.0) / std::abs(v);
         if (t < best.t) best = {t, i, -1 - (2 * axis + side), count_[i], 0};
       }
-    grid_.for_each_near(start_(i, 0), start_(i, 1), [&](int j) {
+    if (!sc_.no_pairs) grid_.for_each_near(i, [&](int j) {
       if (j == i) return;
       const double t0 = std::max(ti, t_local_[j]);
       const double dx = (p_(i, 0) + v_(i, 0) * (t0 - ti)) - (p_(j, 0) + v_(j, 0) * (t0 - t_local_[j]));
@@ -350,7 +610,7 @@ class Home final : public Engine {
       const double b = dx * wx + dy * wy;  // < 0: approaching
       if (b >= 0) return;
       const double d2 = dx * dx + dy * dy;
-      const double rs = r_(i) + r_(j);
+      const double rs = radius(i) + radius(j);
       const double c = d2 - rs * rs;
       // |d(t)|^2 = d2 + 2 b t + a t^2 >= d2 + 2 b t (a >= 0): if even that stays above rs^2 until
       // the earliest event found so far (or the step's end), no root is needed.
@@ -368,7 +628,7 @@ class Home final : public Engine {
       }
       if (t < best.t) best = {t, i, j, count_[i], count_[j]};
     });
-    if (best.t <= dt_) queue_.push(best);
+    if (best.t <= dt_) push_event(best);
   }
 
   // Restitution on the normal component only; tangential velocity is untouched (frictionless).
@@ -379,7 +639,7 @@ class Home final : public Engine {
     nx /= d, ny /= d;
     const double vn = relative_normal_velocity(i, j, nx, ny);
     if (vn >= 0) return;
-    apply_impulse(i, j, nx, ny, -(1.0 + e_) * vn / (inv_m_(i) + inv_m_(j)));
+    apply_impulse(i, j, nx, ny, -(1.0 + e_) * vn / (inv_mass(i) + inv_mass(j)));
   }
 
   void collide_wall(int i, int code) {
@@ -387,30 +647,41 @@ class Home final : public Engine {
     v_(i, axis) = -e_ * v_(i, axis);
   }
 
+  PhaseTimer pt_;
   HomeSettings s_;
+  HomeShortcuts sc_;  // the shortcuts taken, fixed at construction
+  int reorder_;       // renumber the balls in cell order every this many steps (0: never)
   int n_;
   double e_;
   Eigen::Vector2d g_;
   Container box_;
   bool walls_;
-  Eigen::VectorXd r_, inv_m_;
+  double r0_, inv_m0_;             // ball 0's radius and inverse mass: everyone's, if equal
+  Eigen::VectorXd r_, inv_m_;     // per ball; empty when the shortcut makes them equal
   double rmax_;
-  Eigen::MatrixX2d p_, v_;
-  Eigen::MatrixX2d start_;        // positions at the start of the step: the grid is built on them
+  Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
   std::vector<uint32_t> stamp_;   // cluster membership: stamp_[b] == stamp_now_
   uint32_t stamp_now_ = 0;
   std::vector<int> cluster_;
+  std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
+  ForkJoin pool_;
+  std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
+  std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
   double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)
   double vbound_ = 0;             // speed the broad phase allows for this step (m/s)
   double v_tol_ = 0;              // this step's round-off approach speed (m/s), see predict
-  UniformGrid grid_;
+  HomeGrid grid_;
+  long steps_ = 0;                // steps taken
+  std::vector<int> ext_;          // ball -> its index in the scene (balls are renumbered, see reorder_by_cell)
+  std::vector<int> inv_;          // scratch: old ball number -> new
+  Eigen::MatrixX2d scratch_;      // scratch for permuting rows                 // built on the positions at the start of the step
   std::vector<Contact> contacts_;
   std::unordered_map<uint64_t, double> warm_;  // contact key -> impulse at the end of the last pass
-  std::priority_queue<Event, std::vector<Event>, std::greater<>> queue_;
+  std::vector<Event> queue_;      // a min-heap on t, see push_event
 };
 
 }  // namespace
@@ -424,6 +695,8 @@ EngineEntry home_engine() {
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
+  // Sweeps of the resting-contact solve; motion between contacts is exact at any setting.
+  info.sweep_knobs = {{"contact_iterations", {4, 16, 200}}};
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSettings s;
             SettingsReader r("home", overrides);
@@ -435,8 +708,12 @@ EngineEntry home_engine() {
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
-            return std::unique_ptr<Engine>(std::make_unique<Home>(scene, s));
+            return make_home(scene, s);
           }};
+}
+
+std::unique_ptr<Engine> make_home(const Scene& scene, const HomeSettings& settings) {
+  return std::make_unique<Home>(scene, settings);
 }
 
 }  // namespace ballbench

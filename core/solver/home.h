@@ -1,10 +1,24 @@
 #pragma once
 // `home`: our ball solver. Design and the reasons for it: core/solver/README.md.
+#include <memory>
+
 #include <nlohmann/json.hpp>
 
 #include "engine.h"
 
 namespace ballbench {
+
+// Scene-wide shortcuts, each decided once when the world is built, from Scene::features(), never
+// per ball per step. A field says the shortcut may be taken; it is taken only when the scene allows
+// it. Tests (tests/test_home_specialisations.cpp) and benchmarks (bench/specialisation_benchmark.cpp)
+// clear a field to run the general path on the same scene; what each saves: PERFORMANCE.md.
+struct HomeShortcuts {
+  bool no_gravity = true;    // no kick, resting speed 0
+  bool no_walls = true;      // no per-ball wall screen or wall contacts
+  bool equal_radii = true;   // one radius: no radius array, the pair screen reads no radii
+  bool equal_masses = true;  // one inverse mass: no mass array
+  bool no_pairs = true;      // fewer than two balls: no broad phase at all
+};
 
 struct HomeSettings {
   /// Most Gauss-Seidel sweeps of the contact pass before the drift; it stops early once every
@@ -22,8 +36,17 @@ struct HomeSettings {
   /// Safety valve: more events than this per ball in one step is reported as a failure instead of
   /// running on (it would mean an inelastic collapse the contact pass did not resolve). (count)
   int max_events_per_ball = 1000;
+
+  // Internal, not user settings (not in settings(), not readable with --set): they change how
+  // fast, never what, the solver computes.
+  HomeShortcuts allow;  // shortcuts that may be taken (all, unless a test or benchmark clears one)
+  int threads = 0;      // threads for the per-ball loops; 0: all cores from 2 000 balls, else 1
+  int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 50 000 balls
 };
 
 EngineEntry home_engine();
+
+// The engine with explicit settings, for tests and benchmarks that force the general path.
+std::unique_ptr<Engine> make_home(const Scene& scene, const HomeSettings& settings);
 
 }  // namespace ballbench

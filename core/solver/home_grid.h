@@ -1,0 +1,80 @@
+#pragma once
+// The home solver's broad phase: a uniform grid rebuilt every step by a counting sort, with a
+// copy of positions and velocities in cell order, so the all-pairs screen of a step reads memory
+// front to back instead of jumping around the scene's ball order (core/solver/PERFORMANCE.md).
+// The balls themselves keep the scene's order; only this copy is sorted.
+//
+// Cells and origin are chosen exactly as UniformGrid chooses them (core/uniform_grid.h), so the
+// candidate pairs, and the order the contact pass sees them in, are the ones the solver had before.
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/fork_join.h"
+
+namespace ballbench {
+
+class HomeGrid {
+ public:
+  // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. `radius` may be
+  // empty (all radii equal), otherwise it is copied in cell order too.
+  void build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius, double cell,
+             ForkJoin& pool);
+
+  int cells() const { return nx_ * ny_; }
+  int balls() const { return static_cast<int>(id_.size()); }
+  // Balls of cell c are the slots [first(c), first(c + 1)); slot s is ball id[s].
+  int first(int c) const { return start_[c]; }
+  const int* id() const { return id_.data(); }
+  const double* x() const { return x_.data(); }
+  const double* y() const { return y_.data(); }
+  const double* vx() const { return vx_.data(); }
+  const double* vy() const { return vy_.data(); }
+  const double* r() const { return r_.data(); }
+
+  // Calls f(slot a, slot b) once for every pair of slots a < b in the same or adjacent cells, for
+  // the balls in slots [s0, s1), in the order UniformGrid::for_each_candidate_pair visits them.
+  // The grid has a ring of empty cells around it, so no neighbour needs a bounds check, and
+  // adjacent cells of a row are adjacent in slot order: each ball sees two contiguous runs, the
+  // rest of its cell plus the cell to the right, and the three cells above. Walking balls rather
+  // than cells skips the empty cells (most of them in a dilute gas) at no cost.
+  template <class F>
+  void for_each_forward_pair(int s0, int s1, F&& f) const {
+    const int* __restrict start = start_.data();
+    const int* __restrict cell = cell_sorted_.data();
+    const int row = nx_;
+    for (int a = s0; a < s1; ++a) {
+      const int c = cell[a];
+      const int end_right = start[c + 2], up0 = start[c + row - 1], up1 = start[c + row + 2];
+      for (int b = a + 1; b < end_right; ++b) f(a, b);
+      for (int b = up0; b < up1; ++b) f(a, b);
+    }
+  }
+
+  // Calls f(j) for every ball j in the 3 x 3 cells around the cell ball i was sorted into.
+  template <class F>
+  void for_each_near(int i, F&& f) const {
+    const int c = cell_of_[i];
+    for (int r = c - nx_; r <= c + nx_; r += nx_)
+      for (int s = start_[r - 1]; s < start_[r + 2]; ++s) f(id_[s]);
+  }
+
+
+ private:
+  // x >= x0_ (the least x), so truncation is the floor UniformGrid takes; + 1 for the ring.
+  int cell_x(double x) const { return clamp_cell((x - x0_) * inv_cell_, nx_ - 2) + 1; }
+  int cell_y(double y) const { return clamp_cell((y - y0_) * inv_cell_, ny_ - 2) + 1; }
+  static int clamp_cell(double c, int n) { return c < 0 ? 0 : c >= n ? n - 1 : static_cast<int>(c); }
+
+  double x0_ = 0, y0_ = 0, inv_cell_ = 1;
+  int nx_ = 0, ny_ = 0;         // cells per row and rows, with the empty ring included
+  std::vector<int> start_;    // (cells + 1) prefix sums
+  std::vector<int> fill_;     // scratch for the scatter
+  std::vector<int> cell_of_;  // ball -> cell
+  std::vector<int> cell_sorted_;  // slot -> cell
+  std::vector<int> id_;       // slot -> ball
+  std::vector<double> x_, y_, vx_, vy_, r_;  // in slot order
+};
+
+}  // namespace ballbench
