@@ -195,9 +195,9 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
               r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
     put("\n");
   }
-  put("\nAt coarse sampling (a step long enough for a ball to collide more than once) the pair pass-through test "
-      "cannot tell a pass-through from a path bent twice, so it can flag even `exact` there: read a frontier set by "
-      "pair pass-throughs beside `exact`'s own.\n\n");
+  put("\nAt coarse steps (long enough for a ball to collide several times) the pair pass-through test judges a "
+      "path bent several times from two samples; `exact` cannot tunnel, so its row shows whether the test cried wolf "
+      "at a level.\n\n");
 }
 
 void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vector<Figure>& figures) {
@@ -376,9 +376,9 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       "without gravity; walls and gravity change it.\n");
   put("- **tunnelling wall**: balls whose centre went from inside the box to beyond a wall between two samples.\n");
   put("- **tunnelling pair**: pairs apart in two consecutive samples whose relative motion, taken as a straight line "
-      "between them, came closer than {:.0f}% of their radius sum less |dw| h / 4 (dw: the pair's change of relative "
-      "velocity between the samples, h: the time between them; a path bent by a collision with a third ball strays at "
-      "most that far from the straight line): they passed through each other. A resolved bounce never counts.\n",
+      "between them, came closer than {:.0f}% of their radius sum less (|dv_i| + |dv_j|) h / 4 (dv: each ball's change of "
+      "velocity between the samples, h: the time between them; a path bent once by a collision strays at most that far "
+      "from the straight line): they passed through each other. A resolved bounce never counts.\n",
       100 * (1 - cfg.contact_tolerance));
   put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
       "than {:.0f}% of its radius) for more than {} consecutive samples; one event per episode.\n",

@@ -82,10 +82,10 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
                         wx, wy = dx - ax, dy - ay
                         ww = wx * wx + wy * wy
                         t = min(1.0, max(0.0, -(ax * wx + ay * wy) / ww)) if ww > 0 else 0.0
-                        # The chord may stray |dw| h / 4 from a path bent by a collision with a third ball.
-                        dwx = (s[i][2] - s[j][2]) - (prev[i][2] - prev[j][2])
-                        dwy = (s[i][3] - s[j][3]) - (prev[i][3] - prev[j][3])
-                        bend = 0.25 * h * math.hypot(dwx, dwy)
+                        # The chord may stray (|dv_i| + |dv_j|) h / 4 from paths bent by collisions.
+                        dvi = math.hypot(s[i][2] - prev[i][2], s[i][3] - prev[i][3])
+                        dvj = math.hypot(s[j][2] - prev[j][2], s[j][3] - prev[j][3])
+                        bend = 0.25 * h * (dvi + dvj)
                         if math.hypot(ax + t * wx, ay + t * wy) < (1 - tol) * rs - bend:
                             out["tunnelling_pair"] += 1
         pair_run = new_run

@@ -63,7 +63,7 @@ int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd
       const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
       if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) return;  // overlapping: sticking's business
       const double bend =
-          0.25 * h * ((cur.vel.row(i) - cur.vel.row(j)) - (prev.vel.row(i) - prev.vel.row(j))).norm();
+          0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
       if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
     });
   }
