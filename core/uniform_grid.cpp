@@ -30,8 +30,8 @@ void UniformGrid::build(const Eigen::MatrixX2d& pos, double cell) {
   }
   for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
   order_.resize(n);
-  std::vector<int> fill(start_.begin(), start_.end() - 1);
-  for (int i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = i;
+  fill_.assign(start_.begin(), start_.end() - 1);
+  for (int i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = i;
 }
 
 }  // namespace ballbench

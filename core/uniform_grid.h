@@ -48,6 +48,18 @@ class UniformGrid {
       }
   }
 
+  // The same 3 x 3 block as positions in order(): f(begin, end) once per row of three cells, which
+  // lie next to each other there. For scans over data gathered in cell order (cache-friendly).
+  template <class F>
+  void for_each_near_range(double x, double y, F&& f) const {
+    const int cx = cell_x(x), cy = cell_y(y);
+    const int x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
+    for (int iy = cy > 0 ? cy - 1 : 0; iy <= cy + 1 && iy < ny_; ++iy) f(start_[iy * nx_ + x0], start_[iy * nx_ + x1 + 1]);
+  }
+
+  // Ball indices sorted by cell: the balls of one cell, and of a row of cells, are contiguous.
+  const std::vector<int>& order() const { return order_; }
+
   double cell() const { return cell_; }
 
  private:
@@ -66,6 +78,7 @@ class UniformGrid {
   std::vector<int> start_;  // (cells + 1) prefix sums: balls of cell c are order_[start_[c] .. start_[c+1])
   std::vector<int> order_;  // ball indices sorted by cell
   std::vector<int> cell_of_;
+  std::vector<int> fill_;   // scratch of build(), kept: no allocation per build once warm
 };
 
 }  // namespace ballbench

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace ballbench {
 
@@ -50,21 +51,31 @@ int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd
   UniformGrid& grid = scratch.grid;
   grid.build(mid, 2.0 * radius.maxCoeff() + dmax);
   const double h = cur.t - prev.t;
+  const auto& order = grid.order();
+  auto [sx, sy, smoved, sr, sid] = std::tie(scratch.sx, scratch.sy, scratch.smoved, scratch.sradius, scratch.sid);
+  sx.resize(n), sy.resize(n), smoved.resize(n), sr.resize(n), sid.resize(n);
+  for (int a = 0; a < n; ++a) {
+    const int i = order[a];
+    sx[a] = mid(i, 0), sy[a] = mid(i, 1), smoved[a] = moved(i), sr[a] = radius(i), sid[a] = i;
+  }
   int count = 0;
-  for (int i = 0; i < n; ++i) {
-    if (moved(i) < mover) continue;
-    grid.for_each_near(mid(i, 0), mid(i, 1), [&](int j) {
-      if (j == i || (moved(j) >= mover && j < i)) return;  // a pair of movers is seen from its smaller index
-      const double rs = radius(i) + radius(j), travel = moved(i) + moved(j);
-      if (travel < 2.0 * s * rs) return;
-      const double dx = mid(i, 0) - mid(j, 0), dy = mid(i, 1) - mid(j, 1), reach = rs + 0.5 * travel;
-      if (dx * dx + dy * dy >= reach * reach) return;  // the segments never come within rs
-      const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
-      const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
-      if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) return;  // overlapping: sticking's business
-      const double bend =
-          0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
-      if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
+  for (int a = 0; a < n; ++a) {
+    if (smoved[a] < mover) continue;
+    grid.for_each_near_range(sx[a], sy[a], [&](int begin, int end) {
+      for (int b = begin; b < end; ++b) {
+        if (b == a || (smoved[b] >= mover && b < a)) continue;  // a pair of movers is seen from one side
+        const double rs = sr[a] + sr[b], travel = smoved[a] + smoved[b];
+        if (travel < 2.0 * s * rs) continue;
+        const double dx = sx[a] - sx[b], dy = sy[a] - sy[b], reach = rs + 0.5 * travel;
+        if (dx * dx + dy * dy >= reach * reach) continue;  // the segments never come within rs
+        const int i = sid[a], j = sid[b];
+        const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
+        const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
+        if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) continue;  // overlapping: sticking's business
+        const double bend =
+            0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
+        if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
+      }
     });
   }
   return count;

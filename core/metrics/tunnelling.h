@@ -33,6 +33,10 @@ struct PassthroughScratch {
   UniformGrid grid;
   Eigen::MatrixX2d mid;     // midpoints of each ball's step
   Eigen::VectorXd moved;    // each ball's displacement over the step
+  // mid x, mid y, moved, radius and the ball's index, gathered in the grid's cell order, so a ball's
+  // neighbourhood is three contiguous runs of memory (random access missed the cache at 10^5).
+  std::vector<double> sx, sy, smoved, sradius;
+  std::vector<int> sid;
 };
 int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
                       PassthroughScratch& scratch);
