@@ -45,7 +45,7 @@ class OdeEngine final : public Engine {
   OdeEngine(const Scene& scene, OdeSettings settings) : s_(std::move(settings)), n_(scene.n()) {
     ensure_ode_ready();
     world_ = dWorldCreate();
-    space_ = dHashSpaceCreate(nullptr);
+    space_ = s_.space == "sap" ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
     contacts_ = dJointGroupCreate(0);
 
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), 0.0);
@@ -58,7 +58,7 @@ class OdeEngine final : public Engine {
     dWorldSetAutoDisableFlag(world_, 0);  // no sleeping: every ball is simulated every step
 
     // Hash cells from the smallest to the largest ball diameter (cell size 2^level, m).
-    if (n_ > 0) {
+    if (n_ > 0 && s_.space == "hash") {
       const double dmin = 2 * scene.radius.minCoeff(), dmax = 2 * scene.radius.maxCoeff();
       dHashSpaceSetLevels(space_, static_cast<int>(std::floor(std::log2(dmin))),
                           static_cast<int>(std::ceil(std::log2(dmax))));
@@ -135,6 +135,7 @@ class OdeEngine final : public Engine {
 
   nlohmann::json settings() const override {
     return {{"stepper", s_.stepper},
+            {"space", s_.space},
             {"quickstep_iterations", s_.quickstep_iterations},
             {"quickstep_w", s_.quickstep_w},
             {"erp", s_.erp},
@@ -215,6 +216,7 @@ OdeSettings ode_settings_for_profile(const std::string& profile) {
   if (profile == "stock") {
     OdeSettings s;
     s.stepper = "quickstep";   // what most ODE applications use; 20 iterations, ODE's default
+    s.space = "hash";          // what ODE's demos create (dHashSpaceCreate)
     s.quickstep_iterations = 20;
     s.quickstep_w = 1.3;       // ODE default
     s.erp = 0.2;               // ODE default
@@ -249,6 +251,7 @@ EngineEntry ode_engine() {
             OdeSettings s = ode_settings_for_profile(profile);
             SettingsReader r("ode", overrides);
             r.get("stepper", s.stepper, {"step", "quickstep"});
+            r.get("space", s.space, {"sap", "hash"});
             r.get("quickstep_iterations", s.quickstep_iterations);
             r.get("quickstep_w", s.quickstep_w);
             r.get("erp", s.erp);
