@@ -1,4 +1,5 @@
 #include "figures.h"
+#include "ordered_set.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -118,11 +119,11 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
   std::vector<std::string> order;  // engine/profile in the sweep's order
   for (const SweepPoint& p : sw.points) {
     const std::string l = label(p.engine, p.profile);
-    if (p.engine != sw.reference && std::find(order.begin(), order.end(), l) == order.end()) order.push_back(l);
+    if (p.engine != sw.reference) add_once(order, l);
   }
   std::vector<double> dts;
   for (const SweepPoint& p : sw.points)
-    if (p.knob == "dt" && std::find(dts.begin(), dts.end(), p.dt) == dts.end()) dts.push_back(p.dt);
+    if (p.knob == "dt") add_once(dts, p.dt);
   std::string plot;
   for (size_t k = 0; k < order.size(); ++k) {
     const std::string name = slug(order[k]);
@@ -164,9 +165,9 @@ Figure scaling_figure(const BenchResults& bench, const fs::path& dir) {
   const std::string base = "scaling";
   std::vector<std::string> scenes, order;
   for (const BenchRow& r : bench.rows) {
-    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    add_once(scenes, r.scene);
     const std::string l = label(r.engine, r.profile);
-    if (std::find(order.begin(), order.end(), l) == order.end()) order.push_back(l);
+    add_once(order, l);
   }
   std::ofstream gp(dir / (base + ".gp"));
   gp << "set terminal pngcairo size " << 560 * scenes.size() << ",520 font 'sans,10'\n"
@@ -201,9 +202,9 @@ Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
   const std::string base = slug(f.scene) + "-frontier";
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
-    if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end()) knobs.push_back(r.knob);
+    add_once(knobs, r.knob);
     const std::string l = label(r.engine, r.profile);
-    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+    add_once(engines, l);
   }
   {
     std::ofstream d(dir / (base + ".dat"));

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "ordered_set.h"
 
 namespace ballbench {
 namespace {
@@ -177,9 +178,9 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
   put_figures(put, figures, "frontier", f.scene);
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
-    if (std::find(knobs.begin(), knobs.end(), r.knob) == knobs.end()) knobs.push_back(r.knob);
+    add_once(knobs, r.knob);
     const std::string l = label(r.engine, r.profile);
-    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+    add_once(engines, l);
   }
   put("| engine |");
   for (const auto& k : knobs) put(" {} |", k);
@@ -209,10 +210,10 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
   std::vector<long> counts;
   std::vector<std::string> engines;
   for (const BenchRow& r : bench.rows) {
-    if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
-    if (std::find(counts.begin(), counts.end(), r.n) == counts.end()) counts.push_back(r.n);
+    add_once(scenes, r.scene);
+    add_once(counts, r.n);
     const std::string l = label(r.engine, r.profile);
-    if (std::find(engines.begin(), engines.end(), l) == engines.end()) engines.push_back(l);
+    add_once(engines, l);
   }
   std::sort(counts.begin(), counts.end());
   for (const auto& scene : scenes) {
@@ -301,7 +302,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   std::vector<std::string> scene_order = run.value("scenes", std::vector<std::string>{});
   std::map<std::string, std::vector<const Result*>> by_scene;
   for (const auto& r : in.results) {
-    if (std::find(scene_order.begin(), scene_order.end(), r.scene) == scene_order.end()) scene_order.push_back(r.scene);
+    add_once(scene_order, r.scene);
     by_scene[r.scene].push_back(&r);
   }
   std::erase_if(scene_order, [&](const std::string& s) { return !by_scene.contains(s); });
@@ -351,7 +352,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   for (const auto& r : in.results) {
     if (!profiles.contains(r.engine)) engine_order.push_back(r.engine);
     auto& p = profiles[r.engine];
-    if (std::find(p.begin(), p.end(), r.profile) == p.end()) p.push_back(r.profile);
+    add_once(p, r.profile);
     limits[r.engine] = r.engine_limits;
     versions[r.engine] = r.engine_version;
   }

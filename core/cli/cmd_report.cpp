@@ -149,40 +149,36 @@ void report(const ReportArgs& a) {
     const auto engines = parse_engine_list("all");
     Isolation isolation;
     isolation.timeout_s = suite.timeout_s;
+    // A part whose complete results are already there is reused (a report that stopped resumes).
+    auto reuse = [&](const std::string& path, bool complete) {
+      if (a.fresh || !complete) return false;
+      fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
+      return true;
+    };
     for (const std::string& name : suite.scenes) {
       const Scene scene = load_scene(name);
       const std::string path = fmt::format("{}/{}.json", results_dir, name);
-      if (!a.fresh && complete_results(path, scene, engines)) {
-        fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
-        continue;
-      }
+      if (reuse(path, complete_results(path, scene, engines))) continue;
       RunOptions options;
       options.reference = reference_engine();  // error against `exact` in every row
       write_results_file(path, run_all(scene, engines, "all", options, false, isolation));
       fmt::print(stderr, "ran {}\n", name);
     }
     for (const std::string& name : suite.sweep_scenes) {
-      const Scene scene = load_scene(name);
       const std::string path = fmt::format("{}/sweep-{}.json", results_dir, name);
-      if (!a.fresh && fs::exists(path)) {
-        fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
-        continue;
-      }
+      if (reuse(path, fs::exists(path))) continue;
       SweepOptions o;
       o.repeats = 5;
       o.reference = reference_engine();
       o.isolation = isolation;
-      write_sweep_files(run_sweep(scene, engines, o, run_context()), path,
+      write_sweep_files(run_sweep(load_scene(name), engines, o, run_context()), path,
                         fmt::format("{}/sweep-{}.csv", results_dir, name));
       fmt::print(stderr, "swept {}\n", name);
     }
     for (const std::string& name : suite.stress_scenes) {
-      const Scene scene = load_scene(name);
       const std::string path = fmt::format("{}/stress-{}.json", results_dir, name);
-      if (!a.fresh && fs::exists(path)) {
-        fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
-        continue;
-      }
+      if (reuse(path, fs::exists(path))) continue;
+      const Scene scene = load_scene(name);
       StressOptions o;
       o.profile = "all";
       o.levels = suite.stress_levels;
@@ -193,13 +189,8 @@ void report(const ReportArgs& a) {
       fmt::print(stderr, "stressed {}\n", name);
     }
     const std::string bench_path = results_dir + "/bench.json";
-    if (a.no_bench) {
-      fs::remove(bench_path);
-    } else if (!a.fresh && fs::exists(bench_path)) {
-      fmt::print(stderr, "reusing {} (--fresh runs it again)\n", bench_path);
-    } else {
-      run_bench(a, suite, bench_path);
-    }
+    if (a.no_bench) fs::remove(bench_path);
+    else if (!reuse(bench_path, fs::exists(bench_path))) run_bench(a, suite, bench_path);
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";
     context["scenes"] = suite.scenes;  // the report's order
