@@ -1,5 +1,4 @@
 #include "figures.h"
-#include "ordered_set.h"
 
 #include <algorithm>
 #include <cstdlib>
@@ -9,6 +8,8 @@
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "ordered_set.h"
 
 namespace ballbench {
 namespace {
