@@ -32,7 +32,12 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       row.error = b.value("error_message", "skipped");
     } else {
       row.ns_per_ball_step = b.at("ns_per_ball_step").get<double>();
-      if (b.contains("peak_rss_bytes_per_ball")) row.peak_rss_bytes_per_ball = b["peak_rss_bytes_per_ball"].get<double>();
+      auto optional = [&](const char* key, std::optional<double>& out) {
+        if (b.contains(key)) out = b[key].get<double>();
+      };
+      optional("steps_per_s", row.steps_per_s);
+      optional("peak_rss_bytes_per_ball", row.peak_rss_bytes_per_ball);
+      optional("engine_bytes_per_ball", row.engine_bytes_per_ball);
     }
     out.rows.push_back(std::move(row));
   }

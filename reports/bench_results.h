@@ -14,7 +14,9 @@ struct BenchRow {
   std::string engine, profile, scene;  // from the benchmark name step/ENGINE/PROFILE/SCENE/N
   long n = 0;
   double ns_per_ball_step = 0;         // the benchmark's counter
-  std::optional<double> peak_rss_bytes_per_ball;  // when the benchmark reports it
+  std::optional<double> steps_per_s;              // when the benchmark reports it
+  std::optional<double> peak_rss_bytes_per_ball;  // the process's peak resident set over n
+  std::optional<double> engine_bytes_per_ball;    // resident growth while the engine was built and run
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 

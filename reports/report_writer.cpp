@@ -251,6 +251,16 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
     if (!ratios.empty())
       put("\n`home` against the fastest external engine (its ns per ball-step over ours, same run): {}.\n",
           fmt::join(ratios, "; "));
+    // Our solver's largest run: rate and memory (issue 6's measure at 10^6 balls).
+    const BenchRow* largest = nullptr;
+    for (const BenchRow& r : bench.rows)
+      if (r.scene == scene && r.engine == "home" && r.error.empty() && (!largest || r.n > largest->n)) largest = &r;
+    if (largest && largest->steps_per_s)
+      put("\n`home` at {} balls: {:.1f} steps per second; memory {} bytes per ball (growth while the world was built "
+          "and run), peak resident set of the benchmark process {} bytes per ball.\n",
+          largest->n, *largest->steps_per_s,
+          largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
+          largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
     put("\n");
   }
 }
