@@ -158,6 +158,11 @@ TEST(Cli, NegativeStepsAndDt) {
 
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
+  expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");
+  expect_one_line_error(cli("report --out /tmp/bb_never --bench-binary /nonexistent"),
+                        "--bench-binary /nonexistent: not an executable file");
+  expect_one_line_error(cli("report --out /tmp/bb_never --bench-binary /bin/true --no-bench"), "excludes");
+  expect_one_line_error(cli("run --scene seed-box --engine home --sample-every 0"), "sample-every");
 }
 
 TEST(Cli, UnwritableTrajectory) {

@@ -116,7 +116,6 @@ std::string default_bench_binary() {
 void run_bench(const ReportArgs& a, const Suite& suite, const std::string& path) {
   const std::string bin = a.bench_binary.empty() ? default_bench_binary() : a.bench_binary;
   if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
-    if (!a.bench_binary.empty()) throw InputError(fmt::format("--bench-binary {}: not an executable file", bin));
     fmt::print(stderr, "scaling skipped: no step benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", bin);
     return;
   }
@@ -150,6 +149,8 @@ void run_bench(const ReportArgs& a, const Suite& suite, const std::string& path)
 }
 
 void report(const ReportArgs& a) {
+  if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
+    throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
   const std::string results_dir = a.out + "/results";
   const Suite suite = a.full ? full_suite() : quick_suite();
   if (a.fresh) {
@@ -232,11 +233,12 @@ void add_report(CLI::App& app) {
       cmd->add_flag("--render-only", a->render_only, "only rebuild REPORT.md from the results already in OUT/results");
   cmd->add_flag("--fresh", a->fresh, "run everything again, even what complete results in OUT/results already hold")
       ->excludes(render_only);
-  cmd->add_flag("--no-bench", a->no_bench, "leave the step benchmark (and the scaling section) out")
-      ->excludes(render_only);
+  auto* no_bench = cmd->add_flag("--no-bench", a->no_bench, "leave the step benchmark (and the scaling section) out")
+                       ->excludes(render_only);
   cmd->add_option("--bench-binary", a->bench_binary,
                   "the step benchmark to run (default: bench/ballbench_step_benchmark in this build)")
-      ->excludes(render_only);
+      ->excludes(render_only)
+      ->excludes(no_bench);
   cmd->callback([a] { report(*a); });
 }
 
