@@ -2,6 +2,7 @@
 // (core/solver/PERFORMANCE.md quotes these figures):
 //
 //   home/threads/T/SCENE/N           the per-ball loops on T threads (1 = serial)
+//   home/reorder/K/SCENE/N           balls renumbered in cell order every K steps (0 = never)
 //   home/shortcut/NAME/on|off/SCENE/N  a scene-wide shortcut taken (on) or the general path (off)
 //
 // Each shortcut is timed on a scene that allows it: the gas for no_gravity, equal_radii and
@@ -47,6 +48,7 @@ const Scene& one_ball() {
   static const Scene s = parse_scene(R"(
 name = "one-ball"
 dt = 0.01
+duration = 1.0
 restitution = 1.0
 [container]
 min = [-5.0, -5.0]
@@ -82,6 +84,17 @@ void register_all() {
           ->UseRealTime()
           ->MinTime(0.3);
     }
+  for (int every : {0, 16})
+    for (int n : {100'000, 1'000'000}) {
+      HomeSettings s;
+      s.threads = 1;
+      s.reorder_steps = every;
+      benchmark::RegisterBenchmark(fmt::format("home/reorder/{}/gas/{}", every, n).c_str(),
+                                   [s, n](benchmark::State& st) { run(st, gas(n), s); })
+          ->Unit(benchmark::kMicrosecond)
+          ->UseRealTime()
+          ->MinTime(1.0);
+    }
   struct Case {
     const char* name;
     bool HomeShortcuts::*field;
@@ -90,11 +103,11 @@ void register_all() {
     int n;
   };
   const std::vector<Case> cases = {
-      {"no_gravity", &HomeShortcuts::no_gravity, [] -> const Scene& { return gas(10'000); }, "gas", 10'000},
-      {"no_walls", &HomeShortcuts::no_walls, [] -> const Scene& { return open_gas(10'000); }, "open-gas", 10'000},
-      {"equal_radii", &HomeShortcuts::equal_radii, [] -> const Scene& { return gas(10'000); }, "gas", 10'000},
-      {"equal_masses", &HomeShortcuts::equal_masses, [] -> const Scene& { return gas(10'000); }, "gas", 10'000},
-      {"no_pairs", &HomeShortcuts::no_pairs, [] -> const Scene& { return one_ball(); }, "one-ball", 1},
+      {"no_gravity", &HomeShortcuts::no_gravity, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
+      {"no_walls", &HomeShortcuts::no_walls, []() -> const Scene& { return open_gas(10'000); }, "open-gas", 10'000},
+      {"equal_radii", &HomeShortcuts::equal_radii, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
+      {"equal_masses", &HomeShortcuts::equal_masses, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
+      {"no_pairs", &HomeShortcuts::no_pairs, []() -> const Scene& { return one_ball(); }, "one-ball", 1},
   };
   for (const Case& c : cases)
     for (bool on : {true, false}) {

@@ -2,7 +2,7 @@
 // A uniform grid over ball centres, rebuilt from scratch by a counting sort (O(n), no allocation
 // once warm). Two balls closer than `cell` are always in the same or adjacent cells, so candidate
 // pairs come from a 3 x 3 block. Used by metrics and the scene loader; the home solver has its own
-// copy of the idea specialised for its hot loop (core/solver/home.cpp).
+// copy of the idea specialised for its hot loop (core/solver/home_grid.h).
 #include <cmath>
 #include <cstdint>
 #include <vector>

@@ -156,7 +156,7 @@ void report(const ReportArgs& a) {
   if (a.fresh) {
     // What an earlier report left (a --full one has more parts) must not reach this one.
     std::error_code ec;
-    for (const std::string dir : {results_dir, a.out + "/figures"})
+    for (const std::string& dir : {results_dir, a.out + "/figures"})
       for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file()) fs::remove(e.path(), ec);
   }

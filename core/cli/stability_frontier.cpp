@@ -73,7 +73,9 @@ FrontierResult run_frontier(const Scene& base, const std::vector<const EngineEnt
   for (const EngineEntry* e : engines)
     for (const std::string& profile : profiles_for(*e, o.profile))
       for (const std::string& knob : o.knobs) {
-        FrontierRow row{e->info.name, profile, knob, knob == "dt" ? base.dt : knob == "count" ? base.n() : 1.0};
+        FrontierRow row;
+        row.engine = e->info.name, row.profile = profile, row.knob = knob;
+        row.base = knob == "dt" ? base.dt : knob == "count" ? base.n() : 1.0;
         double factor = 1;
         for (int level = 0; level < o.levels; ++level, factor *= 2) {
           options.profile = profile;

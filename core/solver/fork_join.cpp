@@ -13,7 +13,8 @@ ForkJoin::~ForkJoin() {
   for (std::thread& t : workers_) t.join();
 }
 
-// Waiting uses std::atomic wait/notify (a futex on Linux): no spinning on a shared machine.
+// Waiting uses std::atomic wait/notify (a futex on Linux). A wake-up costs ~7 us here; spinning
+// first (tried: 200 and 4000 pause loops) made it 1.6x and 12x slower on this shared 2-vCPU VM.
 void ForkJoin::run(const std::function<void(int)>& f) {
   if (workers_.empty()) return f(0);
   job_ = &f;

@@ -8,7 +8,6 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
-#include <unordered_map>
 #include <vector>
 
 #include <fmt/format.h>
@@ -17,14 +16,10 @@
 #include "input_error.h"
 #include "solver/fork_join.h"
 #include "solver/home_grid.h"
+#include "solver/warm_start.h"
 
-#include <chrono>
-#include <cstdio>
 namespace ballbench {
 namespace {
-struct PhaseTimer { double t[8] = {}; long steps = 0; const char* names[8] = {"kick+vbound","grid","walls","pairs","contacts","predict","events","advance"};
-  ~PhaseTimer() { if (steps) { for (int k=0;k<8;k++) fprintf(stderr, "%s %.1f ns/step-ball  ", names[k], t[k]/steps); fprintf(stderr, "\n"); } } };
-static double now_ns() { return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 // How much faster than the fastest ball at the start of the step a ball may become through
@@ -35,9 +30,9 @@ constexpr double kSpeedMargin = 1.5;
 constexpr int kClusterIterations = 200;
 // Fraction of its gap a speculative contact may close in one step (see add_contact).
 constexpr double kSpeculativeFraction = 0.5;
-// From this many balls the per-ball loops run on every core (measured: below it the hand-over
-// between threads costs more than the halved loop saves, PERFORMANCE.md).
-constexpr int kParallelBalls = 2'000;
+// From this many balls the per-ball loops run on every core. A hand-over costs ~7 us; at 10^4
+// balls (0.55 ms a step) two threads gained nothing measurable, at 10^5 up to 1.4x (PERFORMANCE.md).
+constexpr int kParallelBalls = 20'000;
 // Every this many steps the balls are renumbered in the grid's cell order, so that neighbours in
 // space are neighbours in memory (measured at 10^6 balls: PERFORMANCE.md). Balls drift by under a
 // cell per step, so the order stays good for a while; read() maps back to the scene's order.
@@ -124,19 +119,14 @@ class Home final : public Engine {
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
-    double t0 = now_ns();
     if (!sc_.no_gravity) {
       v_.col(0).array() += g_.x() * dt;
       v_.col(1).array() += g_.y() * dt;
     }
-    vbound_ = n_ > 0 ? kSpeedMargin * std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0;
-    double t1 = now_ns(); pt_.t[0] += (t1-t0)/n_;
     build_broad_phase(dt);
-    double t2 = now_ns(); pt_.t[1] += (t2-t1)/n_;
     v_tol_ = velocity_tolerance();
     contact_pass();
     drift();
-    pt_.steps++;
   }
 
   void read(State& out) const override {
@@ -277,16 +267,12 @@ class Home final : public Engine {
     if (sc_.no_walls) {
       std::fill(active_.begin(), active_.end(), 0);
     } else {
-      double a = now_ns();
       screen_walls(reach);
       for (const auto& near : wall_hits_)
         for (int i : near) add_wall_contacts(i, reach, dt_, true);
-      pt_.t[2] += (now_ns()-a)/n_;
     }
-    double tp = now_ns();
     if (!sc_.no_pairs) {
       sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
-      pt_.t[3] += (now_ns()-tp)/n_; tp = now_ns();
       const int* id = grid_.id();
       for (const auto& hits : pair_hits_)
         for (const auto& [a, b] : hits) {
@@ -296,16 +282,16 @@ class Home final : public Engine {
         }
     }
     for (Contact& c : contacts_) {
-      const auto it = warm_.find(contact_key(c));
-      if (it == warm_.end()) continue;
-      c.impulse = it->second;
+      const double impulse = warm_.find(c.i, c.j);
+      if (impulse < 0) continue;
+      c.impulse = impulse;
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
     }
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
-    warm_.clear();
+    warm_entries_.clear();
     for (const Contact& c : contacts_)
-      if (c.impulse > 0) warm_.emplace(contact_key(c), c.impulse);
-    pt_.t[4] += (now_ns()-tp)/n_;
+      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+    warm_.assign(n_, warm_entries_);
   }
 
   // Per ball, in parallel: `active` if it can reach the wall it moves towards within the step
@@ -349,30 +335,29 @@ class Home final : public Engine {
   }
 
   // One sweep over every pair of balls in adjacent cells, on the cell-ordered copy, in parallel
-  // over runs of cells. It records (a) the pairs within contact reach, in the order the contact
+  // over fixed runs of slots. It records (a) the pairs within contact reach, in the order the contact
   // pass has always added them, and (b) marks `active` both balls of every pair predict could find
   // an event for: approaching (b < 0) and not provably apart at the end of the step by the very
   // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
   // wall reach has no event this step (its predict would find none), so it is not predicted:
-  // results are bit-identical to predicting every ball. In a dilute gas ~2% of balls are active.
+  // results are bit-identical to predicting every ball. In the 10^4 gas 3.5% of balls are active.
   template <bool kEqualRadii>
   void screen_pairs(double reach) {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       pair_hits_[p].clear();
       const int n = grid_.balls();
-      screen_cells<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
+      screen_slots<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
                                 static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p]);
     });
   }
 
-  // The screen's kernel over slots [s0, s1). Everything it reads is copied into locals first, so
-  // the compiler knows the push_back cannot change them (measured: 1.6x faster than reading
-  // through the members). The rare outcome (a contact, or an approach within the step) takes one
-  // branch, decided by both tests at once.
+  // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
+  // contact, or an approach within the step) takes one branch, decided by both tests at once.
+  // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
   template <bool kEqualRadii>
-  void screen_cells(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
-    const double slop = s_.contact_slop, two_dt = 2.0, dt = dt_, rs0 = r0_ + r0_;
+  void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
+    const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
     const double* __restrict x = grid_.x();
     const double* __restrict y = grid_.y();
@@ -385,17 +370,16 @@ class Home final : public Engine {
       const double dx = x[a] - x[b], dy = y[a] - y[b];
       const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
       const double d2 = dx * dx + dy * dy, bb = dx * wx + dy * wy;
-      double rs, lim2, rs2;
+      double lim2, rs2;
       if constexpr (kEqualRadii) {
-        rs = rs0, lim2 = lim0_2, rs2 = rs0_2;
+        lim2 = lim0_2, rs2 = rs0_2;
       } else {
-        rs = r[a] + r[b];
+        const double rs = r[a] + r[b];
         const double lim = rs + std::max(slop * rs, reach);
         lim2 = lim * lim, rs2 = rs * rs;
       }
-      (void)rs;
       const bool contact = d2 < lim2 && d2 != 0;
-      const bool approach = bb < 0 && (d2 - rs2) + two_dt * bb * dt <= 0;
+      const bool approach = bb < 0 && (d2 - rs2) + two * bb * dt <= 0;
       if (contact | approach) [[unlikely]] {
         if (contact) hits.push_back({a, b});
         if (approach) {
@@ -405,12 +389,6 @@ class Home final : public Engine {
         }
       }
     });
-  }
-
-  // Pair (i, j) or ball i and wall -1 - k, as one number.
-  uint64_t contact_key(const Contact& c) const { return contact_key(c.i, c.j); }
-  uint64_t contact_key(int i, int j) const {
-    return static_cast<uint64_t>(i) * (static_cast<uint64_t>(n_) + 4) + static_cast<uint64_t>(j + 4);
   }
 
   // Renumbers the balls in the cell order of the last grid (slot s becomes ball s). Everything
@@ -439,14 +417,11 @@ class Home final : public Engine {
     if (inv_m_.size()) permute(inv_m_);
     permute(ext_);
     permute(count_);
-    std::unordered_map<uint64_t, double> warm;
-    warm.reserve(warm_.size());
-    const uint64_t stride = static_cast<uint64_t>(n_) + 4;
-    for (const auto& [key, impulse] : warm_) {
-      const int i = static_cast<int>(key / stride), j = static_cast<int>(key % stride) - 4;
-      warm.emplace(contact_key(inv_[i], j >= 0 ? inv_[j] : j), impulse);
-    }
-    warm_.swap(warm);
+    warm_entries_.clear();
+    warm_.for_each([&](const WarmStart::Entry& e) {
+      warm_entries_.push_back({inv_[e.i], e.j >= 0 ? inv_[e.j] : e.j, e.impulse});
+    });
+    warm_.assign(n_, warm_entries_);
   }
 
   // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
@@ -498,10 +473,8 @@ class Home final : public Engine {
   void drift() {
     std::fill(t_local_.begin(), t_local_.end(), 0.0);
     queue_.clear();
-    double a = now_ns();
     for (int i = 0; i < n_; ++i)
       if (active_[i]) predict(i);
-    double b = now_ns(); pt_.t[5] += (b-a)/n_;
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
@@ -531,14 +504,12 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
-    double c = now_ns(); pt_.t[6] += (c-b)/n_;
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
       for (int i = b; i < e; ++i) advance(i, dt_);
     });
-    pt_.t[7] += (now_ns()-c)/n_;
   }
 
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
@@ -647,7 +618,6 @@ class Home final : public Engine {
     v_(i, axis) = -e_ * v_(i, axis);
   }
 
-  PhaseTimer pt_;
   HomeSettings s_;
   HomeShortcuts sc_;  // the shortcuts taken, fixed at construction
   int reorder_;       // renumber the balls in cell order every this many steps (0: never)
@@ -656,7 +626,7 @@ class Home final : public Engine {
   Eigen::Vector2d g_;
   Container box_;
   bool walls_;
-  double r0_, inv_m0_;             // ball 0's radius and inverse mass: everyone's, if equal
+  double r0_, inv_m0_;            // ball 0's radius and inverse mass: everyone's, if equal
   Eigen::VectorXd r_, inv_m_;     // per ball; empty when the shortcut makes them equal
   double rmax_;
   Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
@@ -674,13 +644,14 @@ class Home final : public Engine {
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)
   double vbound_ = 0;             // speed the broad phase allows for this step (m/s)
   double v_tol_ = 0;              // this step's round-off approach speed (m/s), see predict
-  HomeGrid grid_;
+  HomeGrid grid_;                 // built on the positions at the start of the step
   long steps_ = 0;                // steps taken
   std::vector<int> ext_;          // ball -> its index in the scene (balls are renumbered, see reorder_by_cell)
   std::vector<int> inv_;          // scratch: old ball number -> new
-  Eigen::MatrixX2d scratch_;      // scratch for permuting rows                 // built on the positions at the start of the step
+  Eigen::MatrixX2d scratch_;      // scratch for permuting rows
   std::vector<Contact> contacts_;
-  std::unordered_map<uint64_t, double> warm_;  // contact key -> impulse at the end of the last pass
+  WarmStart warm_;                // impulses at the end of the last contact pass
+  std::vector<WarmStart::Entry> warm_entries_;  // scratch for rebuilding warm_
   std::vector<Event> queue_;      // a min-heap on t, see push_event
 };
 

@@ -10,8 +10,8 @@ namespace ballbench {
 
 // Scene-wide shortcuts, each decided once when the world is built, from Scene::features(), never
 // per ball per step. A field says the shortcut may be taken; it is taken only when the scene allows
-// it. Tests (tests/test_home_specialisations.cpp) and benchmarks (bench/specialisation_benchmark.cpp)
-// clear a field to run the general path on the same scene; what each saves: PERFORMANCE.md.
+// it. Tests (tests/test_home_specialisations.cpp) and benchmarks (bench/home_benchmark.cpp)
+// clear a field to run the general path on the same scene; what each saves: core/solver/PERFORMANCE.md.
 struct HomeShortcuts {
   bool no_gravity = true;    // no kick, resting speed 0
   bool no_walls = true;      // no per-ball wall screen or wall contacts
@@ -40,7 +40,7 @@ struct HomeSettings {
   // Internal, not user settings (not in settings(), not readable with --set): they change how
   // fast, never what, the solver computes.
   HomeShortcuts allow;  // shortcuts that may be taken (all, unless a test or benchmark clears one)
-  int threads = 0;      // threads for the per-ball loops; 0: all cores from 2 000 balls, else 1
+  int threads = 0;      // threads for the per-ball loops; 0: all cores from 20 000 balls, else 1
   int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 50 000 balls
 };
 

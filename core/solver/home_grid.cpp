@@ -45,15 +45,16 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
     const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
     for (long i = b; i < e; ++i) cell_of_[i] = cell_y(py[i]) * nx_ + cell_x(px[i]);
   });
-  // Counting sort, stable: within a cell, balls keep the scene's order.
+  // Counting sort, stable: within a cell, balls keep their order. Counts, then running sums (each
+  // cell's end), then balls placed from the last backwards, which leaves each cell's first slot
+  // behind: no second copy of the cell array.
   start_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
-  for (int i = 0; i < n; ++i) ++start_[cell_of_[i] + 1];
+  for (int i = 0; i < n; ++i) ++start_[cell_of_[i]];
   for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  fill_.assign(start_.begin(), start_.end() - 1);
   id_.resize(n);
   cell_sorted_.resize(n);
-  for (int i = 0; i < n; ++i) {
-    const int s = fill_[cell_of_[i]]++;
+  for (int i = n - 1; i >= 0; --i) {
+    const int s = --start_[cell_of_[i]];
     id_[s] = i, cell_sorted_[s] = cell_of_[i];
   }
 

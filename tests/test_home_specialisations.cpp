@@ -1,0 +1,141 @@
+// The home solver's scene-wide shortcuts (HomeShortcuts, core/solver/home.h) and its other speed
+// choices change how fast it runs, never what it computes: each is run against the general path on
+// the same scene and must give the same positions and velocities. The shortcuts and threading are
+// exact by construction (same operations on the same numbers), so the comparison is exact;
+// renumbering the balls reorders the contact solve and simultaneous events, so it is compared on
+// an elastic gas within round-off.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <ostream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "scene_loader.h"
+#include "solver/home.h"
+
+namespace ballbench {
+namespace {
+
+// n equal balls in a box of area 5 n, like the benchmark's gas; `extra` is appended to the TOML
+// (gravity, restitution, another container).
+Scene gas(int n, const std::string& extra = "", const std::string& container = "") {
+  const double half = 0.5 * std::sqrt(5.0 * n);
+  const std::string box =
+      container.empty() ? fmt::format("[container]\nmin = [{0}, {0}]\nmax = [{1}, {1}]\n", -half, half) : container;
+  return parse_scene(fmt::format(R"(
+name = "gas"
+dt = 0.01
+duration = 1.0
+{0}
+{1}
+[random]
+count = {2}
+radius = 0.25
+pos_min = [{3}, {3}]
+pos_max = [{4}, {4}]
+vel_min = [-12.5, -12.5]
+vel_max = [12.5, 12.5]
+seed = 3
+)",
+                                 extra, box, n, -half + 0.3, half - 0.3),
+                     "gas");
+}
+
+// The same balls, with every other one twice as large and twice as heavy.
+Scene mixed(Scene s) {
+  for (int i = 0; i < s.n(); i += 2) s.radius(i) *= 1.2, s.mass(i) *= 2.0;
+  return s;
+}
+
+State run(const Scene& scene, const HomeSettings& settings, int steps) {
+  std::unique_ptr<Engine> e = make_home(scene, settings);
+  for (int k = 0; k < steps; ++k) e->step(scene.dt);
+  State s;
+  e->read(s);
+  return s;
+}
+
+HomeSettings general() {
+  HomeSettings s;
+  s.allow = HomeShortcuts{false, false, false, false, false};
+  return s;
+}
+
+// Exactly equal (== on doubles, so 0 and -0 agree: the general path adds a zero kick, which turns
+// a -0 velocity into +0).
+void expect_same(const State& a, const State& b) {
+  ASSERT_EQ(a.n(), b.n());
+  int differ = 0;
+  for (int i = 0; i < a.n(); ++i)
+    for (int k = 0; k < 2; ++k) differ += a.pos(i, k) != b.pos(i, k) || a.vel(i, k) != b.vel(i, k);
+  EXPECT_EQ(differ, 0) << "of " << 4 * a.n() << " coordinates";
+}
+
+struct Case {
+  const char* name;
+  bool HomeShortcuts::*field;
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
+class HomeShortcut : public ::testing::TestWithParam<Case> {};
+
+// Each shortcut alone off, on a scene that allows it, and every shortcut off, against all on.
+TEST_P(HomeShortcut, GivesTheGeneralPathsResults) {
+  const Case c = GetParam();
+  const std::string name = c.name;
+  Scene scene = gas(600, "restitution = 1.0");
+  if (name == "no_walls") scene = gas(600, "restitution = 1.0", "[container]\nkind = \"none\"\n");
+  if (name == "no_pairs") scene = gas(1, "restitution = 1.0");
+  HomeSettings off;
+  off.allow.*c.field = false;
+  const State fast = run(scene, {}, 200);
+  expect_same(fast, run(scene, off, 200));
+  expect_same(fast, run(scene, general(), 200));
+}
+
+INSTANTIATE_TEST_SUITE_P(Home, HomeShortcut,
+                         ::testing::Values(Case{"no_gravity", &HomeShortcuts::no_gravity},
+                                           Case{"no_walls", &HomeShortcuts::no_walls},
+                                           Case{"equal_radii", &HomeShortcuts::equal_radii},
+                                           Case{"equal_masses", &HomeShortcuts::equal_masses},
+                                           Case{"no_pairs", &HomeShortcuts::no_pairs}),
+                         [](const ::testing::TestParamInfo<Case>& info) { return std::string(info.param.name); });
+
+// A scene that allows none of the shortcuts runs the general path either way.
+TEST(HomeShortcuts, SceneWithoutThemIsUnchanged) {
+  const Scene scene = mixed(gas(400, "gravity = [0.0, -100.0]\nrestitution = 0.9"));
+  expect_same(run(scene, {}, 150), run(scene, general(), 150));
+}
+
+// The per-ball loops on 1, 2 or 3 threads: fixed contiguous ranges, results concatenated in order,
+// no floating-point reduction across threads, so the same bits (a gas and a settling pile).
+TEST(HomeThreads, SameResultsOnAnyNumberOfThreads) {
+  for (const Scene& scene : {gas(3000, "restitution = 1.0"), gas(1000, "gravity = [0.0, -100.0]\nrestitution = 0.99"),
+                             mixed(gas(1000, "gravity = [0.0, -100.0]\nrestitution = 0.9"))}) {
+    HomeSettings one, two, three;
+    one.threads = 1, two.threads = 2, three.threads = 3;
+    const State a = run(scene, one, 60);
+    expect_same(a, run(scene, two, 60));
+    expect_same(a, run(scene, three, 60));
+  }
+}
+
+// Renumbering the balls in cell order (every step here, the most it can be done) is invisible in
+// read(): the scene's order comes back. On an elastic gas the trajectory is the same to round-off
+// over a short run (simultaneous events may be taken in another order).
+TEST(HomeReorder, ReadKeepsTheScenesOrder) {
+  const Scene scene = gas(2000, "restitution = 1.0");
+  HomeSettings never, every;
+  never.reorder_steps = 0, every.reorder_steps = 1;
+  const State a = run(scene, never, 40), b = run(scene, every, 40);
+  ASSERT_EQ(a.n(), b.n());
+  double worst = 0;
+  for (int i = 0; i < a.n(); ++i) worst = std::max(worst, (a.pos.row(i) - b.pos.row(i)).norm());
+  EXPECT_LT(worst, 1e-9);
+}
+
+}  // namespace
+}  // namespace ballbench
