@@ -392,7 +392,9 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       "from the straight line): they passed through each other. A resolved bounce never counts.\n",
       100 * (1 - cfg.contact_tolerance));
   put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
-      "than {:.0f}% of its radius) for more than {} consecutive samples; one event per episode.\n",
+      "than {:.0f}% of its radius) for more than {} consecutive samples, and not moving out (apart, or away from the "
+      "wall) at a sample past that; one event per episode. A pair placed overlapping that is moving apart is leaving, "
+      "not stuck.\n",
       100 * cfg.contact_tolerance, 100 * cfg.contact_tolerance, cfg.stuck_samples);
   put("- **penetration max / mean**: overlap depth divided by the radius (the smaller one for a pair), max and mean "
       "over every overlapping contact in every sample.\n");

@@ -40,6 +40,16 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
     else:
         ref = min(-(g[0] * x + g[1] * y) for x, y, _, _ in samples[0])
 
+    def advance(run, leaving):
+        # A run of deep overlap: counted once, when longer than `stuck` samples and not moving out;
+        # negative once counted.
+        if run < 0:
+            return run - 1, 0
+        run += 1
+        if run > stuck and not leaving:
+            return -run, 1
+        return run, 0
+
     def energy(s):
         return sum(m * (0.5 * (vx * vx + vy * vy) + (-(g[0] * x + g[1] * y) - ref)) for m, (x, y, vx, vy) in zip(masses, s))
 
@@ -73,9 +83,9 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
                     rel = depth / min(radii[i], radii[j])
                     pen_max, pen_sum, pen_count = max(pen_max, rel), pen_sum + rel, pen_count + 1
                     if depth > tol * rs:
-                        new_run[(i, j)] = pair_run[(i, j)] + 1
-                        if new_run[(i, j)] == stuck + 1:
-                            out["sticking_pair"] += 1
+                        leaving = dx * (s[i][2] - s[j][2]) + dy * (s[i][3] - s[j][3]) > 0
+                        new_run[(i, j)], counted = advance(pair_run[(i, j)], leaving)
+                        out["sticking_pair"] += counted
                 if prev is not None:
                     ax, ay = prev[i][0] - prev[j][0], prev[i][1] - prev[j][1]
                     if math.hypot(ax, ay) >= rs and d >= rs:
@@ -91,13 +101,18 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
         pair_run = new_run
         if is_box:
             for i, (x, y, _, _) in enumerate(s):
-                gap = min(x - box["min"][0], box["max"][0] - x, y - box["min"][1], box["max"][1] - y)
+                vx, vy = s[i][2], s[i][3]
+                # The nearest wall (the first of equal gaps) and the speed along its inward normal.
+                gap, inward = min([(x - box["min"][0], vx), (box["max"][0] - x, -vx), (y - box["min"][1], vy),
+                                   (box["max"][1] - y, -vy)], key=lambda g: g[0])
                 depth = radii[i] - gap
                 if depth > 0:
                     pen_max, pen_sum, pen_count = max(pen_max, depth / radii[i]), pen_sum + depth / radii[i], pen_count + 1
-                wall_run[i] = wall_run[i] + 1 if depth > tol * radii[i] else 0
-                if wall_run[i] == stuck + 1:
-                    out["sticking_wall"] += 1
+                if depth > tol * radii[i]:
+                    wall_run[i], counted = advance(wall_run[i], inward > 0)
+                    out["sticking_wall"] += counted
+                else:
+                    wall_run[i] = 0
         prev = s
     out["penetration_max"] = pen_max
     out["penetration_mean"] = pen_sum / pen_count if pen_count else 0.0

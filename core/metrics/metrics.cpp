@@ -10,7 +10,11 @@
 namespace ballbench {
 
 MetricsAccumulator::MetricsAccumulator(const Scene& scene, MetricsConfig config)
-    : scene_(scene), cfg_(config), sticking_(scene.n(), config.stuck_samples), deep_in_wall_(scene.n(), 0) {
+    : scene_(scene),
+      cfg_(config),
+      sticking_(scene.n(), config.stuck_samples),
+      deep_in_wall_(scene.n(), 0),
+      wall_leaving_(scene.n(), 0) {
   m_.energy.reference = energy_reference(scene);
 }
 
@@ -31,19 +35,32 @@ void MetricsAccumulator::observe(const State& s) {
   // Overlaps: penetration (every depth) and sticking (deeper than the tolerance).
   overlapping_pairs(s.pos, scene_.radius, grid_, overlaps_);
   deep_.clear();
+  deep_leaving_.clear();
   for (const Overlap& o : overlaps_) {
     const double rel = o.depth / std::min(scene_.radius(o.i), scene_.radius(o.j));
     penetration_sum_ += rel, ++penetration_count_;
     m_.penetration_max = std::max(m_.penetration_max, rel);
-    if (o.depth > cfg_.contact_tolerance * (scene_.radius(o.i) + scene_.radius(o.j))) deep_.push_back(o);
+    if (o.depth > cfg_.contact_tolerance * (scene_.radius(o.i) + scene_.radius(o.j))) {
+      deep_.push_back(o);
+      const Eigen::Vector2d d = (s.pos.row(o.i) - s.pos.row(o.j)).transpose();
+      const Eigen::Vector2d w = (s.vel.row(o.i) - s.vel.row(o.j)).transpose();
+      deep_leaving_.push_back(d.dot(w) > 0);
+    }
   }
   if (scene_.container.kind == ContainerKind::Box) {
     const Container& box = scene_.container;
     for (int i = 0; i < s.n(); ++i) {
       const double r = scene_.radius(i);
-      const double gap = std::min({s.pos(i, 0) - box.min.x(), box.max.x() - s.pos(i, 0), s.pos(i, 1) - box.min.y(),
-                                   box.max.y() - s.pos(i, 1)});
+      // The nearest wall: its gap, and the ball's speed along that wall's inward normal.
+      const double gaps[4] = {s.pos(i, 0) - box.min.x(), box.max.x() - s.pos(i, 0), s.pos(i, 1) - box.min.y(),
+                              box.max.y() - s.pos(i, 1)};
+      const double inward[4] = {s.vel(i, 0), -s.vel(i, 0), s.vel(i, 1), -s.vel(i, 1)};
+      int k = 0;
+      for (int w = 1; w < 4; ++w)
+        if (gaps[w] < gaps[k]) k = w;
+      const double gap = gaps[k];
       const double depth = r - gap;  // > 0: the ball is in a wall
+      wall_leaving_[i] = inward[k] > 0;
       if (depth > 0) {
         penetration_sum_ += depth / r, ++penetration_count_;
         m_.penetration_max = std::max(m_.penetration_max, depth / r);
@@ -51,7 +68,7 @@ void MetricsAccumulator::observe(const State& s) {
       deep_in_wall_[i] = depth > cfg_.contact_tolerance * r;
     }
   }
-  sticking_.observe(deep_, deep_in_wall_);
+  sticking_.observe(deep_, deep_leaving_, deep_in_wall_, wall_leaving_);
   m_.sticking_pair = sticking_.pair_events();
   m_.sticking_wall = sticking_.wall_events();
   m_.penetration_mean = penetration_count_ ? penetration_sum_ / penetration_count_ : 0.0;

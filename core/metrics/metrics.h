@@ -75,7 +75,7 @@ class MetricsAccumulator {
   UniformGrid grid_;
   PassthroughScratch passthrough_;
   std::vector<Overlap> overlaps_, deep_;
-  std::vector<char> deep_in_wall_;
+  std::vector<char> deep_in_wall_, wall_leaving_, deep_leaving_;
   double penetration_sum_ = 0;
   long penetration_count_ = 0;
   double ke0_ = 0;

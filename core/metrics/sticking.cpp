@@ -2,21 +2,29 @@
 
 namespace ballbench {
 
-void StickingTracker::observe(const std::vector<Overlap>& deep_pairs, const std::vector<char>& deep_in_wall) {
+int StickingTracker::advance(int run, bool leaving, int& events) const {
+  if (run < 0) return run - 1;  // counted already: the episode goes on
+  ++run;
+  if (run > max_samples_ && !leaving) {
+    ++events;
+    return -run;
+  }
+  return run;
+}
+
+void StickingTracker::observe(const std::vector<Overlap>& deep_pairs, const std::vector<char>& pair_leaving,
+                              const std::vector<char>& deep_in_wall, const std::vector<char>& wall_leaving) {
   const long long n = static_cast<long long>(wall_run_.size());
   next_run_.clear();
-  for (const Overlap& o : deep_pairs) {
+  for (size_t k = 0; k < deep_pairs.size(); ++k) {
+    const Overlap& o = deep_pairs[k];
     const long long key = o.i * n + o.j;
     const auto it = pair_run_.find(key);
-    const int run = (it == pair_run_.end() ? 0 : it->second) + 1;
-    if (run == max_samples_ + 1) ++pair_events_;
-    next_run_[key] = run;
+    next_run_[key] = advance(it == pair_run_.end() ? 0 : it->second, pair_leaving[k], pair_events_);
   }
   pair_run_.swap(next_run_);  // pairs no longer overlapping end their run
-  for (size_t i = 0; i < wall_run_.size(); ++i) {
-    wall_run_[i] = deep_in_wall[i] ? wall_run_[i] + 1 : 0;
-    if (wall_run_[i] == max_samples_ + 1) ++wall_events_;
-  }
+  for (size_t i = 0; i < wall_run_.size(); ++i)
+    wall_run_[i] = deep_in_wall[i] ? advance(wall_run_[i], wall_leaving[i], wall_events_) : 0;
 }
 
 }  // namespace ballbench
