@@ -125,6 +125,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
   std::vector<double> dts;
   for (const SweepPoint& p : sw.points)
     if (p.knob == "dt") add_once(dts, p.dt);
+  double ymax = 0;  // the largest error drawn
   std::string plot;
   for (size_t k = 0; k < order.size(); ++k) {
     const std::string name = slug(order[k]);
@@ -136,6 +137,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
       (p.knob == "dt" ? line : knobs) << 1e3 * p.engine_s_median() << ' ' << p.pos_rms << ' ' << 1e3 * *lo << ' '
                                       << 1e3 * *hi << '\n';
       drawn += p.knob == "dt";
+      ymax = std::max(ymax, p.pos_rms);
     }
     line << "\n", knobs << "\n";  // never empty: gnuplot rejects a data file without points
     if (drawn == 0) continue;
@@ -143,20 +145,27 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
                         "'{}-{}-knobs.dat' using 1:2 with points {} pt 6 ps 1.2 notitle",
                         plot.empty() ? "" : ", ", base, name, style(k), order[k], base, name, style(k));
   }
+  // Two panels: every point, and the top two decades of error, where engines that differ by a
+  // factor of two would otherwise share a pixel when another engine is at round-off.
   std::ofstream gp(dir / (base + ".gp"));
-  gp << "set terminal pngcairo size 900,600 font 'sans,10'\n"
-     << "set output '" << base << ".png'\n"
-     << "set title 'Work against precision, " << sw.scene << ": error at t = " << sw.horizon << " s'\n"
+  gp << "set terminal pngcairo size 1300,560 font 'sans,10'\n"
+     << "set output '" << base << ".png'\nset multiplot layout 1,2\n"
      << "set xlabel 'engine time to t = " << sw.horizon << " s (ms, median of " << sw.repeats << ")'\n"
      << "set ylabel 'position RMS error against " << sw.reference << " (m)'\n"
-     << "set logscale xy\nset key outside right\nset grid\n"
-     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n';
+     << "set logscale xy\nset grid\nset key bottom right font ',8'\n"
+     << "set title 'Work against precision, " << sw.scene << ": error at t = " << sw.horizon << " s'\n"
+     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n'
+     << "set title 'The same, top two decades of error'\nunset key\n"
+     << fmt::format("set yrange [{}:{}]\n", ymax > 0 ? ymax / 100 : 1e-3, ymax > 0 ? ymax * 2 : 1.0)
+     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n'
+     << "unset multiplot\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
   return {"work-precision", sw.scene, "figures/" + base + ".png",
           fmt::format("Work against precision on {}: each line is one engine and profile at the step sizes {} s "
                       "(cost grows as dt shrinks), x bars the spread of {} timing runs; open circles are the same "
-                      "engine with one of its own knobs changed at the scene's dt (table below). Lower left is better.",
+                      "engine with one of its own knobs changed at the scene's dt (table below); the right panel "
+                      "zooms on the top two decades of error. Lower left is better.",
                       sw.scene, fmt::join(dts, ", "), sw.repeats)};
 }
 
