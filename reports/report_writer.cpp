@@ -389,7 +389,8 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("- **tunnelling pair**: pairs apart in two consecutive samples whose relative motion, taken as a straight line "
       "between them, came closer than {:.0f}% of their radius sum less (|dv_i| + |dv_j|) h / 4 (dv: each ball's change of "
       "velocity between the samples, h: the time between them; a path bent once by a collision strays at most that far "
-      "from the straight line): they passed through each other. A resolved bounce never counts.\n",
+      "from the straight line): they passed through each other. A resolved bounce never counts; a ball that collides "
+      "several times within one sample interval can still fool the test, so `exact`'s count on a scene is the floor.\n",
       100 * (1 - cfg.contact_tolerance));
   put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
       "than {:.0f}% of its radius) for more than {} consecutive samples, and not moving out (apart, or away from the "
