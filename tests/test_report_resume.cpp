@@ -109,6 +109,26 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
   EXPECT_FALSE(reused("seed-box")) << err_;
 }
 
+TEST_F(ReportResume, FullRunsEveryPartOfTheCompleteEvidence) {
+  // Tiny stand-ins for the full suite's other scenes.
+  for (const char* name : {"bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile"})
+    fs::copy_file(root_ / "scenarios" / "seed-box.toml", root_ / "scenarios" / (std::string(name) + ".toml"));
+  for (const char* name : {"bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile"}) {
+    std::string text = slurp(root_ / "scenarios" / (std::string(name) + ".toml"));
+    text.replace(text.find("seed-box"), 8, name);
+    std::ofstream(root_ / "scenarios" / (std::string(name) + ".toml")) << text;
+  }
+  ASSERT_EQ(report("--full"), 0) << err_;
+  const std::string md = slurp(out() / "REPORT.md");
+  for (const char* want : {"## Scene `pile`", "## Work against precision: `seed-bowl`", "## Stability frontier: `seed-bowl`"})
+    EXPECT_NE(md.find(want), std::string::npos) << want;
+  EXPECT_NE(slurp(out() / "results" / "run.json").find("\"suite\": \"full\""), std::string::npos);
+  // A quick report afresh leaves none of the full one's parts behind.
+  ASSERT_EQ(report("--fresh"), 0) << err_;
+  EXPECT_FALSE(fs::exists(results("pile")));
+  EXPECT_FALSE(fs::exists(out() / "results" / "sweep-seed-bowl.json"));
+}
+
 TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
   ASSERT_EQ(report(), 0) << err_;
   // The scene changed since (more steps): its old results no longer describe it.
