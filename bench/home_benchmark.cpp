@@ -75,7 +75,7 @@ void run(benchmark::State& state, const Scene& scene, const HomeSettings& settin
 
 void register_all() {
   for (int threads : {1, 2})
-    for (int n : {10'000, 100'000, 1'000'000}) {
+    for (int n : {10'000, 20'000, 50'000, 100'000, 1'000'000}) {
       HomeSettings s;
       s.threads = threads;
       benchmark::RegisterBenchmark(fmt::format("home/threads/{}/gas/{}", threads, n).c_str(),
@@ -85,7 +85,7 @@ void register_all() {
           ->MinTime(0.3);
     }
   for (int every : {0, 16})
-    for (int n : {100'000, 1'000'000}) {
+    for (int n : {10'000, 100'000, 1'000'000}) {
       HomeSettings s;
       s.threads = 1;
       s.reorder_steps = every;

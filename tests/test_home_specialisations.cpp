@@ -111,7 +111,9 @@ TEST(HomeShortcuts, SceneWithoutThemIsUnchanged) {
 }
 
 // The per-ball loops on 1, 2 or 3 threads: fixed contiguous ranges, results concatenated in order,
-// no floating-point reduction across threads, so the same bits (a gas and a settling pile).
+// no floating-point reduction across threads, so the same bits (a gas and a settling pile). This
+// covers the parallel counting sort of the grid (per-part histograms; the same slot order as the
+// serial sort) and the first predictions of a step (queued in ball order) too.
 TEST(HomeThreads, SameResultsOnAnyNumberOfThreads) {
   for (const Scene& scene : {gas(3000, "restitution = 1.0"), gas(1000, "gravity = [0.0, -100.0]\nrestitution = 0.99"),
                              mixed(gas(1000, "gravity = [0.0, -100.0]\nrestitution = 0.9"))}) {

@@ -30,18 +30,19 @@ constexpr double kSpeedMargin = 1.5;
 constexpr int kClusterIterations = 200;
 // Fraction of its gap a speculative contact may close in one step (see add_contact).
 constexpr double kSpeculativeFraction = 0.5;
-// From this many balls the per-ball loops run on every core. A hand-over costs ~7 us; at 10^4
-// balls (0.55 ms a step) two threads gained nothing measurable, at 10^5 up to 1.4x (PERFORMANCE.md).
-constexpr int kParallelBalls = 20'000;
+// From this many balls the per-ball loops run on every core. A hand-over costs ~7 us and a step
+// has about a dozen; two threads lost at 10^4, 2 x 10^4 and 5 x 10^4 balls in every run, were a
+// toss-up at 10^5 and won at 10^6 (PERFORMANCE.md, round 2).
+constexpr int kParallelBalls = 100'000;
 // Every this many steps the balls are renumbered in the grid's cell order, so that neighbours in
-// space are neighbours in memory (measured at 10^6 balls: PERFORMANCE.md). Balls drift by under a
-// cell per step, so the order stays good for a while; read() maps back to the scene's order.
-// Only from kReorderBalls balls: below, everything fits in cache and it saves nothing, and
-// renumbering changes the order of the contact solve, to which seed-bowl is sensitive (a known
-// issue, PERFORMANCE.md: permuting its balls in the scene file makes it diverge, with or without
-// renumbering).
+// space are neighbours in memory (measured at 10^4 .. 10^6 balls: PERFORMANCE.md). Balls drift by
+// under a cell per step, so the order stays good for a while; read() maps back to the scene's order.
+// Only from kReorderBalls balls: it was measured to pay from 10^4 (not below), and renumbering
+// changes the order of the contact solve, to which seed-bowl is sensitive (a known issue,
+// PERFORMANCE.md: permuting its balls in the scene file makes it diverge, with or without
+// renumbering); every scene in tests/ and the regression suite is far below 10^4 balls.
 constexpr int kReorderSteps = 16;
-constexpr int kReorderBalls = 50'000;
+constexpr int kReorderBalls = 10'000;
 
 int reorder_steps(int n, int requested) {
   if (requested >= 0) return requested;
@@ -103,7 +104,8 @@ class Home final : public Engine {
         active_(n_, 0),
         pool_(thread_count(n_, s.threads)),
         pair_hits_(pool_.parts()),
-        wall_hits_(pool_.parts()) {
+        wall_hits_(pool_.parts()),
+        first_events_(pool_.parts()) {
     // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
     if (!sc_.equal_radii) r_ = scene.radius;
     if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
@@ -383,7 +385,8 @@ class Home final : public Engine {
         lim2 = lim * lim, rs2 = rs * rs;
       }
       const bool contact = d2 < lim2 && d2 != 0;
-      const bool approach = bb < 0 && (d2 - rs2) + two * bb * dt <= 0;
+      // & rather than &&: the sign of b is a coin toss per pair, a branch on it mispredicts half the time.
+      const bool approach = (bb < 0) & ((d2 - rs2) + two * bb * dt <= 0);
       if (contact | approach) [[unlikely]] {
         if (contact) hits.push_back({a, b});
         if (approach) {
@@ -477,8 +480,25 @@ class Home final : public Engine {
   void drift() {
     std::fill(t_local_.begin(), t_local_.end(), 0.0);
     queue_.clear();
-    for (int i = 0; i < n_; ++i)
-      if (active_[i]) predict(i);
+    // The active balls' predictions read only the state at the start of the step: on several
+    // parts each predicts its fixed range of balls, and the events are queued in ball order, as
+    // predicting one ball after the other would queue them.
+    const int parts = pool_.parts();
+    if (parts == 1) {
+      for (int i = 0; i < n_; ++i)
+        if (active_[i]) predict(i);
+    } else {
+      pool_.run([&](int p) {
+        first_events_[p].clear();
+        const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
+        const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+        Event ev;
+        for (int i = b; i < e; ++i)
+          if (active_[i] && next_event(i, ev)) first_events_[p].push_back(ev);
+      });
+      for (const auto& events : first_events_)
+        for (const Event& ev : events) push_event(ev);
+    }
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
@@ -508,7 +528,6 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
-    const int parts = pool_.parts();
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
@@ -561,7 +580,14 @@ class Home final : public Engine {
   // ball and wall) approaching so slowly that it would close less than the slop over the step is
   // not an event: that is round-off, and the next contact pass takes care of it.
   void predict(int i) {
-    Event best{kNever, i, 0, count_[i], 0};
+    Event best;
+    if (next_event(i, best)) push_event(best);
+  }
+
+  // Ball i's earliest collision before the end of the step, in `best`; false if there is none.
+  // Reads the state only, so the first predictions of a step may run in parallel (see drift).
+  bool next_event(int i, Event& best) const {
+    best = {kNever, i, 0, count_[i], 0};
     const double ti = t_local_[i];
     const double v_tol = v_tol_;
     if (walls_)
@@ -583,13 +609,13 @@ class Home final : public Engine {
       const double dy = (p_(i, 1) + v_(i, 1) * (t0 - ti)) - (p_(j, 1) + v_(j, 1) * (t0 - t_local_[j]));
       const double wx = v_(i, 0) - v_(j, 0), wy = v_(i, 1) - v_(j, 1);
       const double b = dx * wx + dy * wy;  // < 0: approaching
-      if (b >= 0) return;
       const double d2 = dx * dx + dy * dy;
       const double rs = radius(i) + radius(j);
       const double c = d2 - rs * rs;
-      // |d(t)|^2 = d2 + 2 b t + a t^2 >= d2 + 2 b t (a >= 0): if even that stays above rs^2 until
-      // the earliest event found so far (or the step's end), no root is needed.
-      if (c + 2.0 * b * (std::min(best.t, dt_) - t0) > 0) return;
+      // Not approaching, or: |d(t)|^2 = d2 + 2 b t + a t^2 >= d2 + 2 b t (a >= 0), and even that
+      // stays above rs^2 until the earliest event found so far (or the step's end): no root is
+      // needed. One branch for both (| not ||): the sign of b is a coin toss per pair.
+      if ((b >= 0) | (c + 2.0 * b * (std::min(best.t, dt_) - t0) > 0)) return;
       const double touch = rs + touch_pair(i, j);
       double t;
       if (d2 < touch * touch) {
@@ -603,7 +629,7 @@ class Home final : public Engine {
       }
       if (t < best.t) best = {t, i, j, count_[i], count_[j]};
     });
-    if (best.t <= dt_) push_event(best);
+    return best.t <= dt_;
   }
 
   // Restitution on the normal component only; tangential velocity is untouched (frictionless).
@@ -643,6 +669,7 @@ class Home final : public Engine {
   ForkJoin pool_;
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
+  std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift
   double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)

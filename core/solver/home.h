@@ -40,8 +40,8 @@ struct HomeSettings {
   // Internal, not user settings (not in settings(), not readable with --set): they change how
   // fast, never what, the solver computes.
   HomeShortcuts allow;  // shortcuts that may be taken (all, unless a test or benchmark clears one)
-  int threads = 0;      // threads for the per-ball loops; 0: all cores from 20 000 balls, else 1
-  int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 50 000 balls
+  int threads = 0;      // threads for the per-ball loops; 0: all cores from 100 000 balls, else 1
+  int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 10 000 balls
 };
 
 EngineEntry home_engine();

@@ -40,37 +40,105 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
   nx_ = static_cast<int>(std::floor(w / cell)) + 1 + 2;  // + the empty ring
   ny_ = static_cast<int>(std::floor(h / cell)) + 1 + 2;
 
+  const size_t cells = static_cast<size_t>(nx_) * ny_;
+  id_.resize(n);
+  cell_sorted_.resize(n);
+  x_.resize(n), y_.resize(n), vx_.resize(n), vy_.resize(n);
+  r_.resize(radius.size() ? n : 0);
   cell_of_.resize(n);
+  const double* vxp = vel.col(0).data();
+  const double* vyp = vel.col(1).data();
+  const double* rp = radius.size() ? radius.data() : nullptr;
+  // Positions and velocities (and radii) in slot order, each part over its fixed range of slots.
+  auto gather = [&] {
+    pool.run([&](int p) {
+      const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+      for (long s = b; s < e; ++s) {
+        const int i = id_[s];
+        x_[s] = px[i], y_[s] = py[i], vx_[s] = vxp[i], vy_[s] = vyp[i];
+      }
+      if (rp)
+        for (long s = b; s < e; ++s) r_[s] = rp[id_[s]];
+    });
+  };
+  // Counting sort, stable: within a cell, balls keep their order.
+  if (parts == 1) {
+    // Counts, then running sums (each cell's end), then balls placed from the last backwards, which
+    // leaves each cell's first slot behind: no second copy of the cell array.
+    start_.assign(cells + 1, 0);
+    for (int i = 0; i < n; ++i) ++start_[cell_of_[i] = cell_y(py[i]) * nx_ + cell_x(px[i])];
+    for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
+    for (int i = n - 1; i >= 0; --i) {
+      const int c = cell_of_[i];
+      const int s = --start_[c];
+      id_[s] = i, cell_sorted_[s] = c;
+    }
+    gather();
+    return;
+  }
+  // In parallel: part p counts its fixed range of balls in its own histogram (part 0 in start_),
+  // the running sums are taken over cells in the order (cell, part), and each part places its balls
+  // at its own slots of each cell: part 0 from its last ball backwards (which leaves each cell's
+  // first slot in start_), the others forwards. Within a cell part 0's balls come first, then part
+  // 1's, ... each in ball order: the serial sort's order, on any number of parts.
+  hist_.resize(parts - 1);
+  start_.resize(cells + 1);
+  for (auto& h : hist_) h.resize(cells);
+  auto hist = [&](int p) { return p == 0 ? start_.data() : hist_[p - 1].data(); };
   pool.run([&](int p) {
+    const size_t cb = cells * p / parts, ce = cells * (p + 1) / parts;
+    for (int q = 0; q < parts; ++q) std::fill(hist(q) + cb, hist(q) + ce, 0);
     const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
     for (long i = b; i < e; ++i) cell_of_[i] = cell_y(py[i]) * nx_ + cell_x(px[i]);
   });
-  // Counting sort, stable: within a cell, balls keep their order. Counts, then running sums (each
-  // cell's end), then balls placed from the last backwards, which leaves each cell's first slot
-  // behind: no second copy of the cell array.
-  start_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
-  for (int i = 0; i < n; ++i) ++start_[cell_of_[i]];
-  for (size_t c = 1; c < start_.size(); ++c) start_[c] += start_[c - 1];
-  id_.resize(n);
-  cell_sorted_.resize(n);
-  for (int i = n - 1; i >= 0; --i) {
-    const int s = --start_[cell_of_[i]];
-    id_[s] = i, cell_sorted_[s] = cell_of_[i];
-  }
-
-  x_.resize(n), y_.resize(n), vx_.resize(n), vy_.resize(n);
-  r_.resize(radius.size() ? n : 0);
-  const double* vxp = vel.col(0).data();
-  const double* vyp = vel.col(1).data();
   pool.run([&](int p) {
     const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-    for (long s = b; s < e; ++s) {
-      const int i = id_[s];
-      x_[s] = px[i], y_[s] = py[i], vx_[s] = vxp[i], vy_[s] = vyp[i];
-    }
-    if (!r_.empty())
-      for (long s = b; s < e; ++s) r_[s] = radius(id_[s]);
+    int* h = hist(p);
+    for (long i = b; i < e; ++i) ++h[cell_of_[i]];
   });
+  std::vector<long> total(parts + 1, 0);  // balls in each part's range of cells, then its first slot
+  pool.run([&](int p) {
+    const size_t cb = cells * p / parts, ce = cells * (p + 1) / parts;
+    long sum = 0;
+    for (int q = 0; q < parts; ++q) {
+      const int* h = hist(q);
+      for (size_t c = cb; c < ce; ++c) sum += h[c];
+    }
+    total[p + 1] = sum;
+  });
+  for (int p = 0; p < parts; ++p) total[p + 1] += total[p];
+  pool.run([&](int p) {
+    const size_t cb = cells * p / parts, ce = cells * (p + 1) / parts;
+    int running = static_cast<int>(total[p]);
+    for (size_t c = cb; c < ce; ++c) {
+      running += start_[c];
+      start_[c] = running;  // end of part 0's balls in cell c
+      for (int q = 1; q < parts; ++q) {
+        const int k = hist_[q - 1][c];
+        hist_[q - 1][c] = running;  // first slot of part q's balls in cell c
+        running += k;
+      }
+    }
+  });
+  start_[cells] = n;
+  pool.run([&](int p) {
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    if (p == 0) {
+      for (long i = e - 1; i >= b; --i) {
+        const int c = cell_of_[i];
+        const int s = --start_[c];
+        id_[s] = static_cast<int>(i), cell_sorted_[s] = c;
+      }
+    } else {
+      int* h = hist_[p - 1].data();
+      for (long i = b; i < e; ++i) {
+        const int c = cell_of_[i];
+        const int s = h[c]++;
+        id_[s] = static_cast<int>(i), cell_sorted_[s] = c;
+      }
+    }
+  });
+  gather();
 }
 
 }  // namespace ballbench
