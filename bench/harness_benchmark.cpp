@@ -17,7 +17,7 @@
 namespace ballbench::bench {
 namespace {
 
-constexpr long kSteps = 20;
+constexpr long kSteps = 100;  // enough for the one-time costs (first sample, final statistics) to fade
 
 void harness_benchmark(benchmark::State& state, int n, int sample_every) {
   static std::map<int, Scene> scenes;
