@@ -204,7 +204,9 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
 void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vector<Figure>& figures) {
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
       "scenes (`gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; box side sqrt(5 n), the seed's "
-      "density). Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
+      "density). The timed steps follow 5 warm-up steps from the start, so the bowl is timed early in its pour: from "
+      "10^5 balls on, the balls are still falling, and the settled pile costs more (core/solver/PERFORMANCE.md). "
+      "Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
   put_figures(put, figures, "scaling", "");
   std::vector<std::string> scenes;
   std::vector<long> counts;
@@ -300,7 +302,9 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("Our ball solver (`home`), the thesis's MATLAB algorithm ported faithfully (`home-seed`), and the external "
       "engines, on identical scenes. Every number below comes from the JSON files in `results/` beside this file; "
       "the metrics are computed by the harness from sampled states, never taken from an engine.\n\n");
-  put("Regenerate with `{}` (generated {}).\n\n", run.value("command", "scripts/report"), run.value("date", "?"));
+  put("Regenerate with `scripts/report` (`scripts/report --full` for the complete evidence). This report: `{}`, {} "
+      "suite, {}.\n\n",
+      run.value("command", "?"), run.value("suite", "quick"), run.value("date", "?"));
 
   put("## Machine and build\n\n| | |\n|---|---|\n");
   for (const char* k : {"cpu", "cores", "os", "compiler", "build_type", "flags"})
