@@ -6,6 +6,8 @@
 //   build/release/bench/ballbench_harness_benchmark --benchmark_format=json > harness.json
 #include <benchmark/benchmark.h>
 
+#include "bench_main.h"
+
 #include <map>
 
 #include <fmt/format.h>
@@ -42,7 +44,9 @@ void harness_benchmark(benchmark::State& state, int n, int sample_every) {
   state.counters["overhead"] = harness_s / engine_s;
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
   for (int n : {10'000, 100'000})
     for (int k : {1, 10})
       benchmark::RegisterBenchmark(fmt::format("harness/home/gas/{}/sample_every:{}", n, k).c_str(), harness_benchmark,
@@ -52,13 +56,5 @@ void register_all() {
           ->MinTime(1.0);
 }
 
-}  // namespace
 }  // namespace ballbench::bench
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  ballbench::bench::register_all();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

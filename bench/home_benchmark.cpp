@@ -13,6 +13,8 @@
 // Read the on/off ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
 
+#include "bench_main.h"
+
 #include <functional>
 #include <map>
 
@@ -73,7 +75,9 @@ void run(benchmark::State& state, const Scene& scene, const HomeSettings& settin
       benchmark::Counter(n * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
   for (int threads : {1, 2})
     for (int n : {10'000, 20'000, 50'000, 100'000, 1'000'000}) {
       HomeSettings s;
@@ -122,13 +126,5 @@ void register_all() {
     }
 }
 
-}  // namespace
 }  // namespace ballbench::bench
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  ballbench::bench::register_all();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}

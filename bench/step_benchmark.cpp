@@ -13,6 +13,8 @@
 // Read the ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
 
+#include "bench_main.h"
+
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -89,7 +91,9 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
   state.counters["engine_bytes_per_ball"] = (resident_bytes() - resident_before) / n;
 }
 
-void register_all() {
+}  // namespace
+
+void register_benchmarks() {
   for (const auto& e : engine_registry()) {
     benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
     for (const auto& profile : e.info.profiles)
@@ -104,13 +108,5 @@ void register_all() {
   }
 }
 
-}  // namespace
 }  // namespace ballbench::bench
 
-int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  ballbench::bench::register_all();
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
