@@ -37,8 +37,9 @@ Scene stressed(const Scene& base, const std::string& knob, double factor) {
 
 std::string stress_failure(const Result& r, double energy_tolerance) {
   if (r.status != "ok") return r.status + (r.error.empty() ? "" : ": " + r.error);
-  if (r.metrics.tunnelling_wall) return fmt::format("{} wall escapes", r.metrics.tunnelling_wall);
-  if (r.metrics.tunnelling_pair) return fmt::format("{} pair pass-throughs", r.metrics.tunnelling_pair);
+  auto count = [](int k, const char* what) { return fmt::format("{} {}{}", k, what, k == 1 ? "" : "s"); };
+  if (r.metrics.tunnelling_wall) return count(r.metrics.tunnelling_wall, "wall escape");
+  if (r.metrics.tunnelling_pair) return count(r.metrics.tunnelling_pair, "pair pass-through");
   if (r.reference.available && r.reference.reference_failed_step < 0 && r.reference.energy_rel_max > energy_tolerance)
     return fmt::format("energy off the reference by {:.3g}", r.reference.energy_rel_max);
   if (r.metrics.energy.initial > 0 && r.metrics.energy.final > (1 + energy_tolerance) * r.metrics.energy.initial)
