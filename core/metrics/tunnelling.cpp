@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace ballbench {
 
@@ -52,7 +51,9 @@ int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd
   grid.build(mid, 2.0 * radius.maxCoeff() + dmax);
   const double h = cur.t - prev.t;
   const auto& order = grid.order();
-  auto [sx, sy, smoved, sr, sid] = std::tie(scratch.sx, scratch.sy, scratch.smoved, scratch.sradius, scratch.sid);
+  // Plain references, not a structured binding: clang 14 (the fuzz preset) cannot capture those.
+  std::vector<double>&sx = scratch.sx, &sy = scratch.sy, &smoved = scratch.smoved, &sr = scratch.sradius;
+  std::vector<int>& sid = scratch.sid;
   sx.resize(n), sy.resize(n), smoved.resize(n), sr.resize(n), sid.resize(n);
   for (int a = 0; a < n; ++a) {
     const int i = order[a];
