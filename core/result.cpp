@@ -9,7 +9,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
-#include "json_number.h"
+#include "json_value.h"
 
 namespace ballbench {
 namespace {
@@ -31,7 +31,11 @@ Eigen::Vector2d vec(const nlohmann::json& j) { return {num(j.at(0)), num(j.at(1)
 
 }  // namespace
 
-std::string run_label(const Result& r) { return r.profile == "default" ? r.engine : r.engine + "/" + r.profile; }
+std::string run_label(const std::string& engine, const std::string& profile) {
+  return profile == "default" ? engine : engine + "/" + profile;
+}
+
+std::string run_label(const Result& r) { return run_label(r.engine, r.profile); }
 
 nlohmann::json to_json(const Result& r) {
   const MetricsSummary& m = r.metrics;
@@ -185,18 +189,11 @@ void write_results_file(const std::string& path, const std::vector<Result>& resu
 }
 
 std::vector<Result> read_results_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot read the results file", path));
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
+  return read_json_file(path, "a ballbench results file", [](const nlohmann::json& j) {
     std::vector<Result> out;
-    if (j.is_object()) j = nlohmann::json::array({j});
-    for (const auto& item : j) out.push_back(result_from_json(item));
+    for (const auto& item : j.is_object() ? nlohmann::json::array({j}) : j) out.push_back(result_from_json(item));
     return out;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a ballbench results file: {}", path, e.what()));
-  }
+  });
 }
 
 }  // namespace ballbench

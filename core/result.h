@@ -65,6 +65,7 @@ struct Result {
 
 // "engine" for an engine with one profile, "engine/profile" otherwise: how tables and the
 // trajectory CSV name a run.
+std::string run_label(const std::string& engine, const std::string& profile);
 std::string run_label(const Result& r);
 
 nlohmann::json to_json(const Result& r);

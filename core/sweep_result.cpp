@@ -9,7 +9,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
-#include "json_number.h"
+#include "json_value.h"
 
 namespace ballbench {
 
@@ -110,7 +110,7 @@ std::string sweep_csv(const SweepResult& s) {
                               ? std::pair{std::nan(""), std::nan("")}
                               : std::pair{*std::min_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end()),
                                           *std::max_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end())};
-    const std::string value = p.value.is_string() ? p.value.get<std::string>() : p.value.dump();
+    const std::string value = json_text(p.value);
     out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", p.engine,
                        p.profile, p.knob, value, p.dt, p.steps, p.status, p.ns_median(), lo, hi, p.engine_s_median(),
                        p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);

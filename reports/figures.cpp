@@ -105,9 +105,6 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
 }
 
 
-std::string label(const std::string& engine, const std::string& profile) {
-  return profile == "default" ? engine : engine + "/" + profile;
-}
 
 // gnuplot line style k: 8 colours, then the same colours dashed, so no two lines look alike.
 std::string style(int k) { return fmt::format("lc {} dt {}", 1 + k % 8, 1 + k / 8); }
@@ -119,7 +116,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
   const std::string base = slug(sw.scene) + "-work-precision";
   std::vector<std::string> order;  // engine/profile in the sweep's order
   for (const SweepPoint& p : sw.points) {
-    const std::string l = label(p.engine, p.profile);
+    const std::string l = run_label(p.engine, p.profile);
     if (p.engine != sw.reference) add_once(order, l);
   }
   std::vector<double> dts;
@@ -132,7 +129,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
     std::ofstream line(dir / fmt::format("{}-{}-dt.dat", base, name)), knobs(dir / fmt::format("{}-{}-knobs.dat", base, name));
     int drawn = 0;
     for (const SweepPoint& p : sw.points) {
-      if (label(p.engine, p.profile) != order[k] || p.status != "ok" || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
+      if (run_label(p.engine, p.profile) != order[k] || p.status != "ok" || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
       const auto [lo, hi] = std::minmax_element(p.engine_s.begin(), p.engine_s.end());
       (p.knob == "dt" ? line : knobs) << 1e3 * p.engine_s_median() << ' ' << p.pos_rms << ' ' << 1e3 * *lo << ' '
                                       << 1e3 * *hi << '\n';
@@ -176,7 +173,7 @@ Figure scaling_figure(const BenchResults& bench, const fs::path& dir) {
   std::vector<std::string> scenes, order;
   for (const BenchRow& r : bench.rows) {
     add_once(scenes, r.scene);
-    const std::string l = label(r.engine, r.profile);
+    const std::string l = run_label(r.engine, r.profile);
     add_once(order, l);
   }
   std::ofstream gp(dir / (base + ".gp"));
@@ -191,7 +188,7 @@ Figure scaling_figure(const BenchResults& bench, const fs::path& dir) {
       std::ofstream f(dir / data);
       int points = 0;
       for (const BenchRow& r : bench.rows)
-        if (r.scene == scene && label(r.engine, r.profile) == order[k] && r.error.empty())
+        if (r.scene == scene && run_label(r.engine, r.profile) == order[k] && r.error.empty())
           f << r.n << ' ' << r.ns_per_ball_step << '\n', ++points;
       if (points)
         plot += fmt::format("{}'{}' with linespoints {} lw 2 pt 7 title '{}'", plot.empty() ? "" : ", ", data, style(k),
@@ -213,7 +210,7 @@ Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
     add_once(knobs, r.knob);
-    const std::string l = label(r.engine, r.profile);
+    const std::string l = run_label(r.engine, r.profile);
     add_once(engines, l);
   }
   {
@@ -226,7 +223,7 @@ Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
       for (const auto& k : knobs) {
         int passed = 0;
         for (const FrontierRow& r : f.rows)
-          if (label(r.engine, r.profile) == e && r.knob == k) passed = r.levels_passed;
+          if (run_label(r.engine, r.profile) == e && r.knob == k) passed = r.levels_passed;
         d << ' ' << passed;
       }
       d << '\n';

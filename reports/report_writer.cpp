@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "json_value.h"
 #include "ordered_set.h"
 
 namespace ballbench {
@@ -117,13 +118,10 @@ struct MarkdownBuffer {
 };
 
 
-std::string label(const std::string& engine, const std::string& profile) {
-  return profile == "default" ? engine : engine + "/" + profile;
-}
 
 std::string setting_text(const SweepPoint& p) {
   if (p.knob == "dt") return "dt";
-  return p.knob + " = " + (p.value.is_string() ? p.value.get<std::string>() : p.value.dump());
+  return p.knob + " = " + json_text(p.value);
 }
 
 void put_figures(MarkdownBuffer& put, const std::vector<Figure>& figures, const std::string& kind,
@@ -163,7 +161,7 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
   std::vector<std::string> failed;
   for (const SweepPoint& p : sw.points)
     if (p.status != "ok")
-      failed.push_back(fmt::format("{} {}: {}{}", label(p.engine, p.profile), setting_text(p), p.status,
+      failed.push_back(fmt::format("{} {}: {}{}", run_label(p.engine, p.profile), setting_text(p), p.status,
                                    p.error.empty() ? "" : " (" + p.error + ")"));
   if (!failed.empty()) put("\nPoints that did not complete: {}.\n", fmt::join(failed, "; "));
   put("\n");
@@ -179,7 +177,7 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
     add_once(knobs, r.knob);
-    const std::string l = label(r.engine, r.profile);
+    const std::string l = run_label(r.engine, r.profile);
     add_once(engines, l);
   }
   put("| engine |");
@@ -191,7 +189,7 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
     put("| {} |", e);
     for (const auto& k : knobs)
       for (const FrontierRow& r : f.rows)
-        if (label(r.engine, r.profile) == e && r.knob == k)
+        if (run_label(r.engine, r.profile) == e && r.knob == k)
           put(" {} ({}) |", r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor),
               r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
     put("\n");
@@ -214,7 +212,7 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
   for (const BenchRow& r : bench.rows) {
     add_once(scenes, r.scene);
     add_once(counts, r.n);
-    const std::string l = label(r.engine, r.profile);
+    const std::string l = run_label(r.engine, r.profile);
     add_once(engines, l);
   }
   std::sort(counts.begin(), counts.end());
@@ -229,7 +227,7 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
       for (long n : counts) {
         std::string cell = "";
         for (const BenchRow& r : bench.rows)
-          if (r.scene == scene && r.n == n && label(r.engine, r.profile) == e)
+          if (r.scene == scene && r.n == n && run_label(r.engine, r.profile) == e)
             cell = r.error.empty() ? fmt::format("{:.0f}", r.ns_per_ball_step) : "failed";
         put(" {} |", cell);
       }
@@ -248,7 +246,7 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
       }
       if (ours && fastest)
         ratios.push_back(fmt::format("{} balls: {:.1f}x (vs {})", n, fastest->ns_per_ball_step / ours->ns_per_ball_step,
-                                     label(fastest->engine, fastest->profile)));
+                                     run_label(fastest->engine, fastest->profile)));
     }
     if (!ratios.empty())
       put("\n`home` against the fastest external engine (its ns per ball-step over ours, same run): {}.\n",
@@ -308,7 +306,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
 
   put("## Machine and build\n\n| | |\n|---|---|\n");
   for (const char* k : {"cpu", "cores", "os", "compiler", "build_type", "flags"})
-    if (run.contains(k)) put("| {} | {} |\n", k, run[k].is_string() ? run[k].get<std::string>() : run[k].dump());
+    if (run.contains(k)) put("| {} | {} |\n", k, json_text(run[k]));
   put("\nTimes are engine step time only (reading states and computing metrics excluded), one run each on a shared "
       "machine: read the ratios, not the nanoseconds.\n\n");
 

@@ -244,7 +244,10 @@ TEST(OdeAdapter, SweepAndPruneAndHashSpacesAgree) {
     return out;
   };
   const State sap = run("sap"), hash = run("hash");
-  EXPECT_LT((sap.pos - hash.pos).cwiseAbs().maxCoeff(), 1e-6);
+  // Measured 1.1e-11 m after 100 steps: the spaces hand pairs over in different orders, so the
+  // contact joints are solved in another order (round-off). A contact one space missed would move a
+  // ball by millimetres at these speeds (25 m/s, dt 0.01), far above 1e-9.
+  EXPECT_LT((sap.pos - hash.pos).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 }  // namespace

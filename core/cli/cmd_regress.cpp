@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "input_error.h"
+#include "json_value.h"
 #include "machine_info.h"
 #include "registry.h"
 #include "run_engines.h"
@@ -107,14 +108,13 @@ nlohmann::json record(const Result& r) {
           {"settings", r.settings}};
 }
 
-std::string text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
 // The differences between one baseline record and one new one, as lines.
 void compare(const nlohmann::json& base, const nlohmann::json& now, const nlohmann::json& tolerances,
              std::vector<std::string>& lines) {
-  const std::string who = fmt::format("{} {}", text(now["scene"]), text(now["engine"]));
+  const std::string who = fmt::format("{} {}", json_text(now["scene"]), json_text(now["engine"]));
   auto differs = [&](const std::string& what, const nlohmann::json& b, const nlohmann::json& n, const std::string& note) {
-    lines.push_back(fmt::format("{} {}: baseline {}, now {}{}", who, what, text(b), text(n), note));
+    lines.push_back(fmt::format("{} {}: baseline {}, now {}{}", who, what, json_text(b), json_text(n), note));
   };
   for (const char* key : {"engine_version", "steps", "status"})
     if (base.value(key, nlohmann::json()) != now[key]) differs(key, base.value(key, nlohmann::json()), now[key], "");
@@ -210,7 +210,7 @@ void regress(const RegressArgs& a) {
   }
 
   const nlohmann::json tolerances = baseline.value("tolerances", default_tolerances());
-  auto key = [](const nlohmann::json& r) { return text(r.value("scene", nlohmann::json())) + " " + text(r.value("engine", nlohmann::json())); };
+  auto key = [](const nlohmann::json& r) { return json_text(r.value("scene", nlohmann::json())) + " " + json_text(r.value("engine", nlohmann::json())); };
   std::vector<std::string> lines;
   try {
     for (const auto& now : runs) {

@@ -95,7 +95,7 @@ FrontierResult run_frontier(const Scene& base, const std::vector<const EngineEnt
 void print_frontier(const FrontierResult& f) {
   fmt::print("{:<18} {:<11} {:>10} {:>10}  {}\n", "engine", "knob", "base", "frontier", "next level failed by");
   for (const FrontierRow& r : f.rows) {
-    const std::string label = r.profile == "default" ? r.engine : r.engine + "/" + r.profile;
+    const std::string label = run_label(r.engine, r.profile);
     const std::string frontier = r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor);
     fmt::print("{:<18} {:<11} {:>10.4g} {:>10}  {}\n", label, r.knob, r.base, frontier,
                r.failed_next.empty() ? fmt::format("(passed all {} levels)", f.levels) : r.failed_next);

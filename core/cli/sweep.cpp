@@ -6,12 +6,11 @@
 
 #include "input_error.h"
 #include "isolated_run.h"
+#include "json_value.h"
 #include "progress.h"
 
 namespace ballbench::cli {
 namespace {
-
-std::string value_text(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
 // The profile's effective settings, to skip knob values it already has; empty if the engine cannot
 // be built here (the points then all run, and their runs report why).
@@ -122,12 +121,12 @@ void print_pareto(const SweepResult& s) {
   for (const SweepPoint& p : s.points) {
     if (!p.pareto) continue;
     fmt::print("{:<10} {:<8} {:<22} {:>9.4g} {:>12.4g} {:>12.1f} {:>11.3g} {:>11.3g}\n", p.engine, p.profile,
-               p.knob == "dt" ? "dt" : p.knob + " = " + value_text(p.value), p.dt, 1e3 * p.engine_s_median(),
+               p.knob == "dt" ? "dt" : p.knob + " = " + json_text(p.value), p.dt, 1e3 * p.engine_s_median(),
                p.ns_median(), p.pos_rms, p.energy_rel);
   }
   for (const SweepPoint& p : s.points)
     if (p.status != "ok")
-      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, value_text(p.value), p.status,
+      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, json_text(p.value), p.status,
                  p.error.empty() ? "" : ": " + p.error);
 }
 
