@@ -112,6 +112,7 @@ void register_benchmarks() {
       {"equal_radii", &HomeShortcuts::equal_radii, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
       {"equal_masses", &HomeShortcuts::equal_masses, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
       {"no_pairs", &HomeShortcuts::no_pairs, []() -> const Scene& { return one_ball(); }, "one-ball", 1},
+      {"elastic", &HomeShortcuts::elastic, []() -> const Scene& { return gas(10'000); }, "gas", 10'000},
   };
   for (const Case& c : cases)
     for (bool on : {true, false}) {

@@ -16,6 +16,7 @@
 #include "input_error.h"
 #include "solver/fork_join.h"
 #include "solver/home_grid.h"
+#include "solver/neighbour_list.h"
 #include "solver/warm_start.h"
 
 namespace ballbench {
@@ -56,7 +57,7 @@ int thread_count(int n, int requested) {
 }
 
 // The shortcuts this scene allows among those `allow` permits.
-HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow) {
+HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double rest_velocity) {
   const SceneFeatures f = scene.features();
   HomeShortcuts s;
   s.no_gravity = allow.no_gravity && !f.gravity;
@@ -64,6 +65,13 @@ HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow) {
   s.equal_radii = allow.equal_radii && f.equal_radii && scene.n() > 0;
   s.equal_masses = allow.equal_masses && f.equal_masses && scene.n() > 0;
   s.no_pairs = allow.no_pairs && scene.n() < 2;
+  // Restitution 1 with a resting speed of 0 (no gravity, rest_velocity left to its default or 0):
+  // no impact is resting contact and no contact is speculative, so the contact pass could only
+  // bounce pairs that touch and approach at the start of a step, which the event loop does at once
+  // anyway (predict: touching and approaching collides at t0). Only simultaneous multi-contact
+  // bounces differ (sequential events instead of one simultaneous solve, as in `exact`).
+  const bool no_rest = rest_velocity == 0 || (rest_velocity < 0 && !f.gravity);
+  s.elastic = allow.elastic && f.elastic && no_rest;
   return s;
 }
 
@@ -86,13 +94,14 @@ class Home final : public Engine {
  public:
   Home(const Scene& scene, HomeSettings s)
       : s_(s),
-        sc_(shortcuts(scene, s.allow)),
+        sc_(shortcuts(scene, s.allow, s.rest_velocity)),
         reorder_(reorder_steps(scene.n(), s.reorder_steps)),
         n_(scene.n()),
         e_(scene.restitution),
         g_(scene.gravity),
         box_(scene.container),
         walls_(scene.container.kind == ContainerKind::Box),
+        listed_(sc_.elastic && !sc_.no_pairs),
         r0_(n_ > 0 ? scene.radius(0) : 0.0),
         inv_m0_(n_ > 0 ? 1.0 / scene.mass(0) : 0.0),
         rmax_(scene.radius.maxCoeff()),
@@ -114,7 +123,8 @@ class Home final : public Engine {
   }
 
   void step(double dt) override {
-    if (!sc_.no_pairs && reorder_ > 0 && steps_ % reorder_ == 1 % reorder_) reorder_by_cell();  // from the second step on
+    // From the second step on; with a neighbour list, when the list is rebuilt (rebuild_list).
+    if (!sc_.no_pairs && !listed_ && reorder_ > 0 && steps_ % reorder_ == 1 % reorder_) reorder_by_cell();
     ++steps_;
     t_ += dt;
     dt_ = dt;
@@ -151,10 +161,73 @@ class Home final : public Engine {
   // Grid over the positions at the start of the step, with cells wide enough that any two balls
   // which can touch during the rest of the step are in adjacent cells.
   // Positions and velocities are copied into it in cell order, for the pair screen.
-  void build_broad_phase(double horizon) {
-    vbound_ = n_ > 0 ? kSpeedMargin * std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0;
+  // With a neighbour list (elastic scenes) the list is kept while it covers the step, rebuilt when
+  // it does not or when `mid_step` (a collision took a ball beyond its skin).
+  void build_broad_phase(double horizon, bool mid_step = false) {
+    if (listed_) {
+      if (mid_step || !list_covers(horizon)) rebuild_list(horizon, !mid_step);
+      return;
+    }
+    vbound_ = max_speed() * kSpeedMargin;
     if (!sc_.no_pairs) grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_);
   }
+
+  double max_speed() const { return n_ > 0 ? std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0; }
+
+  // Every ball stays within half the skin of where it was at the list's build over the next
+  // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
+  // ends decide). A collision that changes a velocity is checked again (beyond_skin). The largest
+  // displacement plus the largest speed bounds every ball's own sum: one pass, no root per ball.
+  bool list_covers(double horizon) const {
+    if (half_skin_ < 0) return false;  // no list yet
+    const double* __restrict x = p_.col(0).data();
+    const double* __restrict y = p_.col(1).data();
+    const double* __restrict bx = built_at_.col(0).data();
+    const double* __restrict by = built_at_.col(1).data();
+    const double* __restrict vx = v_.col(0).data();
+    const double* __restrict vy = v_.col(1).data();
+    double moved2 = 0, speed2 = 0;
+    for (int i = 0; i < n_; ++i) {
+      const double dx = x[i] - bx[i], dy = y[i] - by[i];
+      moved2 = std::max(moved2, dx * dx + dy * dy);
+      speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
+    }
+    return std::sqrt(moved2) + std::sqrt(speed2) * horizon <= half_skin_;
+  }
+
+  bool beyond_skin(int i, double t) const {
+    return (p_.row(i) - built_at_.row(i)).norm() + v_.row(i).norm() * (dt_ - t) > half_skin_;
+  }
+
+  // A fresh neighbour list from the positions now: a grid with cells of 2 r_max + skin, its
+  // adjacent pairs closer than r_i + r_j + skin kept. The skin lets the fastest ball move for
+  // list_steps steps (and at least over `horizon`). Renumbering in cell order, when due, happens
+  // here, on this grid, so the list is built in the new numbers.
+  void rebuild_list(double horizon, bool may_renumber) {
+    const double vmax = max_speed();
+    // The relative margin keeps round-off in the positions from failing the check at once.
+    half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
+    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
+    const bool renumber = may_renumber && reorder_ > 0 && steps_ - renumbered_at_ >= reorder_ && grid_.balls() == n_;
+    if (renumber) {
+      reorder_by_cell();
+      renumbered_at_ = steps_;
+    }
+    list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, renumber ? nullptr : grid_.id(), pool_);
+    built_at_ = p_;
+    // A ball farther than 2 half_skin from every wall now starts each step the list covers within
+    // half_skin - |v| dt of here (list_covers), so more than half_skin + |v| dt from every wall: it
+    // cannot reach one before a collision changes its course (and then it is predicted anyway).
+    near_wall_.clear();
+    if (walls_)
+      for (int i = 0; i < n_; ++i) {
+        const double r = radius(i), x = p_(i, 0), y = p_(i, 1);
+        const double gap = std::min(std::min(x - r - box_.min(0), box_.max(0) - r - x),
+                                    std::min(y - r - box_.min(1), box_.max(1) - r - y));
+        if (gap <= 2.0 * half_skin_) near_wall_.push_back(i);
+      }
+  }
+
 
   // One branch on a flag fixed at construction; the hot pair screen is compiled per case instead.
   double radius(int i) const { return sc_.equal_radii ? r0_ : r_(i); }
@@ -272,13 +345,23 @@ class Home final : public Engine {
     const double reach = v_rest_ * dt_;
     if (sc_.no_walls) {
       std::fill(active_.begin(), active_.end(), 0);
+    } else if (listed_) {
+      // Only balls near a wall when the list was built can reach one before it expires.
+      std::fill(active_.begin(), active_.end(), 0);
+      const double k = dt_ * (1.0 + 1e-9);
+      for (int i : near_wall_) active_[i] = reaches_wall(p_(i, 0), p_(i, 1), v_(i, 0), v_(i, 1), radius(i), k);
     } else {
       screen_walls(reach);
       for (const auto& near : wall_hits_)
         for (int i : near) add_wall_contacts(i, reach, dt_, true);
     }
     if (!sc_.no_pairs) {
-      sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
+      if (listed_)
+        sc_.equal_radii ? screen_list<true>() : screen_list<false>();
+      else if (sc_.elastic)
+        sc_.equal_radii ? screen_pairs<true, false>(reach) : screen_pairs<false, false>(reach);
+      else
+        sc_.equal_radii ? screen_pairs<true, true>(reach) : screen_pairs<false, true>(reach);
       const int* id = grid_.id();
       for (const auto& hits : pair_hits_)
         for (const auto& [a, b] : hits) {
@@ -287,6 +370,7 @@ class Home final : public Engine {
           add_pair_contact(id[a], id[b], reach, dt_, true);
         }
     }
+    if (sc_.elastic) return;  // no contacts were listed: nothing to solve or remember
     for (Contact& c : contacts_) {
       const double impulse = warm_.find(c.i, c.j);
       if (impulse < 0) continue;
@@ -310,12 +394,30 @@ class Home final : public Engine {
       wall_hits_[p].clear();
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      sc_.equal_radii ? screen_wall_range<true>(b, e, reach, wall_hits_[p])
-                      : screen_wall_range<false>(b, e, reach, wall_hits_[p]);
+      if (sc_.elastic)
+        sc_.equal_radii ? screen_wall_range<true, false>(b, e, reach, wall_hits_[p])
+                        : screen_wall_range<false, false>(b, e, reach, wall_hits_[p]);
+      else
+        sc_.equal_radii ? screen_wall_range<true, true>(b, e, reach, wall_hits_[p])
+                        : screen_wall_range<false, true>(b, e, reach, wall_hits_[p]);
     });
   }
 
-  template <bool kEqualRadii>
+  // Can a ball with these gaps to the four walls (min x, max x, min y, max y) reach the one it moves
+  // towards within k = dt (1 + 1e-9)? Bitwise, no ternaries: the direction of motion is a coin toss
+  // per ball, and the compiler turned the selects into branches once nothing else needed both gaps.
+  static bool reaches_wall(double gx0, double gx1, double gy0, double gy1, double vx, double vy, double k) {
+    const double kx = std::abs(vx) * k, ky = std::abs(vy) * k;
+    const bool left = vx < 0, down = vy < 0;
+    return (left & (gx0 <= kx)) | (!left & (gx1 <= kx)) | (down & (gy0 <= ky)) | (!down & (gy1 <= ky));
+  }
+  bool reaches_wall(double x, double y, double vx, double vy, double r, double k) const {
+    return reaches_wall(x - r - box_.min(0), box_.max(0) - r - x, y - r - box_.min(1), box_.max(1) - r - y, vx, vy, k);
+  }
+
+  // kContacts false (the elastic shortcut): no contact pass, so touching a wall is no reason to be
+  // predicted and no ball is listed; an approach within the step still is.
+  template <bool kEqualRadii, bool kContacts>
   void screen_wall_range(int b, int e, double reach, std::vector<int>& near) {
     const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
     const double* __restrict x = p_.col(0).data();
@@ -333,10 +435,14 @@ class Home final : public Engine {
       }
       const double r = kEqualRadii ? r0 : rad[i];
       const double gx0 = x[i] - r - x0, gx1 = x1 - r - x[i], gy0 = y[i] - r - y0, gy1 = y1 - r - y[i];
-      const bool touch = std::min(std::min(gx0, gx1), std::min(gy0, gy1)) < std::max(slop * r, reach);
-      const bool hit = (vx[i] < 0 ? gx0 : gx1) <= std::abs(vx[i]) * k || (vy[i] < 0 ? gy0 : gy1) <= std::abs(vy[i]) * k;
-      active[i] = touch | hit;
-      if (touch) [[unlikely]] near.push_back(i);
+      const bool hit = reaches_wall(gx0, gx1, gy0, gy1, vx[i], vy[i], k);
+      if constexpr (kContacts) {
+        const bool touch = std::min(std::min(gx0, gx1), std::min(gy0, gy1)) < std::max(slop * r, reach);
+        active[i] = touch | hit;
+        if (touch) [[unlikely]] near.push_back(i);
+      } else {
+        active[i] = hit;
+      }
     }
   }
 
@@ -347,13 +453,13 @@ class Home final : public Engine {
   // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
   // wall reach has no event this step (its predict would find none), so it is not predicted:
   // results are bit-identical to predicting every ball. In the 10^4 gas 3.5% of balls are active.
-  template <bool kEqualRadii>
+  template <bool kEqualRadii, bool kContacts>
   void screen_pairs(double reach) {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       pair_hits_[p].clear();
       const int n = grid_.balls();
-      screen_slots<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
+      screen_slots<kEqualRadii, kContacts>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
                                 static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p]);
     });
   }
@@ -361,7 +467,8 @@ class Home final : public Engine {
   // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
   // contact, or an approach within the step) takes one branch, decided by both tests at once.
   // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
-  template <bool kEqualRadii>
+  // kContacts false (the elastic shortcut): no pair is listed for the contact pass.
+  template <bool kEqualRadii, bool kContacts>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
@@ -384,7 +491,7 @@ class Home final : public Engine {
         const double lim = rs + std::max(slop * rs, reach);
         lim2 = lim * lim, rs2 = rs * rs;
       }
-      const bool contact = d2 < lim2 && d2 != 0;
+      const bool contact = kContacts && d2 < lim2 && d2 != 0;
       // & rather than &&: the sign of b is a coin toss per pair, a branch on it mispredicts half the time.
       const bool approach = (bb < 0) & ((d2 - rs2) + two * bb * dt <= 0);
       if (contact | approach) [[unlikely]] {
@@ -393,6 +500,42 @@ class Home final : public Engine {
           // Both parts may mark the same ball (the same value): atomic, relaxed, free on x86.
           std::atomic_ref<uint8_t>(active[id[a]]).store(1, std::memory_order_relaxed);
           std::atomic_ref<uint8_t>(active[id[b]]).store(1, std::memory_order_relaxed);
+        }
+      }
+    });
+  }
+
+  // The pair screen over the neighbour list (elastic scenes: no contacts to find, only the
+  // approaches), in parallel over fixed runs of pairs: the same test as screen_slots. A pair that
+  // passes it but is not listed cannot touch within the step (the list covers it), so it has no
+  // event and the balls predicted are those the grid's screen would give events to.
+  template <bool kEqualRadii>
+  void screen_list() {
+    const int parts = pool_.parts();
+    const long m = list_.pairs();
+    const double dt = dt_, two = 2.0, rs0_2 = 4.0 * r0_ * r0_;
+    pool_.run([&](int p) {
+      const long k0 = ForkJoin::range_begin(m, p, parts), k1 = ForkJoin::range_begin(m, p + 1, parts);
+      const int* __restrict first = list_.first();
+      const int* __restrict second = list_.second();
+      const double* __restrict x = p_.col(0).data();
+      const double* __restrict y = p_.col(1).data();
+      const double* __restrict vx = v_.col(0).data();
+      const double* __restrict vy = v_.col(1).data();
+      uint8_t* active = active_.data();
+      for (long k = k0; k < k1; ++k) {
+        const int a = first[k], b = second[k];
+        const double dx = x[a] - x[b], dy = y[a] - y[b];
+        const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
+        const double d2 = dx * dx + dy * dy, bb = dx * wx + dy * wy;
+        double rs2 = rs0_2;
+        if constexpr (!kEqualRadii) {
+          const double rs = r_(a) + r_(b);
+          rs2 = rs * rs;
+        }
+        if ((bb < 0) & ((d2 - rs2) + two * bb * dt <= 0)) [[unlikely]] {
+          std::atomic_ref<uint8_t>(active[a]).store(1, std::memory_order_relaxed);
+          std::atomic_ref<uint8_t>(active[b]).store(1, std::memory_order_relaxed);
         }
       }
     });
@@ -424,6 +567,7 @@ class Home final : public Engine {
     if (inv_m_.size()) permute(inv_m_);
     permute(ext_);
     permute(count_);
+    grid_.renumbered();
     warm_entries_.clear();
     warm_.for_each([&](const WarmStart::Entry& e) {
       warm_entries_.push_back({inv_[e.i], e.j >= 0 ? inv_[e.j] : e.j, e.impulse});
@@ -468,6 +612,11 @@ class Home final : public Engine {
     const double left = solve_contacts(kClusterIterations, 0.5 * v_tol_);
     v_tol_ = std::max(v_tol_, 2.0 * left);
     for (int b : cluster_) ++count_[b];
+    // A neighbour list only covers balls within their skin. (The grid's speed bound is not
+    // checked here: resting impulses are far below it.)
+    if (listed_)
+      for (int b : cluster_)
+        if (beyond_skin(b, t)) return rebuild_mid_step(t);
     for (int b : cluster_) predict(b);
   }
 
@@ -521,7 +670,7 @@ class Home final : public Engine {
       ev.j >= 0 ? collide_pair(ev.i, ev.j) : collide_wall(ev.i, ev.j);
       ++count_[ev.i];
       if (ev.j >= 0) ++count_[ev.j];
-      if (too_fast(ev.i) || (ev.j >= 0 && too_fast(ev.j))) {
+      if (too_fast(ev.i, ev.t) || (ev.j >= 0 && too_fast(ev.j, ev.t))) {
         rebuild_mid_step(ev.t);
         continue;
       }
@@ -556,13 +705,17 @@ class Home final : public Engine {
     return d > 0 ? -relative_normal_velocity(ev.i, ev.j, dx / d, dy / d) : 0.0;
   }
 
-  bool too_fast(int i) const { return v_.row(i).squaredNorm() > vbound_ * vbound_; }
+  // Ball i, just brought to time t with a new velocity, may now reach balls the broad phase did not
+  // allow for: faster than the grid's speed bound, or beyond the neighbour list's skin.
+  bool too_fast(int i, double t) const {
+    return listed_ ? beyond_skin(i, t) : v_.row(i).squaredNorm() > vbound_ * vbound_;
+  }
 
   // A collision made a ball faster than the broad phase allows for: bring every ball to time t and
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
     for (int i = 0; i < n_; ++i) advance(i, t);
-    build_broad_phase(dt_ - t);
+    build_broad_phase(dt_ - t, true);
     queue_.clear();
     for (int i = 0; i < n_; ++i) {
       ++count_[i];
@@ -656,6 +809,7 @@ class Home final : public Engine {
   Eigen::Vector2d g_;
   Container box_;
   bool walls_;
+  bool listed_;                   // elastic: a neighbour list with a skin instead of a grid per step
   double r0_, inv_m0_;            // ball 0's radius and inverse mass: everyone's, if equal
   Eigen::VectorXd r_, inv_m_;     // per ball; empty when the shortcut makes them equal
   double rmax_;
@@ -675,7 +829,12 @@ class Home final : public Engine {
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)
   double vbound_ = 0;             // speed the broad phase allows for this step (m/s)
   double v_tol_ = 0;              // this step's round-off approach speed (m/s), see predict
-  HomeGrid grid_;                 // built on the positions at the start of the step
+  HomeGrid grid_;                 // built on the positions at the start of the step (listed_: at the list's build)
+  NeighbourList list_;            // listed_ only
+  Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
+  std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
+  double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
+  long renumbered_at_ = 0;        // listed_: the step of the last renumbering
   long steps_ = 0;                // steps taken
   std::vector<int> ext_;          // ball -> its index in the scene (balls are renumbered, see reorder_by_cell)
   std::vector<int> inv_;          // scratch: old ball number -> new

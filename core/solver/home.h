@@ -18,6 +18,7 @@ struct HomeShortcuts {
   bool equal_radii = true;   // one radius: no radius array, the pair screen reads no radii
   bool equal_masses = true;  // one inverse mass: no mass array
   bool no_pairs = true;      // fewer than two balls: no broad phase at all
+  bool elastic = true;       // restitution exactly 1 and no resting speed (no gravity): no contact pass
 };
 
 struct HomeSettings {
@@ -42,6 +43,9 @@ struct HomeSettings {
   HomeShortcuts allow;  // shortcuts that may be taken (all, unless a test or benchmark clears one)
   int threads = 0;      // threads for the per-ball loops; 0: all cores from 100 000 balls, else 1
   int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 10 000 balls
+  // Elastic scenes' neighbour list: its skin lets the fastest ball at the build move for this many
+  // steps (2 - 3 measured best at 10^4 gas balls: PERFORMANCE.md, section 12).
+  double list_steps = 3.0;
 };
 
 EngineEntry home_engine();

@@ -53,6 +53,12 @@ class HomeGrid {
     }
   }
 
+  // The balls were renumbered in slot order (ball s is the ball in slot s): the grid now says so.
+  void renumbered() {
+    cell_of_ = cell_sorted_;
+    for (int s = 0; s < balls(); ++s) id_[s] = s;
+  }
+
   // Calls f(j) for every ball j in the 3 x 3 cells around the cell ball i was sorted into.
   template <class F>
   void for_each_near(int i, F&& f) const {
