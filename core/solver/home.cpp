@@ -114,7 +114,8 @@ class Home final : public Engine {
         pool_(thread_count(n_, s.threads)),
         pair_hits_(pool_.parts()),
         wall_hits_(pool_.parts()),
-        first_events_(pool_.parts()) {
+        first_events_(pool_.parts()),
+        extent_(pool_.parts()) {
     // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
     if (!sc_.equal_radii) r_ = scene.radius;
     if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
@@ -178,8 +179,14 @@ class Home final : public Engine {
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
   // ends decide). A collision that changes a velocity is checked again (beyond_skin). The largest
   // displacement plus the largest speed bounds every ball's own sum: one pass, no root per ball.
-  bool list_covers(double horizon) const {
+  bool list_covers(double horizon) {
     if (half_skin_ < 0) return false;  // no list yet
+    if (extent_fresh_) {  // measured by the last step's final advance; nothing moved since
+      extent_fresh_ = false;
+      double moved2 = 0, speed2 = 0;
+      for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m), speed2 = std::max(speed2, v);
+      return std::sqrt(moved2) + std::sqrt(speed2) * horizon <= half_skin_;
+    }
     const double* __restrict x = p_.col(0).data();
     const double* __restrict y = p_.col(1).data();
     const double* __restrict bx = built_at_.col(0).data();
@@ -627,7 +634,7 @@ class Home final : public Engine {
   // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
   // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
   void drift() {
-    std::fill(t_local_.begin(), t_local_.end(), 0.0);
+    // t_local_ is 0 for every ball here: the last step's final advance left it so.
     queue_.clear();
     // The active balls' predictions read only the state at the start of the step: on several
     // parts each predicts its fixed range of balls, and the events are queued in ball order, as
@@ -677,11 +684,35 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
+    // Every ball to the end of the step (advance(i, dt), its clock then set back to 0 for the next
+    // step); with a neighbour list the same pass measures what the next step's list_covers needs.
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      for (int i = b; i < e; ++i) advance(i, dt_);
+      double* __restrict x = p_.col(0).data();
+      double* __restrict y = p_.col(1).data();
+      const double* __restrict vx = v_.col(0).data();
+      const double* __restrict vy = v_.col(1).data();
+      double* __restrict tl = t_local_.data();
+      const double dt = dt_;
+      for (int i = b; i < e; ++i) {
+        const double h = dt - tl[i];
+        x[i] += vx[i] * h, y[i] += vy[i] * h;
+        tl[i] = 0;
+      }
+      if (listed_) {
+        const double* __restrict bx = built_at_.col(0).data();
+        const double* __restrict by = built_at_.col(1).data();
+        double moved2 = 0, speed2 = 0;
+        for (int i = b; i < e; ++i) {
+          const double dx = x[i] - bx[i], dy = y[i] - by[i];
+          moved2 = std::max(moved2, dx * dx + dy * dy);
+          speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
+        }
+        extent_[p] = {moved2, speed2};
+      }
     });
+    extent_fresh_ = listed_;
   }
 
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
@@ -833,6 +864,8 @@ class Home final : public Engine {
   NeighbourList list_;            // listed_ only
   Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
+  std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
+  bool extent_fresh_ = false;     // extent_ describes the state now
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
   long renumbered_at_ = 0;        // listed_: the step of the last renumbering
   long steps_ = 0;                // steps taken
