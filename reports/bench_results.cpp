@@ -20,8 +20,9 @@ BenchResults bench_from_json(const nlohmann::json& j) {
   for (const auto& b : j.at("benchmarks")) {
     if (b.value("run_type", "iteration") != "iteration") continue;
     const auto parts = split(b.at("name").get<std::string>(), '/');
-    if (parts.size() < 5 || parts[0] != "step") continue;  // then options, e.g. min_time:0.200
+    if (parts.size() < 5 || (parts[0] != "step" && parts[0] != "pour")) continue;  // then options, e.g. min_time:0.200
     BenchRow row;
+    row.window = parts[0];
     row.engine = parts[1], row.profile = parts[2], row.scene = parts[3];
     try {
       row.n = std::stol(parts[4]);
@@ -39,7 +40,7 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       optional("peak_rss_bytes_per_ball", row.peak_rss_bytes_per_ball);
       optional("engine_bytes_per_ball", row.engine_bytes_per_ball);
     }
-    out.rows.push_back(std::move(row));
+    (row.window == "pour" ? out.pour : out.rows).push_back(std::move(row));
   }
   return out;
 }

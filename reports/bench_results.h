@@ -11,7 +11,8 @@
 namespace ballbench {
 
 struct BenchRow {
-  std::string engine, profile, scene;  // from the benchmark name step/ENGINE/PROFILE/SCENE/N
+  std::string window = "step";         // "step" (a few steps after warm-up) or "pour" (the first 100 steps)
+  std::string engine, profile, scene;  // from the benchmark name WINDOW/ENGINE/PROFILE/SCENE/N
   long n = 0;
   double ns_per_ball_step = 0;         // the benchmark's counter
   std::optional<double> steps_per_s;              // when the benchmark reports it
@@ -22,11 +23,12 @@ struct BenchRow {
 
 struct BenchResults {
   nlohmann::json context;              // Google Benchmark's context: host, CPU, library versions
-  std::vector<BenchRow> rows;          // in the file's order; aggregates (mean, median) left out
+  std::vector<BenchRow> rows;          // step/ rows in the file's order; aggregates (mean, median) left out
+  std::vector<BenchRow> pour;          // pour/ rows (window "pour"), apart: they are not scaling points
 };
 
-// Rows whose names do not start step/ENGINE/PROFILE/SCENE/N (other benchmarks in the same file) are
-// skipped. Throws InputError naming the file if it is not Google Benchmark JSON.
+// Rows whose names do not start step/ or pour/ENGINE/PROFILE/SCENE/N (other benchmarks in the same
+// file) are skipped. Throws InputError naming the file if it is not Google Benchmark JSON.
 BenchResults read_bench_file(const std::string& path);
 
 }  // namespace ballbench

@@ -261,6 +261,12 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
           largest->n, *largest->steps_per_s,
           largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
           largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
+    for (const BenchRow& r : bench.pour)
+      if (r.scene == scene && r.engine == "home" && r.error.empty() && r.steps_per_s)
+        put("\nOver the first second of the pour instead (100 steps from rest, no warm-up; `pour/home/default/{}/{}`), "
+            "`home` at {} balls makes {:.1f} steps per second: balls reach the floor and pile up, and the grid's cells "
+            "grow with the fastest fall (core/solver/PERFORMANCE.md).\n",
+            r.scene, r.n, r.n, *r.steps_per_s);
     put("\n");
   }
 }

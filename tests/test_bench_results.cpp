@@ -23,7 +23,9 @@ TEST(BenchResults, ReadsStepBenchmarksFromGoogleBenchmarkJson) {
     {"name": "step/home/default/gas/1000_mean", "run_type": "aggregate", "ns_per_ball_step": 1},
     {"name": "BM_other", "run_type": "iteration"},
     {"name": "step/home/default/bowl/1000000", "run_type": "iteration", "ns_per_ball_step": 20,
-     "peak_rss_bytes_per_ball": 150}
+     "peak_rss_bytes_per_ball": 150},
+    {"name": "pour/home/default/bowl/1000000/iterations:100/real_time", "run_type": "iteration",
+     "ns_per_ball_step": 300, "steps_per_s": 3.3}
   ]})";
   const BenchResults b = read_bench_file(path.string());
   std::filesystem::remove(path);
@@ -37,6 +39,11 @@ TEST(BenchResults, ReadsStepBenchmarksFromGoogleBenchmarkJson) {
   EXPECT_EQ(b.rows[1].error, "ode: out of memory");
   EXPECT_EQ(b.rows[2].n, 1000000);
   EXPECT_EQ(b.rows[2].peak_rss_bytes_per_ball, 150);
+  // The pour's window is kept apart: it is not a point of the scaling curve.
+  ASSERT_EQ(b.pour.size(), 1u);
+  EXPECT_EQ(b.pour[0].window, "pour");
+  EXPECT_EQ(b.pour[0].n, 1000000);
+  EXPECT_EQ(b.pour[0].steps_per_s, 3.3);
 }
 
 TEST(BenchResults, AFileThatIsNotBenchmarkJsonIsAnInputError) {

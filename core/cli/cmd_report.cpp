@@ -46,10 +46,10 @@ Suite quick_suite() {
   s.stress_scenes = {"seed-box"};
   s.stress_levels = 5;
   // Every engine up to 10^4 balls, ours to 10^6 as well; the 10^6 bowl alone in its own process,
-  // for its peak memory.
+  // for its peak memory, with the pour's first second (the same scene, built once).
   s.bench_filters = {
       "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas/(100000|1000000)|bowl/100000)(/|$)",
-      "^step/home/default/bowl/1000000(/|$)"};
+      "^(step|pour)/home/default/bowl/1000000(/|$)"};
   s.bench_min_time = 0.05;
   s.timeout_s = 120;
   return s;
@@ -63,7 +63,7 @@ Suite full_suite() {
   s.stress_levels = 6;
   // Everything registered: 10 .. 10^5 balls, 10^6 for ours (the 10^6 bowl in its own process).
   s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
-                     "^step/home/default/bowl/1000000(/|$)"};
+                     "^(step|pour)/home/default/bowl/1000000(/|$)"};
   s.bench_min_time = 0.2;
   s.timeout_s = 600;
   return s;
