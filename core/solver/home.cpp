@@ -109,7 +109,7 @@ class Home final : public Engine {
         v_(scene.initial.vel),
         t_local_(n_),
         count_(n_, 0),
-        stamp_(n_, 0),
+        in_cluster_(n_, 0),
         active_(n_, 0),
         pool_(thread_count(n_, s.threads)),
         pair_hits_(pool_.parts()),
@@ -124,8 +124,6 @@ class Home final : public Engine {
   }
 
   void step(double dt) override {
-    // From the second step on; with a neighbour list, when the list is rebuilt (rebuild_list).
-    if (!sc_.no_pairs && !listed_ && reorder_ > 0 && steps_ % reorder_ == 1 % reorder_) reorder_by_cell();
     ++steps_;
     t_ += dt;
     dt_ = dt;
@@ -170,7 +168,18 @@ class Home final : public Engine {
       return;
     }
     vbound_ = max_speed() * kSpeedMargin;
-    if (!sc_.no_pairs) grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_);
+    if (sc_.no_pairs) return;
+    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_);
+    if (!mid_step) renumber_if_due();
+  }
+
+  // Renumbering in cell order (reorder_by_cell) right after a grid's build at the start of a step,
+  // when reorder_ steps have passed since the last. Returns whether it did.
+  bool renumber_if_due() {
+    if (reorder_ <= 0 || steps_ - renumbered_at_ < reorder_ || grid_.balls() != n_) return false;
+    reorder_by_cell();
+    renumbered_at_ = steps_;
+    return true;
   }
 
   double max_speed() const { return n_ > 0 ? std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0; }
@@ -215,11 +224,7 @@ class Home final : public Engine {
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
     grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
-    const bool renumber = may_renumber && reorder_ > 0 && steps_ - renumbered_at_ >= reorder_ && grid_.balls() == n_;
-    if (renumber) {
-      reorder_by_cell();
-      renumbered_at_ = steps_;
-    }
+    const bool renumber = may_renumber && renumber_if_due();
     list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, renumber ? nullptr : grid_.id(), pool_);
     built_at_ = p_;
     // A ball farther than 2 half_skin from every wall now starts each step the list covers within
@@ -548,36 +553,41 @@ class Home final : public Engine {
     });
   }
 
-  // Renumbers the balls in the cell order of the last grid (slot s becomes ball s). Everything
-  // indexed by ball moves with them; the warm-start impulses are re-keyed.
+  // Renumbers the balls in the cell order of the grid just built (slot s becomes ball s). Everything
+  // indexed by ball moves with them; the warm-start impulses are re-keyed. No array is copied (at
+  // 10^6 balls each copy would raise the peak memory): positions and velocities come from the
+  // grid's own copies, which are the state in slot order, and the other per-ball arrays are
+  // permuted in place along the permutation's cycles.
   void reorder_by_cell() {
     const int* id = grid_.id();
-    if (grid_.balls() != n_) return;
-    inv_.resize(n_);
-    for (int s = 0; s < n_; ++s) inv_[id[s]] = s;
-    auto permute_rows = [&](Eigen::MatrixX2d& m) {
-      scratch_.resize(n_, 2);
-      const int parts = pool_.parts();
-      pool_.run([&](int p) {
-        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
-        for (long s = b; s < e; ++s) scratch_(s, 0) = m(id[s], 0), scratch_(s, 1) = m(id[s], 1);
+    const int parts = pool_.parts();
+    pool_.run([&](int p) {
+      const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+      std::copy(grid_.x() + b, grid_.x() + e, p_.col(0).data() + b);
+      std::copy(grid_.y() + b, grid_.y() + e, p_.col(1).data() + b);
+      std::copy(grid_.vx() + b, grid_.vx() + e, v_.col(0).data() + b);
+      std::copy(grid_.vy() + b, grid_.vy() + e, v_.col(1).data() + b);
+    });
+    // active_ is free here (the contact pass sets it after the broad phase): it marks the slots done.
+    auto permute = [&](auto* a) {
+      std::fill(active_.begin(), active_.end(), 0);
+      for (int s = 0; s < n_; ++s) {
+        if (active_[s]) continue;
+        const auto first = a[s];  // the cycle s <- id[s] <- id[id[s]] ... back to s
+        int k = s;
+        for (; id[k] != s; k = id[k]) a[k] = a[id[k]], active_[k] = 1;
+        a[k] = first, active_[k] = 1;
+      }
+    };
+    if (r_.size()) permute(r_.data());
+    if (inv_m_.size()) permute(inv_m_.data());
+    permute(ext_.data());
+    permute(count_.data());
+    grid_.renumbered([&](const int* new_number) {
+      warm_entries_.clear();
+      warm_.for_each([&](const WarmStart::Entry& e) {
+        warm_entries_.push_back({new_number[e.i], e.j >= 0 ? new_number[e.j] : e.j, e.impulse});
       });
-      m.swap(scratch_);
-    };
-    permute_rows(p_);
-    permute_rows(v_);
-    auto permute = [&](auto& a) {
-      auto copy = a;
-      for (int s = 0; s < n_; ++s) a[s] = copy[id[s]];
-    };
-    if (r_.size()) permute(r_);
-    if (inv_m_.size()) permute(inv_m_);
-    permute(ext_);
-    permute(count_);
-    grid_.renumbered();
-    warm_entries_.clear();
-    warm_.for_each([&](const WarmStart::Entry& e) {
-      warm_entries_.push_back({inv_[e.i], e.j >= 0 ? inv_[e.j] : e.j, e.impulse});
     });
     warm_.assign(n_, warm_entries_);
   }
@@ -586,12 +596,11 @@ class Home final : public Engine {
   // touching cluster around it at once (the same sequential impulses, to the velocity tolerance),
   // rather than one zero-time event at a time (an inelastic collapse of round-off otherwise).
   void resolve_resting_cluster(int i, int j, double t) {
-    ++stamp_now_;
     cluster_.clear();
     contacts_.clear();
     auto enter = [&](int b) {
-      if (stamp_[b] == stamp_now_) return;
-      stamp_[b] = stamp_now_;
+      if (in_cluster_[b]) return;
+      in_cluster_[b] = 1;
       advance(b, t);
       cluster_.push_back(b);
     };
@@ -604,7 +613,7 @@ class Home final : public Engine {
       if (sc_.no_pairs) continue;
       grid_.for_each_near(a, [&](int b) {
         if (b == a) return;
-        if (stamp_[b] == stamp_now_) {
+        if (in_cluster_[b]) {
           if (b > a) return;  // both in the cluster: the pair is added once, from the larger index
         } else {
           advance(b, t);  // along its own line: its queued prediction stays valid
@@ -616,6 +625,7 @@ class Home final : public Engine {
     // fight each other); then the step's round-off tolerance rises to twice what the solve left,
     // so the same residual cannot fire the same cluster again. Overlap stays below residual x dt,
     // and the next contact pass closes it.
+    for (int b : cluster_) in_cluster_[b] = 0;
     const double left = solve_contacts(kClusterIterations, 0.5 * v_tol_);
     v_tol_ = std::max(v_tol_, 2.0 * left);
     for (int b : cluster_) ++count_[b];
@@ -847,8 +857,7 @@ class Home final : public Engine {
   Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
-  std::vector<uint32_t> stamp_;   // cluster membership: stamp_[b] == stamp_now_
-  uint32_t stamp_now_ = 0;
+  std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each)
   std::vector<int> cluster_;
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   ForkJoin pool_;
@@ -867,11 +876,9 @@ class Home final : public Engine {
   std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
   bool extent_fresh_ = false;     // extent_ describes the state now
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
-  long renumbered_at_ = 0;        // listed_: the step of the last renumbering
+  long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
   std::vector<int> ext_;          // ball -> its index in the scene (balls are renumbered, see reorder_by_cell)
-  std::vector<int> inv_;          // scratch: old ball number -> new
-  Eigen::MatrixX2d scratch_;      // scratch for permuting rows
   std::vector<Contact> contacts_;
   WarmStart warm_;                // impulses at the end of the last contact pass
   std::vector<WarmStart::Entry> warm_entries_;  // scratch for rebuilding warm_

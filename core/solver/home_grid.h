@@ -54,9 +54,15 @@ class HomeGrid {
   }
 
   // The balls were renumbered in slot order (ball s is the ball in slot s): the grid now says so.
-  void renumbered() {
+  // `rekey(new_number)` runs first, with new_number[old ball] = its slot, in the ball -> cell array
+  // (dead from here on: no copy, at 10^6 balls every copy raises the peak memory).
+  template <class F>
+  void renumbered(F&& rekey) {
+    const int n = balls();
+    for (int s = 0; s < n; ++s) cell_of_[id_[s]] = s;
+    rekey(static_cast<const int*>(cell_of_.data()));
     cell_of_ = cell_sorted_;
-    for (int s = 0; s < balls(); ++s) id_[s] = s;
+    for (int s = 0; s < n; ++s) id_[s] = s;
   }
 
   // Calls f(j) for every ball j in the 3 x 3 cells around the cell ball i was sorted into.
