@@ -20,8 +20,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-bool finite(const State& s) { return s.pos.allFinite() && s.vel.allFinite(); }
-
 constexpr uint64_t kFnvPrime = 1099511628211ull;
 
 // FNV-1a taking a 64-bit word per round instead of a byte: a multiply per word, not per byte, so
@@ -154,12 +152,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     // good state, from which the final figures (positions, jitter, speed distribution) come.
     engine->read(next);
     r.out_of_plane_max = std::max(r.out_of_plane_max, engine->out_of_plane());
-    if (!finite(next)) {
+    if (!metrics.observe_motion(state, next)) {  // tunnelling, every step, and finiteness in one sweep
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
       r.error = fmt::format("non-finite position or velocity at step {}", k);
       break;
     }
-    metrics.observe_motion(state, next);  // tunnelling: every step
     std::swap(state, next);
     if (reference) {
       try {

@@ -57,6 +57,33 @@ class UniformGrid {
     for (int iy = cy > 0 ? cy - 1 : 0; iy <= cy + 1 && iy < ny_; ++iy) f(start_[iy * nx_ + x0], start_[iy * nx_ + x1 + 1]);
   }
 
+  // Every ball within `reach` of point (x, y), and others, as runs of positions in order(): f(begin,
+  // end) once per row of the cells that overlap the square of side 2 reach around the point.
+  template <class F>
+  void for_each_within_range(double x, double y, double reach, F&& f) const {
+    const int x0 = cell_x(x - reach), x1 = cell_x(x + reach);
+    for (int iy = cell_y(y - reach); iy <= cell_y(y + reach); ++iy) f(start_[iy * nx_ + x0], start_[iy * nx_ + x1 + 1]);
+  }
+
+  // Every pair of positions in order() in the same or adjacent cells, as runs: f(a, begin, end)
+  // for each position a and each run [begin, end) of later partners (the rest of a's cell and the
+  // next cell in its row; the three cells below in the next row). Each pair lies in exactly one run.
+  template <class F>
+  void for_each_forward_range(F&& f) const {
+    for (int cy = 0; cy < ny_; ++cy)
+      for (int cx = 0; cx < nx_; ++cx) {
+        const int c = cy * nx_ + cx;
+        const int row_end = start_[cy * nx_ + (cx + 1 < nx_ ? cx + 2 : cx + 1)];
+        const bool below = cy + 1 < ny_;
+        const int lo = below ? start_[(cy + 1) * nx_ + (cx > 0 ? cx - 1 : 0)] : 0;
+        const int hi = below ? start_[(cy + 1) * nx_ + (cx + 1 < nx_ ? cx + 2 : cx + 1)] : 0;
+        for (int a = start_[c]; a < start_[c + 1]; ++a) {
+          f(a, a + 1, row_end);
+          if (lo < hi) f(a, lo, hi);
+        }
+      }
+  }
+
   // Ball indices sorted by cell: the balls of one cell, and of a row of cells, are contiguous.
   const std::vector<int>& order() const { return order_; }
 
@@ -69,8 +96,10 @@ class UniformGrid {
     const int c = cy * nx_ + cx;
     for (int b = start_[c]; b < start_[c + 1]; ++b) f(i, order_[b]);
   }
-  int cell_x(double x) const { return clamp_cell(std::floor((x - x0_) * inv_cell_), nx_); }
-  int cell_y(double y) const { return clamp_cell(std::floor((y - y0_) * inv_cell_), ny_); }
+  int cell_x(double x) const { return clamp_cell((x - x0_) * inv_cell_, nx_); }
+  int cell_y(double y) const { return clamp_cell((y - y0_) * inv_cell_, ny_); }
+  // floor(c) clamped to [0, n - 1], by truncation: the same for c >= 0, and a negative c clamps to
+  // 0 either way. std::floor is a library call without SSE4.1, and cost more than the rest of a build.
   static int clamp_cell(double c, int n) { return c < 0 ? 0 : c >= n ? n - 1 : static_cast<int>(c); }
 
   double x0_ = 0, y0_ = 0, cell_ = 1, inv_cell_ = 1;

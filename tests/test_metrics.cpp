@@ -1,6 +1,12 @@
 // Metrics on hand-made state sequences with known answers.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+#include <random>
+#include <utility>
+#include <vector>
+
 #include "metrics/energy.h"
 #include "metrics/metrics.h"
 #include "metrics/tunnelling.h"
@@ -120,6 +126,196 @@ TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
   feed(wide, {state({-half2 / 2, b2 / 2, half2 / 2, -b2 / 2}, {0, 0, 0, 0}),
               state({half2 / 2, b2 / 2, -half2 / 2, -b2 / 2}, {0, 0, 0, 0})});
   EXPECT_EQ(wide.summary().tunnelling_pair, 0);
+}
+
+// The definition of tunnelling.h, over every pair: the reference the search must match exactly.
+int brute_force_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance) {
+  int count = 0;
+  const double h = cur.t - prev.t;
+  for (int i = 0; i < cur.n(); ++i)
+    for (int j = i + 1; j < cur.n(); ++j) {
+      const double rs = radius(i) + radius(j);
+      const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
+      const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
+      if (d0.norm() < rs || d1.norm() < rs) continue;
+      const double bend =
+          0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
+      if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
+    }
+  return count;
+}
+
+// Random motion that puts every branch of the search to work: unequal radii, balls kicked to high
+// speed (escaping their allowance), teleports inside and far outside the box, balls thrown through
+// a neighbour (pass-throughs that count), and some leaving the box.
+class RandomMotion {
+ public:
+  RandomMotion(int n, unsigned seed) : rng_(seed), radius_(n) {
+    std::uniform_real_distribution<double> r(0.05, 0.3), v(-5.0, 5.0);
+    half_ = 0.6 * std::sqrt(static_cast<double>(n));
+    box_.kind = ContainerKind::Box, box_.min = {-half_, -half_}, box_.max = {half_, half_};
+    std::uniform_real_distribution<double> x(-half_, half_);
+    state_.resize(n);
+    for (int i = 0; i < n; ++i) {
+      radius_(i) = r(rng_);
+      state_.pos(i, 0) = x(rng_), state_.pos(i, 1) = x(rng_);
+      state_.vel(i, 0) = v(rng_), state_.vel(i, 1) = v(rng_);
+    }
+  }
+  const Eigen::VectorXd& radius() const { return radius_; }
+  const Container& box() const { return box_; }
+  const State& state() const { return state_; }
+
+  // The next sample, dt = 0.01 later.
+  const State& step() {
+    const int n = state_.n();
+    const State prev = state_;
+    std::uniform_real_distribution<double> u(0.0, 1.0), v(-5.0, 5.0), x(-half_, half_);
+    std::uniform_int_distribution<int> ball(0, n - 1);
+    for (int i = 0; i < n; ++i) {
+      if (u(rng_) < 0.02) state_.vel(i, 0) = 30 * v(rng_), state_.vel(i, 1) = 30 * v(rng_);  // kicked hard
+      if (u(rng_) < 0.02) state_.vel(i, 0) = v(rng_), state_.vel(i, 1) = v(rng_);           // calmed
+    }
+    state_.pos += 0.01 * state_.vel;
+    state_.t += 0.01;
+    for (int k = 0; k < std::max(1, n / 100); ++k) {  // teleports, a few far outside the box
+      const int i = ball(rng_);
+      const double far = u(rng_) < 0.2 ? 50.0 : 1.0;
+      state_.pos(i, 0) = far * x(rng_), state_.pos(i, 1) = far * x(rng_);
+    }
+    for (int k = 0; k < std::max(2, n / 30); ++k) {  // thrown through a neighbour: mirrored across it
+      const int i = ball(rng_), j = ball(rng_);
+      if (i == j) continue;
+      const Eigen::Vector2d side = Eigen::Vector2d(v(rng_), v(rng_)).normalized();
+      const double rs = radius_(i) + radius_(j), off = rs * u(rng_);
+      const Eigen::Vector2d across(-side.y(), side.x());
+      const Eigen::Vector2d pj = prev.pos.row(j).transpose();
+      state_.pos.row(i) = (pj + (1.1 + u(rng_)) * rs * side + off * across).transpose();
+      state_.pos.row(j) = pj.transpose();
+      // Its previous sample was on the other side: rewrite it in the history we hand out.
+      history_fix_.push_back({i, pj - (1.1 + u(rng_)) * rs * side + off * across});
+    }
+    return state_;
+  }
+  // Throws prepare the previous sample too: apply them to a copy of it.
+  State previous_with_throws(const State& prev) {
+    State p = prev;
+    for (const auto& f : history_fix_) p.pos.row(f.first) = f.second.transpose();
+    history_fix_.clear();
+    return p;
+  }
+
+ private:
+  std::mt19937 rng_;
+  Eigen::VectorXd radius_;
+  Container box_;
+  double half_ = 1;
+  State state_;
+  std::vector<std::pair<int, Eigen::Vector2d>> history_fix_;
+};
+
+TEST(Tunnelling, TheListedSearchCountsExactlyTheBruteForcePassThroughs) {
+  struct Tuning {
+    double allowance_radii, rebuild_share;
+  };
+  // The default; a tiny allowance (most balls escape, rebuilds often); never rebuilt (escaped balls
+  // pile up and are searched among themselves on a grid); a huge allowance (long list).
+  const Tuning tunings[] = {{3.0, 0.1}, {0.2, 0.02}, {0.2, 2.0}, {10.0, 0.1}};
+  long total = 0;
+  for (const double tolerance : {0.02, 0.0, 0.3, -0.05})
+    for (const Tuning& tuning : tunings) {
+      RandomMotion motion(300, 7);
+      TunnellingCheck check(motion.radius(), motion.box(), tolerance);
+      check.set_tuning(tuning.allowance_radii, tuning.rebuild_share);
+      State prev = motion.state();
+      for (int k = 1; k <= 120; ++k) {
+        const State cur = motion.step();
+        prev = motion.previous_with_throws(prev);
+        const StepTunnelling got = check.step(prev, cur);
+        const int want = brute_force_passthroughs(prev, cur, motion.radius(), tolerance);
+        ASSERT_TRUE(got.finite);
+        ASSERT_EQ(got.pair, want) << "step " << k << ", tolerance " << tolerance << ", allowance "
+                                  << tuning.allowance_radii << ", rebuild share " << tuning.rebuild_share;
+        ASSERT_EQ(got.wall, wall_escapes(prev, cur, motion.box())) << "step " << k;
+        total += want;
+        prev = cur;
+      }
+      if (tuning.rebuild_share < 1) {
+        EXPECT_GT(check.rebuilds(), 2) << "the list was never rebuilt";
+      }
+    }
+  EXPECT_GT(total, 1000);  // the comparison saw many pass-throughs that count
+}
+
+TEST(Tunnelling, ATeleportThroughARowOfBallsIsCaughtWithoutARebuild) {
+  // A 30 x 30 lattice (spacing 1, radius 0.25) gliding together at 12 m/s (no relative motion),
+  // and one more ball beside it that jumps across row 10 in one step: 30 pass-throughs.
+  const int side = 30, n = side * side + 1;
+  Eigen::VectorXd radius = Eigen::VectorXd::Constant(n, 0.25);
+  Container box;
+  box.kind = ContainerKind::Box, box.min = {-100, -100}, box.max = {100, 100};
+  State s;
+  s.resize(n);
+  for (int i = 0; i < side * side; ++i) s.pos(i, 0) = i % side, s.pos(i, 1) = i / side;
+  s.pos(n - 1, 0) = -3, s.pos(n - 1, 1) = 10;
+  s.vel.col(0).setConstant(12.0), s.vel.col(1).setZero();
+  TunnellingCheck check(radius, box, 0.02);
+  for (int k = 0; k < 5; ++k) {
+    State next = s;
+    next.pos.col(0).array() += 0.12, next.t += 0.01;
+    EXPECT_EQ(check.step(s, next).pair, 0);
+    s = next;
+  }
+  EXPECT_EQ(check.rebuilds(), 1);
+  State jump = s;
+  jump.pos.col(0).array() += 0.12, jump.t += 0.01;
+  jump.pos(n - 1, 0) = 40;
+  EXPECT_EQ(brute_force_passthroughs(s, jump, radius, 0.02), side);
+  EXPECT_EQ(check.step(s, jump).pair, side);
+  EXPECT_EQ(check.rebuilds(), 1);  // caught by the search of escaped balls, on the same list
+}
+
+TEST(Tunnelling, APassAtTheEdgeOfBothAllowancesIsListed) {
+  // Radius 0.25 (rs 0.5), default allowance a = 3 r = 0.75: pairs with references closer than
+  // rs + 2 a = 2 are listed. Balls 0 and 1, references 1.955 apart (just listed), each step up to
+  // 0.744 from its reference (contained) and pass 0.475 apart: the tightest pass the list must hold.
+  const int n = 23;
+  Eigen::VectorXd radius = Eigen::VectorXd::Constant(n, 0.25);
+  Container box;  // open space
+  State s;
+  s.resize(n);
+  s.vel.setZero();
+  for (int i = 2; i < n; ++i) s.pos(i, 0) = 100 + 3 * i, s.pos(i, 1) = 50;  // far away
+  s.pos(0, 0) = 0, s.pos(0, 1) = 0, s.pos(1, 0) = 1.955, s.pos(1, 1) = 0;
+  TunnellingCheck check(radius, box, 0.02);
+  auto next = [&](double x0, double y0, double x1, double y1, double driver) {
+    State t = s;
+    t.t += 0.01;
+    t.pos(0, 0) = x0, t.pos(0, 1) = y0, t.pos(1, 0) = x1, t.pos(1, 1) = y1, t.pos(2, 0) += driver;
+    const int want = brute_force_passthroughs(s, t, radius, 0.02);
+    const int got = check.step(s, t).pair;
+    s = t;
+    EXPECT_EQ(got, want);
+    return got;
+  };
+  EXPECT_EQ(next(0, 0, 1.955, 0, 1.0), 0);  // ball 2 moves: the list is built, references here
+  EXPECT_EQ(next(0.74, -0.08, 1.215, 0.08, 0), 0);
+  EXPECT_EQ(next(0.74, 0.08, 1.215, -0.08, 0), 1);  // relative path (-0.475, -0.16) -> (-0.475, 0.16)
+  EXPECT_EQ(check.rebuilds(), 1);
+}
+
+TEST(Tunnelling, ANonFiniteStateCountsNothing) {
+  const Scene s = two_balls();
+  MetricsAccumulator m(s, {});
+  // Ball 1 leaves through the floor and ball 0's velocity turns NaN in the same step.
+  const State before = state({-1, 0, 1, -4.9}, {0, 0, 0, 0});
+  State after = state({-1, 0, 1, -5.2}, {0, 0, 0, 0});
+  EXPECT_TRUE(m.observe_motion(before, before));
+  after.vel(0, 1) = std::nan("");
+  EXPECT_FALSE(m.observe_motion(before, after));
+  after.vel(0, 1) = 0, after.pos(1, 0) = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(m.observe_motion(before, after));
+  EXPECT_EQ(m.summary().tunnelling_wall, 0);
 }
 
 TEST(Sticking, APairHeldOverlappingKPlusOneSamplesCountsOne) {

@@ -13,6 +13,7 @@ MetricsAccumulator::MetricsAccumulator(const Scene& scene, MetricsConfig config)
     : scene_(scene),
       cfg_(config),
       sticking_(scene.n(), config.stuck_samples),
+      tunnelling_(scene.radius, scene.container, config.contact_tolerance),
       deep_in_wall_(scene.n(), 0),
       wall_leaving_(scene.n(), 0) {
   m_.energy.reference = energy_reference(scene);
@@ -75,9 +76,11 @@ void MetricsAccumulator::observe(const State& s) {
   ++m_.samples;
 }
 
-void MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
-  m_.tunnelling_wall += wall_escapes(prev, cur, scene_.container);
-  m_.tunnelling_pair += pair_passthroughs(prev, cur, scene_.radius, cfg_.contact_tolerance, passthrough_);
+bool MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
+  const StepTunnelling t = tunnelling_.step(prev, cur);
+  m_.tunnelling_wall += t.wall;
+  m_.tunnelling_pair += t.pair;
+  return t.finite;
 }
 
 bool MetricsAccumulator::energy_blew_up() const {

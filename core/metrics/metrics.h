@@ -61,8 +61,10 @@ class MetricsAccumulator {
 
   // Feeds one sample; the first one is the initial state.
   void observe(const State& s);
-  // Feeds one step of motion, from `prev` to `cur` (every step, sampled or not): tunnelling.
-  void observe_motion(const State& prev, const State& cur);
+  // Feeds one step of motion, from `prev` to `cur` (every step, sampled or not): tunnelling. False,
+  // and nothing counted, when a position or velocity of `cur` is not finite (checked in the same
+  // sweep over the states).
+  bool observe_motion(const State& prev, const State& cur);
   // The energy of the last sample exceeded the divergence bound.
   bool energy_blew_up() const;
   const MetricsSummary& summary() const { return m_; }
@@ -73,7 +75,7 @@ class MetricsAccumulator {
   MetricsSummary m_;
   StickingTracker sticking_;
   UniformGrid grid_;
-  PassthroughScratch passthrough_;
+  TunnellingCheck tunnelling_;
   std::vector<Overlap> overlaps_, deep_;
   std::vector<char> deep_in_wall_, wall_leaving_, deep_leaving_;
   double penetration_sum_ = 0;

@@ -24,61 +24,247 @@ double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
   return (d0 + s * w).norm();
 }
 
-int pair_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance,
-                      PassthroughScratch& scratch) {
-  const int n = cur.n();
-  if (n < 2) return 0;
-  // A straight relative path that starts and ends at least r_i + r_j apart but comes within
-  // (1 - tolerance)(r_i + r_j) of contact crosses that circle along a chord at least
-  // 2 s (r_i + r_j) long, s = sqrt(1 - (1 - tolerance)^2), so the two balls moved at least that much
-  // between them. Pairs that moved less cannot count; in most steps of most scenes no ball moves
-  // that far, and the search is skipped.
-  const double s = std::sqrt(1.0 - (1.0 - tolerance) * (1.0 - tolerance));
-  Eigen::VectorXd& moved = scratch.moved;
-  moved.resize(n);
-  moved.noalias() = (cur.pos - prev.pos).rowwise().norm();
-  const double dmax = moved.maxCoeff();
-  // One of the two moved at least s (r_i + r_j) >= 2 s r_min: the search starts from those balls
-  // only (in most steps of most scenes, none).
-  const double mover = 2.0 * s * radius.minCoeff();
-  if (dmax < mover) return 0;
-  // Each ball sweeps a segment within half its displacement of the midpoint, so a pair whose
-  // segments come within r_i + r_j has midpoints within 2 r_max + d_max: adjacent grid cells.
-  Eigen::MatrixX2d& mid = scratch.mid;
-  mid.resize(n, 2);
-  mid.noalias() = 0.5 * (prev.pos + cur.pos);
-  UniformGrid& grid = scratch.grid;
-  grid.build(mid, 2.0 * radius.maxCoeff() + dmax);
+bool passes_through(const State& prev, const State& cur, int i, int j, double rs, double tolerance) {
+  const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
+  const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
+  if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) return false;  // overlapping: sticking's business
   const double h = cur.t - prev.t;
-  const auto& order = grid.order();
-  // Plain references, not a structured binding: clang 14 (the fuzz preset) cannot capture those.
-  std::vector<double>&sx = scratch.sx, &sy = scratch.sy, &smoved = scratch.smoved, &sr = scratch.sradius;
-  std::vector<int>& sid = scratch.sid;
-  sx.resize(n), sy.resize(n), smoved.resize(n), sr.resize(n), sid.resize(n);
+  const double bend =
+      0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
+  return closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend;
+}
+
+namespace {
+
+// Filters drop a pair only when it misses by more than this share of r_i + r_j: far above the
+// rounding of the quantities they compare for coordinates up to ~10^8 radii.
+constexpr double kMargin = 1e-6;
+
+}  // namespace
+
+TunnellingCheck::TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance)
+    : radius_(radius), box_(box), tolerance_(tolerance) {
+  if (radius_.size() > 0) {
+    r_min_ = radius_.minCoeff(), r_max_ = radius_.maxCoeff();
+    equal_radii_ = r_min_ == r_max_;
+  }
+  never_ = !(tolerance < 1.0);  // then (1 - tolerance) rs - bend <= 0 <= any closest approach
+  reach_ = std::max(1.0, 1.0 - tolerance) * (1.0 + kMargin);
+  // A straight relative path that starts and ends at least rs apart but comes within
+  // (1 - tolerance) rs of contact crosses that circle along a chord at least 2 s rs long,
+  // s = sqrt(1 - (1 - tolerance)^2): the relative step |w| is at least that long. Without a
+  // positive tolerance there is no such bound (s = 0).
+  const double s = tolerance > 0 && tolerance < 1 ? std::sqrt(1.0 - (1.0 - tolerance) * (1.0 - tolerance)) : 0.0;
+  const double chord = std::max(0.0, 2.0 * s - kMargin);
+  chord2_ = chord * chord;
+  close2_ = (1.0 - tolerance + kMargin) * (1.0 - tolerance + kMargin);
+  line_filter_ = tolerance > 0;
+  // |w| <= |d_i| + |d_j| and rs >= 2 r_min: one of the pair stepped at least s rs >= 2 s r_min.
+  mover2_ = (chord * r_min_) * (chord * r_min_);
+}
+
+void TunnellingCheck::set_tuning(double allowance_radii, double rebuild_share) {
+  allowance_radii_ = allowance_radii, rebuild_share_ = rebuild_share;
+  built_ = false;
+}
+
+double* TunnellingCheck::records() {
+  // 32 bytes per ball, 32-byte aligned: one cache line per ball's record.
+  const auto misalign = reinterpret_cast<uintptr_t>(rec_.data()) % 32;
+  return rec_.data() + (misalign ? (32 - misalign) / sizeof(double) : 0);
+}
+
+StepTunnelling TunnellingCheck::step(const State& prev, const State& cur) {
+  const int n = cur.n();
+  const bool listed = built_ && ref_.rows() == n;
+  if (static_cast<int>(rec_.size()) < 4 * n + 4) rec_.resize(4 * n + 4);
+  if (static_cast<int>(is_escaped_.size()) < n) is_escaped_.assign(n, 0);
+  const Sweep sw = sweep(prev, cur, listed);
+  if (!sw.finite) return {false, 0, 0};
+  StepTunnelling out;
+  out.wall = sw.wall;
+  if (n < 2 || never_ || sw.step2_max < mover2_) return out;  // no step long enough for a pass-through
+  if (!listed || static_cast<double>(escaped_.size()) > rebuild_share_ * n) {
+    rebuild(prev, cur, std::sqrt(sw.step2_sum / n));
+  }
+  for (int e : escaped_) is_escaped_[e] = 1;
+  out.pair = count_listed(prev, cur) + count_escaped(prev, cur);
+  for (int e : escaped_) is_escaped_[e] = 0;
+  return out;
+}
+
+TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cur, bool contained) {
+  const int n = cur.n();
+  double* rec = records();
+  const double *px = prev.pos.col(0).data(), *py = prev.pos.col(1).data();
+  const double *cx = cur.pos.col(0).data(), *cy = cur.pos.col(1).data();
+  const double *vx = cur.vel.col(0).data(), *vy = cur.vel.col(1).data();
+  const bool box = box_.kind == ContainerKind::Box;
+  const double x0 = box_.min.x(), y0 = box_.min.y(), x1 = box_.max.x(), y1 = box_.max.y();
+  const double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
+  const double a2 = a_ * a_;
+  double nonfinite = 0;  // x - x is 0 for a finite x, NaN otherwise: the sum stays 0 iff all are finite
+  int wall = 0;
+  double m2max = 0, m2sum = 0;
+  escaped_.clear();
+  for (int i = 0; i < n; ++i) {
+    const double ax = px[i], ay = py[i], bx = cx[i], by = cy[i];
+    nonfinite += (bx - bx) + (by - by) + (vx[i] - vx[i]) + (vy[i] - vy[i]);
+    const bool in_before = !(ax < x0 || ay < y0 || ax > x1 || ay > y1);
+    const bool out_after = bx < x0 || by < y0 || bx > x1 || by > y1;
+    wall += box && in_before && out_after;
+    const double dx = bx - ax, dy = by - ay;
+    m2max = std::max(m2max, dx * dx + dy * dy);
+    m2sum += dx * dx + dy * dy;
+    double* r = rec + 4 * i;
+    r[0] = ax, r[1] = ay, r[2] = dx, r[3] = dy;
+    if (contained) {
+      const double ex = ax - rx[i], ey = ay - ry[i], fx = bx - rx[i], fy = by - ry[i];
+      if (!(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2)) escaped_.push_back(i);
+    }
+  }
+  return {nonfinite == 0, wall, m2max, m2sum};
+}
+
+void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_rms) {
+  const int n = cur.n();
+  ++rebuilds_;
+  built_ = true;
+  // A few radii, or two typical steps where balls step further (then a ball keeps its place in the
+  // list for a few steps); capped so that one far jump cannot make every pair a candidate.
+  a_ = std::clamp(2.0 * step_rms, allowance_radii_ * r_max_, 4.0 * allowance_radii_ * r_max_);
+  const double a2 = a_ * a_;
+  // References at the midpoints of this step, which is then contained for every ball whose half
+  // step is within a.
+  ref_.resize(n, 2);
+  double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
+  const double *px = prev.pos.col(0).data(), *py = prev.pos.col(1).data();
+  const double *cx = cur.pos.col(0).data(), *cy = cur.pos.col(1).data();
+  escaped_.clear();
+  for (int i = 0; i < n; ++i) {
+    rx[i] = 0.5 * (px[i] + cx[i]), ry[i] = 0.5 * (py[i] + cy[i]);
+    const double ex = px[i] - rx[i], ey = py[i] - ry[i], fx = cx[i] - rx[i], fy = cy[i] - ry[i];
+    if (!(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2)) escaped_.push_back(i);
+  }
+  grid_.build(ref_, 2.0 * reach_ * r_max_ + 2.0 * a_);
+  const std::vector<int>& ball = grid_.order();
+  sx_.resize(n), sy_.resize(n), sr_.resize(n);
   for (int a = 0; a < n; ++a) {
-    const int i = order[a];
-    sx[a] = mid(i, 0), sy[a] = mid(i, 1), smoved[a] = moved(i), sr[a] = radius(i), sid[a] = i;
+    const int i = ball[a];
+    sx_[a] = rx[i], sy_[a] = ry[i], sr_[a] = radius_[i];
+  }
+  // Listed: references closer than c (r_i + r_j) + 2 a, so in the same or adjacent cells. Appended
+  // without a branch: the distance test's outcome is random, and mispredictions cost more than it.
+  const double twice_a = 2.0 * a_;
+  size_t m = 0;
+  grid_.for_each_forward_range([&](int a, int begin, int end) {
+    if (list_.size() < m + (end - begin)) list_.resize(2 * (m + end - begin));
+    const double x = sx_[a], y = sy_[a], r = sr_[a];
+    const int i = ball[a];
+    for (int b = begin; b < end; ++b) {
+      const double dx = x - sx_[b], dy = y - sy_[b], range = reach_ * (r + sr_[b]) + twice_a;
+      list_[m] = {i, ball[b]};
+      m += dx * dx + dy * dy < range * range;
+    }
+  });
+  listed_ = m;
+}
+
+// Necessary conditions for a pass-through from the step records (see the constructor).
+inline bool TunnellingCheck::may_pass(int i, int j, double rs) const {
+  const double* rec = records();
+  const double *p = rec + 4 * i, *q = rec + 4 * j;
+  const double wx = p[2] - q[2], wy = p[3] - q[3], ww = wx * wx + wy * wy, rs2 = rs * rs;
+  if (ww < chord2_ * rs2) return false;
+  const double d0x = p[0] - q[0], d0y = p[1] - q[1];
+  const double t = ww > 0 ? std::clamp(-(d0x * wx + d0y * wy) / ww, 0.0, 1.0) : 0.0;
+  const double qx = d0x + t * wx, qy = d0y + t * wy;
+  return qx * qx + qy * qy < close2_ * rs2;
+}
+
+inline bool TunnellingCheck::judge(const State& prev, const State& cur, int i, int j, double rs) const {
+  return may_pass(i, j, rs) && passes_through(prev, cur, i, j, rs, tolerance_);
+}
+
+int TunnellingCheck::count_listed(const State& prev, const State& cur) {
+  // First the chord filter over every listed pair, without a branch (its outcome is random), then
+  // the rest on the few that pass.
+  if (survivors_.size() < listed_) survivors_.resize(listed_);
+  const double* rec = records();
+  const std::array<int, 2>* list = list_.data();
+  int* survivors = survivors_.data();
+  const double equal_rs = 2.0 * r_max_;
+  size_t m = 0;
+  constexpr size_t kAhead = 16;  // records fetched ahead: the partners lie at random in memory
+  for (size_t k = 0; k < listed_; ++k) {
+    if (k + kAhead < listed_) {
+      __builtin_prefetch(rec + 4 * list[k + kAhead][0]);
+      __builtin_prefetch(rec + 4 * list[k + kAhead][1]);
+    }
+    const int i = list[k][0], j = list[k][1];
+    const double *p = rec + 4 * i, *q = rec + 4 * j;
+    const double wx = p[2] - q[2], wy = p[3] - q[3], d0x = p[0] - q[0], d0y = p[1] - q[1];
+    const double rs = equal_radii_ ? equal_rs : radius_[i] + radius_[j], rs2 = rs * rs;
+    const double ww = wx * wx + wy * wy, dw = d0x * wx + d0y * wy;
+    survivors[m] = static_cast<int>(k);
+    // The chord, and the line through both samples passing within (1 - tolerance) rs: its distance
+    // squared is |d0|^2 - (d0.w)^2 / |w|^2, no nearer than the closest approach (exact for a
+    // positive tolerance; without one, every pair goes on).
+    m += !line_filter_ || (ww >= chord2_ * rs2 && (d0x * d0x + d0y * d0y) * ww - dw * dw < close2_ * rs2 * ww);
   }
   int count = 0;
-  for (int a = 0; a < n; ++a) {
-    if (smoved[a] < mover) continue;
-    grid.for_each_near_range(sx[a], sy[a], [&](int begin, int end) {
-      for (int b = begin; b < end; ++b) {
-        if (b == a || (smoved[b] >= mover && b < a)) continue;  // a pair of movers is seen from one side
-        const double rs = sr[a] + sr[b], travel = smoved[a] + smoved[b];
-        if (travel < 2.0 * s * rs) continue;
-        const double dx = sx[a] - sx[b], dy = sy[a] - sy[b], reach = rs + 0.5 * travel;
-        if (dx * dx + dy * dy >= reach * reach) continue;  // the segments never come within rs
-        const int i = sid[a], j = sid[b];
-        const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
-        const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
-        if (d0.squaredNorm() < rs * rs || d1.squaredNorm() < rs * rs) continue;  // overlapping: sticking's business
-        const double bend =
-            0.25 * h * ((cur.vel.row(i) - prev.vel.row(i)).norm() + (cur.vel.row(j) - prev.vel.row(j)).norm());
-        if (closest_approach(d0, d1) < (1.0 - tolerance) * rs - bend) ++count;
-      }
-    });
+  for (size_t k = 0; k < m; ++k) {
+    const int i = list[survivors[k]][0], j = list[survivors[k]][1];
+    // A pair with an escaped ball is judged by count_escaped() instead.
+    if (judge(prev, cur, i, j, radius_[i] + radius_[j]) && !is_escaped_[i] && !is_escaped_[j]) ++count;
   }
+  return count;
+}
+
+int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
+  const int m = static_cast<int>(escaped_.size());
+  if (m == 0) return 0;
+  const double* rec = records();
+  const std::vector<int>& ball = grid_.order();
+  int count = 0;
+  // Against contained balls: their references lie within c (r_e + r_j) + a of e's segment, so
+  // within c (r_e + r_j) + a + |d_e| / 2 of its midpoint.
+  double dmax = 0;
+  for (int e : escaped_) {
+    const double* r = rec + 4 * e;
+    const double step = std::sqrt(r[2] * r[2] + r[3] * r[3]);
+    dmax = std::max(dmax, step);
+    const double mx = r[0] + 0.5 * r[2], my = r[1] + 0.5 * r[3], re = radius_[e], slack = a_ + 0.5 * step;
+    auto against = [&](int begin, int end) {
+      for (int b = begin; b < end; ++b) {
+        const double dx = mx - sx_[b], dy = my - sy_[b], near = reach_ * (re + sr_[b]) + slack;
+        if (dx * dx + dy * dy >= near * near) continue;  // the reference is too far from e's path
+        const int j = ball[b];
+        if (!is_escaped_[j] && judge(prev, cur, e, j, re + radius_[j])) ++count;
+      }
+    };
+    grid_.for_each_within_range(mx, my, reach_ * (re + r_max_) + slack, against);
+  }
+  // Among themselves: segments that come within c (r_i + r_j) have midpoints within
+  // c (r_i + r_j) + (|d_i| + |d_j|) / 2, so in adjacent cells of that size.
+  if (m <= 32) {
+    for (int a = 0; a < m; ++a)
+      for (int b = a + 1; b < m; ++b) {
+        const int i = escaped_[a], j = escaped_[b];
+        if (judge(prev, cur, i, j, radius_[i] + radius_[j])) ++count;
+      }
+    return count;
+  }
+  escaped_mid_.resize(m, 2);
+  for (int a = 0; a < m; ++a) {
+    const double* r = rec + 4 * escaped_[a];
+    escaped_mid_(a, 0) = r[0] + 0.5 * r[2], escaped_mid_(a, 1) = r[1] + 0.5 * r[3];
+  }
+  escaped_grid_.build(escaped_mid_, 2.0 * reach_ * r_max_ + dmax);
+  escaped_grid_.for_each_candidate_pair([&](int a, int b) {
+    const int i = escaped_[a], j = escaped_[b];
+    if (judge(prev, cur, i, j, radius_[i] + radius_[j])) ++count;
+  });
   return count;
 }
 
