@@ -146,7 +146,7 @@ class Home final : public Engine {
   void read(State& out) const override {
     out.t = t_;
     out.resize(n_);
-    if (renumbered_at_ == 0) {
+    if (!renumbered_) {
       out.pos = p_, out.vel = v_;
       return;
     }
@@ -184,12 +184,12 @@ class Home final : public Engine {
     if (!mid_step) renumber_if_due();
   }
 
-  // Renumbering in cell order (reorder_by_cell) right after a grid's build at the start of a step,
-  // when reorder_ steps have passed since the last. Returns whether it did.
+  // Renumbering in cell order (reorder_by_cell) right after a grid's build at the start of a step:
+  // at the first, then when reorder_ steps have passed since the last. Returns whether it did.
   bool renumber_if_due() {
-    if (reorder_ <= 0 || steps_ - renumbered_at_ < reorder_ || grid_.balls() != n_) return false;
+    if (reorder_ <= 0 || (renumbered_ && steps_ - renumbered_at_ < reorder_) || grid_.balls() != n_) return false;
     reorder_by_cell();
-    renumbered_at_ = steps_;
+    renumbered_ = true, renumbered_at_ = steps_;
     return true;
   }
 
@@ -887,6 +887,7 @@ class Home final : public Engine {
   std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
   bool extent_fresh_ = false;     // extent_ describes the state now
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
+  bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
   std::vector<int> ball_of_;      // scene index -> ball (balls are renumbered, see reorder_by_cell)
