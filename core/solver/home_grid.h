@@ -83,7 +83,6 @@ class HomeGrid {
   double x0_ = 0, y0_ = 0, inv_cell_ = 1;
   int nx_ = 0, ny_ = 0;         // cells per row and rows, with the empty ring included
   std::vector<int> start_;    // (cells + 1) prefix sums
-  std::vector<std::vector<int>> hist_;  // parts 1 .. : histogram, then next slot per cell (parallel sort)
   std::vector<int> cell_of_;  // ball -> cell
   std::vector<int> cell_sorted_;  // slot -> cell
   std::vector<int> id_;       // slot -> ball
