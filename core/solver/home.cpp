@@ -175,7 +175,7 @@ class Home final : public Engine {
   // it does not or when `mid_step` (a collision took a ball beyond its skin).
   void build_broad_phase(double horizon, bool mid_step = false) {
     if (listed_) {
-      if (mid_step || !list_covers(horizon)) rebuild_list(horizon, !mid_step);
+      if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, p_);
       return;
     }
     vbound_ = max_speed() * kSpeedMargin;
@@ -230,21 +230,23 @@ class Home final : public Engine {
   // adjacent pairs closer than r_i + r_j + skin kept. The skin lets the fastest ball move for
   // list_steps steps (and at least over `horizon`). Renumbering in cell order, when due, happens
   // here, on this grid, so the list is built in the new numbers.
-  void rebuild_list(double horizon, bool may_renumber) {
+  // `at`: every ball's position now (p_ at the start of a step; in mid-step, where each ball's line
+  // has taken it, the balls themselves left where they are, so a rebuild changes no trajectory).
+  void rebuild_list(double horizon, bool may_renumber, const Eigen::MatrixX2d& at) {
     const double vmax = max_speed();
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
-    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
+    grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
     const bool renumber = may_renumber && renumber_if_due();
     list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, renumber ? nullptr : grid_.id(), pool_);
-    built_at_ = p_;
+    built_at_ = renumber ? p_ : at;  // renumbering (start of a step only) moved p_ into the new order
     // A ball farther than 2 half_skin from every wall now starts each step the list covers within
     // half_skin - |v| dt of here (list_covers), so more than half_skin + |v| dt from every wall: it
     // cannot reach one before a collision changes its course (and then it is predicted anyway).
     near_wall_.clear();
     if (walls_)
       for (int i = 0; i < n_; ++i) {
-        const double r = radius(i), x = p_(i, 0), y = p_(i, 1);
+        const double r = radius(i), x = built_at_(i, 0), y = built_at_(i, 1);
         const double gap = std::min(std::min(x - r - box_.min(0), box_.max(0) - r - x),
                                     std::min(y - r - box_.min(1), box_.max(1) - r - y));
         if (gap <= 2.0 * half_skin_) near_wall_.push_back(i);
@@ -766,8 +768,13 @@ class Home final : public Engine {
   // A collision made a ball faster than the broad phase allows for: bring every ball to time t and
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
-    for (int i = 0; i < n_; ++i) advance(i, t);
-    build_broad_phase(dt_ - t, true);
+    if (listed_) {
+      scratch_ = p_ + (v_.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
+      rebuild_list(dt_ - t, false, scratch_);
+    } else {
+      for (int i = 0; i < n_; ++i) advance(i, t);
+      build_broad_phase(dt_ - t, true);
+    }
     queue_.clear();
     for (int i = 0; i < n_; ++i) {
       ++count_[i];
@@ -884,6 +891,7 @@ class Home final : public Engine {
   NeighbourList list_;            // listed_ only
   Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
+  Eigen::MatrixX2d scratch_;      // listed_: positions at a rebuild in mid-step
   std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
   bool extent_fresh_ = false;     // extent_ describes the state now
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
