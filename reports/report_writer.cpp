@@ -256,8 +256,9 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
     for (const BenchRow& r : bench.rows)
       if (r.scene == scene && r.engine == "home" && r.error.empty() && (!largest || r.n > largest->n)) largest = &r;
     if (largest && largest->steps_per_s)
-      put("\n`home` at {} balls: {:.1f} steps per second; memory {} bytes per ball (growth while the world was built "
-          "and run), peak resident set of the benchmark process {} bytes per ball.\n",
+      put("\n`home` at {} balls: {:.1f} steps per second; memory {} bytes per ball (resident growth from a trimmed "
+          "heap while the world was built and run: what the engine holds), peak resident set of the benchmark process "
+          "{} bytes per ball.\n",
           largest->n, *largest->steps_per_s,
           largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
           largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
