@@ -26,15 +26,13 @@ namespace {
 constexpr long kSteps = 100;  // enough for the one-time costs (first sample, final statistics) to fade
 
 void harness_benchmark(benchmark::State& state, int n, int sample_every) {
-  static std::map<int, Scene> scenes;
-  auto it = scenes.find(n);
-  if (it == scenes.end()) it = scenes.emplace(n, scaled_scene(SceneKind::Gas, n)).first;
+  const Scene& scene = shared_scaled_scene(SceneKind::Gas, n);
   RunOptions options;
   options.steps = kSteps;
   options.metrics.sample_every = sample_every;
   double engine_s = 0, harness_s = 0;
   for (auto _ : state) {
-    const Result r = run_engine(it->second, find_engine("home"), options);
+    const Result r = run_engine(scene, find_engine("home"), options);
     if (r.status != "ok") {
       state.SkipWithError(r.error.c_str());
       return;
@@ -53,7 +51,7 @@ const std::vector<State>& gas_states(int n) {
   static std::map<int, std::vector<State>> recorded;
   auto it = recorded.find(n);
   if (it != recorded.end()) return it->second;
-  const Scene scene = scaled_scene(SceneKind::Gas, n);
+  const Scene& scene = shared_scaled_scene(SceneKind::Gas, n);
   const EngineEntry& home = find_engine("home");
   auto engine = home.create(scene, home.info.profiles.front(), nlohmann::json::object());
   std::vector<State> states(kSteps + 1);
@@ -66,14 +64,12 @@ const std::vector<State>& gas_states(int n) {
 // Each step's new state is first copied into a scratch state, untimed, as the runner's read does:
 // the check then finds it in cache as it would in a run.
 void tunnelling_benchmark(benchmark::State& state, int n) {
-  static std::map<int, Scene> scenes;
-  auto it = scenes.find(n);
-  if (it == scenes.end()) it = scenes.emplace(n, scaled_scene(SceneKind::Gas, n)).first;
+  const Scene& scene = shared_scaled_scene(SceneKind::Gas, n);
   const std::vector<State>& states = gas_states(n);
   long passthroughs = 0;
   double total_s = 0;
   for (auto _ : state) {
-    MetricsAccumulator metrics(it->second, {});
+    MetricsAccumulator metrics(scene, {});
     State prev = states[0], cur;
     double seconds = 0;
     for (long k = 1; k <= kSteps; ++k) {

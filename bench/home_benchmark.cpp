@@ -28,10 +28,7 @@ namespace ballbench::bench {
 namespace {
 
 const Scene& gas(int n) {
-  static std::map<int, Scene> scenes;
-  auto it = scenes.find(n);
-  if (it == scenes.end()) it = scenes.emplace(n, scaled_scene(SceneKind::Gas, n)).first;
-  return it->second;
+  return shared_scaled_scene(SceneKind::Gas, n);
 }
 
 // The gas in open space: the same balls, no box (they drift apart slowly over the timed steps).

@@ -1,6 +1,8 @@
 #include "scaled_scene.h"
 
 #include <cmath>
+#include <map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -50,6 +52,13 @@ vel_max = [2.5, 2.5]
 seed = 1
 )", n, -half, half, -half + 0.25, half - 0.25, 0.0),
                      fmt::format("bowl-{}", n));
+}
+
+const Scene& shared_scaled_scene(SceneKind kind, int n) {
+  static std::map<std::pair<SceneKind, int>, Scene> scenes;
+  auto it = scenes.find({kind, n});
+  if (it == scenes.end()) it = scenes.emplace(std::make_pair(kind, n), scaled_scene(kind, n)).first;
+  return it->second;
 }
 
 }  // namespace ballbench::bench

@@ -16,4 +16,8 @@ const char* scene_kind_name(SceneKind k);
 // the gas (so the energy stays put while timing) and 0.99 for the bowl.
 Scene scaled_scene(SceneKind kind, int n);
 
+// The same scene, built once per (kind, n) and kept for the process: benchmarks of one run share
+// it (building 10^6 random balls takes a while).
+const Scene& shared_scaled_scene(SceneKind kind, int n);
+
 }  // namespace ballbench::bench

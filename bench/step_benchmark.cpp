@@ -65,11 +65,7 @@ double peak_resident_bytes() {
 
 void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::string profile, SceneKind kind, int n,
                     int warm_up) {
-  // Scenes are shared between engines of one run (building 10^6 random balls takes a while).
-  static std::map<std::pair<SceneKind, int>, Scene> scenes;
-  auto it = scenes.find({kind, n});
-  if (it == scenes.end()) it = scenes.emplace(std::make_pair(kind, n), scaled_scene(kind, n)).first;
-  const Scene& scene = it->second;
+  const Scene& scene = shared_scaled_scene(kind, n);
   std::unique_ptr<Engine> engine;
   // Memory the scene generator freed stays in the heap; the engine would reuse it, and the growth
   // would miss that share of what it holds (measured at 10^6 bowl balls: 126 bytes per ball

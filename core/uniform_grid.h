@@ -35,28 +35,6 @@ class UniformGrid {
       }
   }
 
-  // Calls f(j) for every ball j in the 3 x 3 cells around point (x, y).
-  template <class F>
-  void for_each_near(double x, double y, F&& f) const {
-    const int cx = cell_x(x), cy = cell_y(y);
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int ix = cx + dx, iy = cy + dy;
-        if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) continue;
-        const int c = iy * nx_ + ix;
-        for (int a = start_[c]; a < start_[c + 1]; ++a) f(order_[a]);
-      }
-  }
-
-  // The same 3 x 3 block as positions in order(): f(begin, end) once per row of three cells, which
-  // lie next to each other there. For scans over data gathered in cell order (cache-friendly).
-  template <class F>
-  void for_each_near_range(double x, double y, F&& f) const {
-    const int cx = cell_x(x), cy = cell_y(y);
-    const int x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx_ ? cx + 1 : nx_ - 1;
-    for (int iy = cy > 0 ? cy - 1 : 0; iy <= cy + 1 && iy < ny_; ++iy) f(start_[iy * nx_ + x0], start_[iy * nx_ + x1 + 1]);
-  }
-
   // Every ball within `reach` of point (x, y), and others, as runs of positions in order(): f(begin,
   // end) once per row of the cells that overlap the square of side 2 reach around the point.
   template <class F>

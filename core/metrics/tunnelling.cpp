@@ -40,6 +40,13 @@ namespace {
 // rounding of the quantities they compare for coordinates up to ~10^8 radii.
 constexpr double kMargin = 1e-6;
 
+// Does a step from a to b leave the disc of squared radius a2 around the reference r? Both ends
+// decide: the disc is convex. (NaN coordinates count as outside.)
+bool leaves_allowance(double ax, double ay, double bx, double by, double rx, double ry, double a2) {
+  const double ex = ax - rx, ey = ay - ry, fx = bx - rx, fy = by - ry;
+  return !(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2);
+}
+
 }  // namespace
 
 TunnellingCheck::TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance)
@@ -118,10 +125,7 @@ TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cu
     m2sum += dx * dx + dy * dy;
     double* r = rec + 4 * i;
     r[0] = ax, r[1] = ay, r[2] = dx, r[3] = dy;
-    if (contained) {
-      const double ex = ax - rx[i], ey = ay - ry[i], fx = bx - rx[i], fy = by - ry[i];
-      if (!(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2)) escaped_.push_back(i);
-    }
+    if (contained && leaves_allowance(ax, ay, bx, by, rx[i], ry[i], a2)) escaped_.push_back(i);
   }
   return {nonfinite == 0, wall, m2max, m2sum};
 }
@@ -143,8 +147,7 @@ void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_r
   escaped_.clear();
   for (int i = 0; i < n; ++i) {
     rx[i] = 0.5 * (px[i] + cx[i]), ry[i] = 0.5 * (py[i] + cy[i]);
-    const double ex = px[i] - rx[i], ey = py[i] - ry[i], fx = cx[i] - rx[i], fy = cy[i] - ry[i];
-    if (!(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2)) escaped_.push_back(i);
+    if (leaves_allowance(px[i], py[i], cx[i], cy[i], rx[i], ry[i], a2)) escaped_.push_back(i);
   }
   grid_.build(ref_, 2.0 * reach_ * r_max_ + 2.0 * a_);
   const std::vector<int>& ball = grid_.order();
@@ -215,8 +218,10 @@ int TunnellingCheck::count_listed(const State& prev, const State& cur) {
   int count = 0;
   for (size_t k = 0; k < m; ++k) {
     const int i = list[survivors[k]][0], j = list[survivors[k]][1];
-    // A pair with an escaped ball is judged by count_escaped() instead.
-    if (judge(prev, cur, i, j, radius_[i] + radius_[j]) && !is_escaped_[i] && !is_escaped_[j]) ++count;
+    // A pair with an escaped ball is judged by count_escaped() instead. The survivors passed this
+    // loop's filters already: the definition decides.
+    if (!is_escaped_[i] && !is_escaped_[j] && passes_through(prev, cur, i, j, radius_[i] + radius_[j], tolerance_))
+      ++count;
   }
   return count;
 }

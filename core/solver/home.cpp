@@ -1,6 +1,7 @@
 #include "solver/home.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
@@ -170,9 +171,10 @@ class Home final : public Engine {
  private:
   // Grid over the positions at the start of the step, with cells wide enough that any two balls
   // which can touch during the rest of the step are in adjacent cells.
-  // Positions and velocities are copied into it in cell order, for the pair screen.
+  // Positions and velocities are copied into it in cell order, for the pair screen. `mid_step`: a
+  // rebuild within the step (rebuild_mid_step), which must not renumber the balls.
   // With a neighbour list (elastic scenes) the list is kept while it covers the step, rebuilt when
-  // it does not or when `mid_step` (a collision took a ball beyond its skin).
+  // it does not (in mid-step, rebuild_mid_step rebuilds it itself).
   void build_broad_phase(double horizon, bool mid_step = false) {
     if (listed_) {
       if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, p_);
@@ -198,27 +200,12 @@ class Home final : public Engine {
   // Every ball stays within half the skin of where it was at the list's build over the next
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
   // ends decide). A collision that changes a velocity is checked again (beyond_skin). The largest
-  // displacement plus the largest speed bounds every ball's own sum: one pass, no root per ball.
-  bool list_covers(double horizon) {
+  // displacement plus the largest speed bounds every ball's own sum; the last step's final advance
+  // measured both (extent_), and nothing has moved since.
+  bool list_covers(double horizon) const {
     if (half_skin_ < 0) return false;  // no list yet
-    if (extent_fresh_) {  // measured by the last step's final advance; nothing moved since
-      extent_fresh_ = false;
-      double moved2 = 0, speed2 = 0;
-      for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m), speed2 = std::max(speed2, v);
-      return std::sqrt(moved2) + std::sqrt(speed2) * horizon <= half_skin_;
-    }
-    const double* __restrict x = p_.col(0).data();
-    const double* __restrict y = p_.col(1).data();
-    const double* __restrict bx = built_at_.col(0).data();
-    const double* __restrict by = built_at_.col(1).data();
-    const double* __restrict vx = v_.col(0).data();
-    const double* __restrict vy = v_.col(1).data();
     double moved2 = 0, speed2 = 0;
-    for (int i = 0; i < n_; ++i) {
-      const double dx = x[i] - bx[i], dy = y[i] - by[i];
-      moved2 = std::max(moved2, dx * dx + dy * dy);
-      speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
-    }
+    for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m), speed2 = std::max(speed2, v);
     return std::sqrt(moved2) + std::sqrt(speed2) * horizon <= half_skin_;
   }
 
@@ -237,19 +224,19 @@ class Home final : public Engine {
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
     grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
-    const bool renumber = may_renumber && renumber_if_due();
-    list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, renumber ? nullptr : grid_.id(), pool_);
-    built_at_ = renumber ? p_ : at;  // renumbering (start of a step only) moved p_ into the new order
+    // Renumbering (at the start of a step only, where `at` is p_) leaves the grid's slot -> ball map
+    // the identity and p_ in the new order: the list and built_at_ then use the new numbers.
+    if (may_renumber) renumber_if_due();
+    list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, pool_);
+    built_at_ = at;
     // A ball farther than 2 half_skin from every wall now starts each step the list covers within
     // half_skin - |v| dt of here (list_covers), so more than half_skin + |v| dt from every wall: it
     // cannot reach one before a collision changes its course (and then it is predicted anyway).
     near_wall_.clear();
     if (walls_)
       for (int i = 0; i < n_; ++i) {
-        const double r = radius(i), x = built_at_(i, 0), y = built_at_(i, 1);
-        const double gap = std::min(std::min(x - r - box_.min(0), box_.max(0) - r - x),
-                                    std::min(y - r - box_.min(1), box_.max(1) - r - y));
-        if (gap <= 2.0 * half_skin_) near_wall_.push_back(i);
+        const auto [gx0, gx1, gy0, gy1] = wall_gaps(built_at_(i, 0), built_at_(i, 1), radius(i));
+        if (std::min(std::min(gx0, gx1), std::min(gy0, gy1)) <= 2.0 * half_skin_) near_wall_.push_back(i);
       }
   }
 
@@ -309,20 +296,17 @@ class Home final : public Engine {
     contacts_.push_back({i, j, nx, ny, target, eff, 0.0});
   }
 
-  // Returns whether any wall was within reach (a contact was considered).
-  bool add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
-    if (!walls_) return false;
-    bool near = false;
+  // Adds a contact for every wall within max(touch, reach) of ball i.
+  void add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
+    if (!walls_) return;
     for (int axis = 0; axis < 2; ++axis)
       for (int side = 0; side < 2; ++side) {
         const double gap = wall_gap(i, axis, side), touch = touch_wall(i);
         if (gap >= std::max(touch, reach)) continue;
-        near = true;
         const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
         add_contact(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
                     close_overlap);
       }
-    return near;
   }
 
   // Adds the contact of pair (i, j) if their gap is below max(touch, reach); returns whether it was.
@@ -381,12 +365,11 @@ class Home final : public Engine {
         for (int i : near) add_wall_contacts(i, reach, dt_, true);
     }
     if (!sc_.no_pairs) {
+      // With pairs, the elastic shortcut always has its neighbour list (listed_).
       if (listed_)
         sc_.equal_radii ? screen_list<true>() : screen_list<false>();
-      else if (sc_.elastic)
-        sc_.equal_radii ? screen_pairs<true, false>(reach) : screen_pairs<false, false>(reach);
       else
-        sc_.equal_radii ? screen_pairs<true, true>(reach) : screen_pairs<false, true>(reach);
+        sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
       const int* id = grid_.id();
       for (const auto& hits : pair_hits_)
         for (const auto& [a, b] : hits) {
@@ -437,7 +420,12 @@ class Home final : public Engine {
     return (left & (gx0 <= kx)) | (!left & (gx1 <= kx)) | (down & (gy0 <= ky)) | (!down & (gy1 <= ky));
   }
   bool reaches_wall(double x, double y, double vx, double vy, double r, double k) const {
-    return reaches_wall(x - r - box_.min(0), box_.max(0) - r - x, y - r - box_.min(1), box_.max(1) - r - y, vx, vy, k);
+    const auto [gx0, gx1, gy0, gy1] = wall_gaps(x, y, r);
+    return reaches_wall(gx0, gx1, gy0, gy1, vx, vy, k);
+  }
+  // Gaps (m) between a ball at (x, y) of radius r and the walls: min x, max x, min y, max y.
+  std::array<double, 4> wall_gaps(double x, double y, double r) const {
+    return {x - r - box_.min(0), box_.max(0) - r - x, y - r - box_.min(1), box_.max(1) - r - y};
   }
 
   // kContacts false (the elastic shortcut): no contact pass, so touching a wall is no reason to be
@@ -452,12 +440,11 @@ class Home final : public Engine {
     const double* __restrict rad = r_.data();
     uint8_t* __restrict active = active_.data();
     const double x0 = box_.min(0), x1 = box_.max(0), y0 = box_.min(1), y1 = box_.max(1), r0 = r0_;
-    const bool walls = walls_;
+    if (!walls_) {  // open space without the no-walls shortcut: nothing reaches a wall
+      std::fill(active + b, active + e, 0);
+      return;
+    }
     for (int i = b; i < e; ++i) {
-      if (!walls) {  // open space without the no-walls shortcut: the general path asks per ball
-        active[i] = 0;
-        continue;
-      }
       const double r = kEqualRadii ? r0 : rad[i];
       const double gx0 = x[i] - r - x0, gx1 = x1 - r - x[i], gy0 = y[i] - r - y0, gy1 = y1 - r - y[i];
       const bool hit = reaches_wall(gx0, gx1, gy0, gy1, vx[i], vy[i], k);
@@ -478,13 +465,13 @@ class Home final : public Engine {
   // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
   // wall reach has no event this step (its predict would find none), so it is not predicted:
   // results are bit-identical to predicting every ball. In the 10^4 gas 3.5% of balls are active.
-  template <bool kEqualRadii, bool kContacts>
+  template <bool kEqualRadii>
   void screen_pairs(double reach) {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       pair_hits_[p].clear();
       const int n = grid_.balls();
-      screen_slots<kEqualRadii, kContacts>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
+      screen_slots<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
                                 static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p]);
     });
   }
@@ -492,8 +479,7 @@ class Home final : public Engine {
   // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
   // contact, or an approach within the step) takes one branch, decided by both tests at once.
   // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
-  // kContacts false (the elastic shortcut): no pair is listed for the contact pass.
-  template <bool kEqualRadii, bool kContacts>
+  template <bool kEqualRadii>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
@@ -516,7 +502,7 @@ class Home final : public Engine {
         const double lim = rs + std::max(slop * rs, reach);
         lim2 = lim * lim, rs2 = rs * rs;
       }
-      const bool contact = kContacts && d2 < lim2 && d2 != 0;
+      const bool contact = d2 < lim2 && d2 != 0;
       // & rather than &&: the sign of b is a coin toss per pair, a branch on it mispredicts half the time.
       const bool approach = (bb < 0) & ((d2 - rs2) + two * bb * dt <= 0);
       if (contact | approach) [[unlikely]] {
@@ -707,35 +693,38 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
-    // Every ball to the end of the step (advance(i, dt), its clock then set back to 0 for the next
-    // step); with a neighbour list the same pass measures what the next step's list_covers needs.
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      double* __restrict x = p_.col(0).data();
-      double* __restrict y = p_.col(1).data();
-      const double* __restrict vx = v_.col(0).data();
-      const double* __restrict vy = v_.col(1).data();
-      double* __restrict tl = t_local_.data();
-      const double dt = dt_;
-      for (int i = b; i < e; ++i) {
-        const double h = dt - tl[i];
-        x[i] += vx[i] * h, y[i] += vy[i] * h;
-        tl[i] = 0;
-      }
-      if (listed_) {
-        const double* __restrict bx = built_at_.col(0).data();
-        const double* __restrict by = built_at_.col(1).data();
-        double moved2 = 0, speed2 = 0;
-        for (int i = b; i < e; ++i) {
-          const double dx = x[i] - bx[i], dy = y[i] - by[i];
-          moved2 = std::max(moved2, dx * dx + dy * dy);
-          speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
-        }
-        extent_[p] = {moved2, speed2};
-      }
+      listed_ ? finish_step<true>(b, e, extent_[p]) : finish_step<false>(b, e, extent_[p]);
     });
-    extent_fresh_ = listed_;
+  }
+
+  // Balls [b, e) to the end of the step (advance(i, dt)), each clock set back to 0 for the next
+  // step; with a neighbour list (kMeasure) the same pass measures the largest squared displacement
+  // from the list's build and the largest squared speed, which the next step's list_covers needs.
+  template <bool kMeasure>
+  void finish_step(int b, int e, std::pair<double, double>& extent) {
+    double* __restrict x = p_.col(0).data();
+    double* __restrict y = p_.col(1).data();
+    const double* __restrict vx = v_.col(0).data();
+    const double* __restrict vy = v_.col(1).data();
+    double* __restrict tl = t_local_.data();
+    const double* __restrict bx = built_at_.col(0).data();
+    const double* __restrict by = built_at_.col(1).data();
+    const double dt = dt_;
+    double moved2 = 0, speed2 = 0;
+    for (int i = b; i < e; ++i) {
+      const double h = dt - tl[i];
+      x[i] += vx[i] * h, y[i] += vy[i] * h;
+      tl[i] = 0;
+      if constexpr (kMeasure) {
+        const double dx = x[i] - bx[i], dy = y[i] - by[i];
+        moved2 = std::max(moved2, dx * dx + dy * dy);
+        speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
+      }
+    }
+    if constexpr (kMeasure) extent = {moved2, speed2};
   }
 
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
@@ -893,7 +882,6 @@ class Home final : public Engine {
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
   Eigen::MatrixX2d scratch_;      // listed_: positions at a rebuild in mid-step
   std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
-  bool extent_fresh_ = false;     // extent_ describes the state now
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
   bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering

@@ -4,7 +4,7 @@
 
 namespace ballbench {
 
-void NeighbourList::build(const HomeGrid& grid, bool equal_radii, double r0, double skin, const int* id, ForkJoin& pool) {
+void NeighbourList::build(const HomeGrid& grid, bool equal_radii, double r0, double skin, ForkJoin& pool) {
   const int parts = pool.parts();
   const int slots = grid.balls();
   found_.resize(parts);
@@ -34,12 +34,13 @@ void NeighbourList::build(const HomeGrid& grid, bool equal_radii, double r0, dou
     });
     count_[p] = size;
   });
+  const int* id = grid.id();
   first_.clear(), second_.clear();
   for (int p = 0; p < parts; ++p) {
     const std::vector<int>& found = found_[p];
     for (size_t k = 0; k < count_[p]; k += 2) {
-      first_.push_back(id ? id[found[k]] : found[k]);
-      second_.push_back(id ? id[found[k + 1]] : found[k + 1]);
+      first_.push_back(id[found[k]]);
+      second_.push_back(id[found[k + 1]]);
     }
   }
 }

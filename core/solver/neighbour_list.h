@@ -22,10 +22,9 @@ namespace ballbench {
 class NeighbourList {
  public:
   // Lists every pair in adjacent cells of `grid` closer than r_i + r_j + skin; the grid's cells
-  // must be at least 2 r_max + skin wide. Balls are numbered id[slot], or by slot when `id` is
-  // null (balls just renumbered in slot order). With `equal_radii` every ball's radius is r0 (the
-  // grid holds no radii).
-  void build(const HomeGrid& grid, bool equal_radii, double r0, double skin, const int* id, ForkJoin& pool);
+  // must be at least 2 r_max + skin wide. Balls are numbered as the grid's id() says. With
+  // `equal_radii` every ball's radius is r0 (the grid holds no radii).
+  void build(const HomeGrid& grid, bool equal_radii, double r0, double skin, ForkJoin& pool);
 
   long pairs() const { return static_cast<long>(first_.size()); }
   const int* first() const { return first_.data(); }
