@@ -24,6 +24,10 @@ namespace ballbench {
 namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
+// The list screen's time for a pair that touches at the start of the step (see first_pair_events).
+constexpr double kTouching = -1;
+// first_j_: the ball's first pair event is left to next_event (see first_pair_events).
+constexpr int kAsk = -2;
 // How much faster than the fastest ball at the start of the step a ball may become through
 // collisions before the broad phase must be rebuilt (equal-mass elastic impacts can reach sqrt(2)).
 constexpr double kSpeedMargin = 1.5;
@@ -83,6 +87,12 @@ struct Event {
   bool operator>(const Event& o) const { return t > o.t; }
 };
 
+// A pair the list screen found approaching, and when it meets (kTouching: it touches now).
+struct Approach {
+  int a, b;
+  double t;
+};
+
 struct Contact {
   int i, j;         // j < 0: wall, as in Event
   double nx, ny;    // unit normal, from j (or the wall) towards i
@@ -116,10 +126,12 @@ class Home final : public Engine {
         pair_hits_(pool_.parts()),
         wall_hits_(pool_.parts()),
         first_events_(pool_.parts()),
+        approaches_(pool_.parts()),
         extent_(pool_.parts()) {
     // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
     if (!sc_.equal_radii) r_ = scene.radius;
     if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
+    if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1);
     ball_of_.resize(n_);
     for (int i = 0; i < n_; ++i) ball_of_[i] = i;
   }
@@ -520,12 +532,17 @@ class Home final : public Engine {
   // approaches), in parallel over fixed runs of pairs: the same test as screen_slots. A pair that
   // passes it but is not listed cannot touch within the step (the list covers it), so it has no
   // event and the balls predicted are those the grid's screen would give events to.
+  // Every pair that passes also gets its collision time here, by next_event's own expressions
+  // (pair_time), into approaches_: drift takes the balls' first events from them instead of
+  // walking each active ball's 3 x 3 cells again (first_pair_events).
   template <bool kEqualRadii>
   void screen_list() {
     const int parts = pool_.parts();
     const long m = list_.pairs();
     const double dt = dt_, two = 2.0, rs0_2 = 4.0 * r0_ * r0_;
     pool_.run([&](int p) {
+      std::vector<Approach>& found = approaches_[p];
+      found.clear();
       const long k0 = ForkJoin::range_begin(m, p, parts), k1 = ForkJoin::range_begin(m, p + 1, parts);
       const int* __restrict first = list_.first();
       const int* __restrict second = list_.second();
@@ -547,9 +564,42 @@ class Home final : public Engine {
         if ((bb < 0) & ((d2 - rs2) + two * bb * dt <= 0)) [[unlikely]] {
           std::atomic_ref<uint8_t>(active[a]).store(1, std::memory_order_relaxed);
           std::atomic_ref<uint8_t>(active[b]).store(1, std::memory_order_relaxed);
+          const double rs = radius(a) + radius(b), touch = rs + touch_pair(a, b);
+          // next_event's expressions from t0 = 0 (0 + t is t): the pair touches now, or meets at t.
+          const double t = d2 < touch * touch ? kTouching : approach_root(bb, d2 - rs * rs, wx, wy);
+          if (t <= dt) found.push_back({a, b, t});
         }
       }
     });
+  }
+
+  // The first pair event of every ball the list screen found approaching, as next_event would find
+  // it from the start of the step (its pair part: the earliest time, a tie to the first pair met).
+  // next_event meets pairs in cell order, which is not the screen's, so a ball whose earliest time
+  // is shared by two partners gets kAsk (next_event decides), as does one in a pair that touches now:
+  // such a pair's event (t0) depends on the pairs met before it (its prune). Both are rare.
+  void first_pair_events() {
+    for (const auto& found : approaches_)
+      for (const Approach& f : found) {
+        const auto note = [&](int i, int j) {
+          if (first_j_[i] == kAsk) return;
+          if (f.t == kTouching || f.t == first_t_[i]) first_j_[i] = kAsk;
+          else if (f.t < first_t_[i]) first_t_[i] = f.t, first_j_[i] = j;
+        };
+        note(f.a, f.b), note(f.b, f.a);
+      }
+  }
+
+  // Ball i's earliest event from the start of the step: its walls (next_event's own loop), then its
+  // pair event from first_pair_events, or next_event itself where that said kAsk.
+  bool first_event(int i, Event& best) const {
+    if (!listed_ || first_j_[i] == kAsk) return next_event(i, best);
+    best = {kNever, i, 0, count_[i], 0};
+    wall_event(i, best);
+    const int j = first_j_[i];
+    // A pair event earlier than the wall's is never pruned in next_event (its bound holds until then).
+    if (j >= 0 && first_t_[i] < best.t) best = {first_t_[i], i, j, count_[i], count_[j]};
+    return best.t <= dt_;
   }
 
   // Renumbers the balls in the cell order of the grid just built (slot s becomes ball s). Everything
@@ -649,9 +699,11 @@ class Home final : public Engine {
     // parts each predicts its fixed range of balls, and the events are queued in ball order, as
     // predicting one ball after the other would queue them.
     const int parts = pool_.parts();
+    if (listed_) first_pair_events();
     if (parts == 1) {
+      Event ev;
       for (int i = 0; i < n_; ++i)
-        if (active_[i]) predict(i);
+        if (active_[i] && first_event(i, ev)) push_event(ev);
     } else {
       pool_.run([&](int p) {
         first_events_[p].clear();
@@ -659,11 +711,14 @@ class Home final : public Engine {
         const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
         Event ev;
         for (int i = b; i < e; ++i)
-          if (active_[i] && next_event(i, ev)) first_events_[p].push_back(ev);
+          if (active_[i] && first_event(i, ev)) first_events_[p].push_back(ev);
       });
       for (const auto& events : first_events_)
         for (const Event& ev : events) push_event(ev);
     }
+    if (listed_)
+      for (const auto& found : approaches_)
+        for (const Approach& f : found) first_t_[f.a] = first_t_[f.b] = kNever, first_j_[f.a] = first_j_[f.b] = -1;
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
@@ -791,18 +846,7 @@ class Home final : public Engine {
     best = {kNever, i, 0, count_[i], 0};
     const double ti = t_local_[i];
     const double v_tol = v_tol_;
-    if (walls_)
-      for (int axis = 0; axis < 2; ++axis) {
-        const double v = v_(i, axis);
-        if (v == 0) continue;
-        const int side = v < 0 ? 0 : 1;
-        const double gap = wall_gap(i, axis, side);
-        if (gap < touch_wall(i) && std::abs(v) < v_tol) continue;
-        // Touching or overlapping by round-off and approaching: collide now (Bannerman et al.,
-        // "Stable algorithms for event-driven molecular dynamics", J. Comput. Phys. 2014).
-        const double t = ti + std::max(gap, 0.0) / std::abs(v);
-        if (t < best.t) best = {t, i, -1 - (2 * axis + side), count_[i], 0};
-      }
+    wall_event(i, best);
     if (!sc_.no_pairs) grid_.for_each_near(i, [&](int j) {
       if (j == i) return;
       const double t0 = std::max(ti, t_local_[j]);
@@ -823,14 +867,37 @@ class Home final : public Engine {
         if (b * b < v_tol * v_tol * d2) return;  // -b / |d| < v_tol: round-off, not an approach
         t = t0;  // touching (or overlapping by round-off) and approaching: collide now
       } else {
-        const double a = wx * wx + wy * wy;
-        const double disc = b * b - a * c;
-        if (disc < 0) return;
-        t = t0 + c / (-b + std::sqrt(disc));  // the smaller root, in the cancellation-free form
+        t = t0 + approach_root(b, c, wx, wy);
       }
       if (t < best.t) best = {t, i, j, count_[i], count_[j]};
     });
     return best.t <= dt_;
+  }
+
+  // Ball i's earliest wall event (from its own time), into `best` if earlier.
+  void wall_event(int i, Event& best) const {
+    if (!walls_) return;
+    const double ti = t_local_[i];
+    for (int axis = 0; axis < 2; ++axis) {
+      const double v = v_(i, axis);
+      if (v == 0) continue;
+      const int side = v < 0 ? 0 : 1;
+      const double gap = wall_gap(i, axis, side);
+      if (gap < touch_wall(i) && std::abs(v) < v_tol_) continue;
+      // Touching or overlapping by round-off and approaching: collide now (Bannerman et al.,
+      // "Stable algorithms for event-driven molecular dynamics", J. Comput. Phys. 2014).
+      const double t = ti + std::max(gap, 0.0) / std::abs(v);
+      if (t < best.t) best = {t, i, -1 - (2 * axis + side), count_[i], 0};
+    }
+  }
+
+  // How long until an approaching pair (separation d, relative velocity w, b = d.w < 0,
+  // c = |d|^2 - (r_i + r_j)^2 > 0) touches: the smaller root of |d + w t| = r_i + r_j, in the
+  // cancellation-free form; kNever if it passes by.
+  static double approach_root(double b, double c, double wx, double wy) {
+    const double a = wx * wx + wy * wy;
+    const double disc = b * b - a * c;
+    return disc < 0 ? kNever : c / (-b + std::sqrt(disc));
   }
 
   // Restitution on the normal component only; tangential velocity is untouched (frictionless).
@@ -871,6 +938,9 @@ class Home final : public Engine {
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
   std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift
+  std::vector<std::vector<Approach>> approaches_;  // listed_, per part: the list screen's approaching pairs
+  std::vector<double> first_t_;   // listed_: each ball's first pair event at the start of drift (kNever: none)
+  std::vector<int> first_j_;      // listed_: its partner (-1: none, kAsk: next_event decides)
   double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)
