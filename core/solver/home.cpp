@@ -189,7 +189,7 @@ class Home final : public Engine {
   // it does not (in mid-step, rebuild_mid_step rebuilds it itself).
   void build_broad_phase(double horizon, bool mid_step = false) {
     if (listed_) {
-      if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, p_);
+      if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, p_, start_speed());
       return;
     }
     vbound_ = max_speed() * kSpeedMargin;
@@ -200,8 +200,9 @@ class Home final : public Engine {
 
   // Renumbering in cell order (reorder_by_cell) right after a grid's build at the start of a step:
   // at the first, then when reorder_ steps have passed since the last. Returns whether it did.
+  bool renumber_due() const { return reorder_ > 0 && !(renumbered_ && steps_ - renumbered_at_ < reorder_); }
   bool renumber_if_due() {
-    if (reorder_ <= 0 || (renumbered_ && steps_ - renumbered_at_ < reorder_) || grid_.balls() != n_) return false;
+    if (!renumber_due() || grid_.balls() != n_) return false;
     reorder_by_cell();
     renumbered_ = true, renumbered_at_ = steps_;
     return true;
@@ -216,9 +217,18 @@ class Home final : public Engine {
   // measured both (extent_), and nothing has moved since.
   bool list_covers(double horizon) const {
     if (half_skin_ < 0) return false;  // no list yet
-    double moved2 = 0, speed2 = 0;
-    for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m), speed2 = std::max(speed2, v);
-    return std::sqrt(moved2) + std::sqrt(speed2) * horizon <= half_skin_;
+    double moved2 = 0;
+    for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m);
+    return std::sqrt(moved2) + start_speed() * horizon <= half_skin_;
+  }
+
+  // The largest speed at the start of a step, as the last step's final advance measured it (before
+  // the first step, when nothing has measured it, counted afresh).
+  double start_speed() const {
+    if (half_skin_ < 0) return max_speed();
+    double speed2 = 0;
+    for (const auto& e : extent_) speed2 = std::max(speed2, e.second);
+    return std::sqrt(speed2);
   }
 
   bool beyond_skin(int i, double t) const {
@@ -231,11 +241,12 @@ class Home final : public Engine {
   // here, on this grid, so the list is built in the new numbers.
   // `at`: every ball's position now (p_ at the start of a step; in mid-step, where each ball's line
   // has taken it, the balls themselves left where they are, so a rebuild changes no trajectory).
-  void rebuild_list(double horizon, bool may_renumber, const Eigen::MatrixX2d& at) {
-    const double vmax = max_speed();
+  // `vmax`: the largest speed now.
+  void rebuild_list(double horizon, bool may_renumber, const Eigen::MatrixX2d& at, double vmax) {
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
-    grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_);
+    // The list is built from positions only: the grid copies velocities only for a renumbering.
+    grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_, may_renumber && renumber_due());
     // Renumbering (at the start of a step only, where `at` is p_) leaves the grid's slot -> ball map
     // the identity and p_ in the new order: the list and built_at_ then use the new numbers.
     if (may_renumber) renumber_if_due();
@@ -244,12 +255,18 @@ class Home final : public Engine {
     // A ball farther than 2 half_skin from every wall now starts each step the list covers within
     // half_skin - |v| dt of here (list_covers), so more than half_skin + |v| dt from every wall: it
     // cannot reach one before a collision changes its course (and then it is predicted anyway).
+    // Only the grid's edge cells can hold such a ball: the rest are not looked at.
     near_wall_.clear();
-    if (walls_)
-      for (int i = 0; i < n_; ++i) {
-        const auto [gx0, gx1, gy0, gy1] = wall_gaps(built_at_(i, 0), built_at_(i, 1), radius(i));
-        if (std::min(std::min(gx0, gx1), std::min(gy0, gy1)) <= 2.0 * half_skin_) near_wall_.push_back(i);
-      }
+    if (!walls_) return;
+    const double reach = rmax_ + 2.0 * half_skin_;
+    const int* id = grid_.id();
+    grid_.for_each_slot_beyond(box_.min(0) + reach, box_.max(0) - reach, box_.min(1) + reach, box_.max(1) - reach,
+                               [&](int s) {
+                                 const int i = id[s];
+                                 const auto [gx0, gx1, gy0, gy1] = wall_gaps(built_at_(i, 0), built_at_(i, 1), radius(i));
+                                 if (std::min(std::min(gx0, gx1), std::min(gy0, gy1)) <= 2.0 * half_skin_)
+                                   near_wall_.push_back(i);
+                               });
   }
 
 
@@ -814,7 +831,7 @@ class Home final : public Engine {
   void rebuild_mid_step(double t) {
     if (listed_) {
       scratch_ = p_ + (v_.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
-      rebuild_list(dt_ - t, false, scratch_);
+      rebuild_list(dt_ - t, false, scratch_, max_speed());
     } else {
       for (int i = 0; i < n_; ++i) advance(i, t);
       build_broad_phase(dt_ - t, true);

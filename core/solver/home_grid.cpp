@@ -5,7 +5,7 @@
 namespace ballbench {
 
 void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius,
-                     double cell, ForkJoin& pool) {
+                     double cell, ForkJoin& pool, bool velocities) {
   const int n = static_cast<int>(pos.rows());
   const int parts = pool.parts();
   if (n == 0) {
@@ -53,10 +53,13 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
   auto gather = [&] {
     pool.run([&](int p) {
       const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-      for (long s = b; s < e; ++s) {
-        const int i = id_[s];
-        x_[s] = px[i], y_[s] = py[i], vx_[s] = vxp[i], vy_[s] = vyp[i];
-      }
+      if (velocities)
+        for (long s = b; s < e; ++s) {
+          const int i = id_[s];
+          x_[s] = px[i], y_[s] = py[i], vx_[s] = vxp[i], vy_[s] = vyp[i];
+        }
+      else
+        for (long s = b; s < e; ++s) x_[s] = px[id_[s]], y_[s] = py[id_[s]];
       if (rp)
         for (long s = b; s < e; ++s) r_[s] = rp[id_[s]];
     });

@@ -18,9 +18,10 @@ namespace ballbench {
 class HomeGrid {
  public:
   // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. `radius` may be
-  // empty (all radii equal), otherwise it is copied in cell order too.
+  // empty (all radii equal), otherwise it is copied in cell order too. Without `velocities`, vx()
+  // and vy() are left as they were (a neighbour list's build needs positions only).
   void build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius, double cell,
-             ForkJoin& pool);
+             ForkJoin& pool, bool velocities = true);
 
   int cells() const { return nx_ * ny_; }
   int balls() const { return static_cast<int>(id_.size()); }
@@ -73,6 +74,26 @@ class HomeGrid {
       for (int s = start_[r - 1]; s < start_[r + 2]; ++s) f(id_[s]);
   }
 
+  // Calls f(slot) for every slot whose ball has x <= ax, x >= bx, y <= ay or y >= by, and for
+  // some others in the same cells: the balls of the cells along the grid's edges that can hold
+  // such a ball (a cell's bounds are those of cell_x and cell_y, monotone in x and y). Each slot
+  // once. A row's cells are contiguous in slot order, so this is a few runs per row.
+  template <class F>
+  void for_each_slot_beyond(double ax, double bx, double ay, double by, F&& f) const {
+    if (nx_ == 0) return;
+    const int cxa = cell_x(ax), cxb = cell_x(bx), cya = cell_y(ay), cyb = cell_y(by);
+    const auto run = [&](int row, int c0, int c1) {  // columns [c0, c1] of a row
+      for (int s = start_[row * nx_ + c0]; s < start_[row * nx_ + c1 + 1]; ++s) f(s);
+    };
+    for (int cy = 1; cy <= ny_ - 2; ++cy) {
+      if (cy <= cya || cy >= cyb || cxb <= cxa + 1) {
+        run(cy, 1, nx_ - 2);
+      } else {
+        run(cy, 1, cxa);
+        run(cy, cxb, nx_ - 2);
+      }
+    }
+  }
 
  private:
   // x >= x0_ (the least x), so truncation is the floor UniformGrid takes; + 1 for the ring.
