@@ -6,6 +6,7 @@
 //
 // Cells and origin are chosen exactly as UniformGrid chooses them (core/uniform_grid.h), so the
 // candidate pairs, and the order the contact pass sees them in, are the ones the solver had before.
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -19,9 +20,10 @@ class HomeGrid {
  public:
   // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. `radius` may be
   // empty (all radii equal), otherwise it is copied in cell order too. Without `velocities`, vx()
-  // and vy() are left as they were (a neighbour list's build needs positions only).
+  // and vy() are left as they were (a neighbour list's build needs positions only). `bounds`, if
+  // given, are the positions' min x, min y, max x, max y, already measured (else measured here).
   void build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius, double cell,
-             ForkJoin& pool, bool velocities = true);
+             ForkJoin& pool, bool velocities = true, const std::array<double, 4>* bounds = nullptr);
 
   int cells() const { return nx_ * ny_; }
   int balls() const { return static_cast<int>(id_.size()); }
