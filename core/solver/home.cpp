@@ -117,6 +117,7 @@ struct Contact {
   double target;    // least normal velocity wanted after the solve (m/s)
   double inv_mass;  // 1 / (1/m_i + 1/m_j)
   double impulse;   // accumulated, >= 0
+  bool moved;       // an impulse was applied (warm start or solve): both velocities may have changed
 };
 
 class Home final : public Engine {
@@ -378,7 +379,7 @@ class Home final : public Engine {
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
     const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
-    contacts_.push_back({i, j, nx, ny, target, eff, 0.0});
+    contacts_.push_back({i, j, nx, ny, target, eff, 0.0, false});
   }
 
   // Adds a contact for every wall within max(touch, reach) of ball i.
@@ -434,6 +435,7 @@ class Home final : public Engine {
       const double old = c.impulse;
       c.impulse = std::max(0.0, old + (c.target - vn) * c.inv_mass);
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
+      c.moved |= c.impulse != old;
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
       return old != 0 || c.impulse != 0;  // changed something (or may next time)
     };
@@ -494,20 +496,24 @@ class Home final : public Engine {
         sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
       const int* id = grid_.id();
       for (const auto& hits : pair_hits_)
-        for (const auto& [a, b] : hits) {
-          // The contact changes both velocities, which the screen could not know: predict both.
-          active_[id[a]] = active_[id[b]] = 1;
-          add_pair_contact(id[a], id[b], reach, dt_, true);
-        }
+        for (const auto& [a, b] : hits) add_pair_contact(id[a], id[b], reach, dt_, true);
     }
     if (sc_.elastic) return;  // no contacts were listed: nothing to solve or remember
     for (Contact& c : contacts_) {
       const double impulse = warm_.find(c.i, c.j);
       if (impulse < 0) continue;
-      c.impulse = impulse;
+      c.impulse = impulse, c.moved = true;
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
     }
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
+    // A contact that moved its balls changed velocities the screen could not know: predict both.
+    // One that applied nothing (most, in a gas: close but parting) leaves them to the screen, which
+    // saw their velocities as they still are (a partner that changed is predicted, and finds them).
+    for (const Contact& c : contacts_)
+      if (c.moved) {
+        active_[c.i] = 1;
+        if (c.j >= 0) active_[c.j] = 1;
+      }
     warm_entries_.clear();
     for (const Contact& c : contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
