@@ -410,11 +410,11 @@ class Home final : public Engine {
   // over contacts_ until every contact is within `tolerance` of its target or `sweeps` ran.
   // Returns the largest approach beyond a target left after the last sweep (m/s).
   //
-  // A contact that shares no ball with another (isolated) and changed nothing in the first sweep
-  // (no impulse before or after) sees the same velocities in every later sweep, so it would change
-  // nothing again: later sweeps skip it, bit for bit the same solve. In a falling gas most contacts
-  // are such pairs, close but parting (10^6 bowl balls: ~20 000 contacts, 10-16 sweeps, 8 ms a
-  // step on one core before; PERFORMANCE.md).
+  // A contact that shares no ball with another (isolated) sees velocities only it changes: once a
+  // sweep finds it changing nothing, every later sweep would too, so they skip it, bit for bit the
+  // same solve. In a falling gas most contacts are isolated pairs, close but parting, and the rest
+  // settle within a sweep or two (10^6 bowl balls: ~20 000 contacts, 10-16 sweeps, 8 ms a step on
+  // one core before; PERFORMANCE.md).
   double solve_contacts(int sweeps, double tolerance) {
     if (sweeps <= 0) {
       double left = 0;
@@ -437,13 +437,14 @@ class Home final : public Engine {
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
       c.moved |= c.impulse != old;
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
-      return old != 0 || c.impulse != 0;  // changed something (or may next time)
+      return c.impulse != old;
     };
+    // live_: the contacts the next sweep visits, an isolated one marked by its index + 1 negated.
     live_.clear();
     for (size_t k = 0; k < contacts_.size(); ++k) {
       Contact& c = contacts_[k];
       const bool isolated = degree[c.i] == 1 && (c.j < 0 || degree[c.j] == 1);
-      if (update(c) || !isolated) live_.push_back(static_cast<int>(k));
+      if (update(c) || !isolated) live_.push_back(isolated ? -1 - static_cast<int>(k) : static_cast<int>(k));
     }
     for (const Contact& c : contacts_) {
       degree[c.i] = 0;
@@ -453,13 +454,17 @@ class Home final : public Engine {
       if (it == sweeps) {
         double left = 0;
         for (int k : live_) {
-          const Contact& c = contacts_[k];
+          const Contact& c = contacts_[k < 0 ? -1 - k : k];
           left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
         }
         return left;
       }
       worst = 0;
-      for (int k : live_) update(contacts_[k]);
+      size_t kept = 0;
+      for (int k : live_)
+        if (k >= 0) update(contacts_[k]), live_[kept++] = k;
+        else if (update(contacts_[-1 - k])) live_[kept++] = k;
+      live_.resize(kept);
     }
     return 0.0;
   }
