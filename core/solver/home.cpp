@@ -150,7 +150,7 @@ class Home final : public Engine {
     // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
     if (!sc_.equal_radii) r_ = scene.radius;
     if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
-    if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1);
+    if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     ball_of_.resize(n_);
     for (int i = 0; i < n_; ++i) ball_of_[i] = i;
   }
@@ -302,6 +302,7 @@ class Home final : public Engine {
   void rebuild_list(double horizon, bool may_renumber, const Eigen::MatrixX2d& at, double vmax) {
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
+    for (int i : near_wall_) near_wall_mark_[i] = 0;  // in the numbers before a renumbering
     // The list is built from positions only: the grid copies velocities only for a renumbering.
     grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_, may_renumber && renumber_due());
     // Renumbering (at the start of a step only, where `at` is p_) leaves the grid's slot -> ball map
@@ -324,6 +325,7 @@ class Home final : public Engine {
                                  if (std::min(std::min(gx0, gx1), std::min(gy0, gy1)) <= 2.0 * half_skin_)
                                    near_wall_.push_back(i);
                                });
+    for (int i : near_wall_) near_wall_mark_[i] = 1;
   }
 
 
@@ -1008,8 +1010,10 @@ class Home final : public Engine {
   }
 
   // Ball i's earliest wall event (from its own time), into `best` if earlier.
+  // With a neighbour list, a ball not near a wall at its build cannot reach one while the list
+  // holds, even after collisions (beyond_skin): its walls are not looked at.
   void wall_event(int i, Event& best) const {
-    if (!walls_) return;
+    if (!walls_ || (listed_ && !near_wall_mark_[i])) return;
     const double ti = t_local_[i];
     for (int axis = 0; axis < 2; ++axis) {
       const double v = v_(i, axis);
@@ -1086,6 +1090,7 @@ class Home final : public Engine {
   NeighbourList list_;            // listed_ only
   Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
+  std::vector<uint8_t> near_wall_mark_;  // listed_: 1 for the balls in near_wall_
   Eigen::MatrixX2d scratch_;      // listed_: positions at a rebuild in mid-step
   std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
