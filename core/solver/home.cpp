@@ -165,16 +165,13 @@ class Home final : public Engine {
     // On the grid path one parallel pass kicks and measures what the grid and the wall screen need
     // (start_pass); the neighbour list needs neither.
     walls_screened_ = false;
-    if (listed_ || sc_.no_pairs) {
-      if (!sc_.no_gravity) {
-        v_.col(0).array() += g_.x() * dt;
-        v_.col(1).array() += g_.y() * dt;
-      }
-      build_broad_phase(dt);
-    } else {
+    if (!listed_ && !sc_.no_pairs) {
       start_pass();
-      build_broad_phase(dt);
+    } else if (!sc_.no_gravity) {
+      v_.col(0).array() += g_.x() * dt;
+      v_.col(1).array() += g_.y() * dt;
     }
+    build_broad_phase(dt);
     v_tol_ = velocity_tolerance();
     contact_pass();
     drift();
@@ -414,9 +411,8 @@ class Home final : public Engine {
   //
   // A contact that shares no ball with another (isolated) sees velocities only it changes: once a
   // sweep finds it changing nothing, every later sweep would too, so they skip it, bit for bit the
-  // same solve. In a falling gas most contacts are isolated pairs, close but parting, and the rest
-  // settle within a sweep or two (10^6 bowl balls: ~20 000 contacts, 10-16 sweeps, 8 ms a step on
-  // one core before; PERFORMANCE.md).
+  // same solve. In a falling gas most contacts are isolated pairs, close but parting (10^6 bowl
+  // balls: ~20 000 contacts, half of them such, 10-16 sweeps; PERFORMANCE.md, section 21).
   double solve_contacts(int sweeps, double tolerance) {
     if (sweeps <= 0) {
       double left = 0;
@@ -668,7 +664,7 @@ class Home final : public Engine {
   // passes it but is not listed cannot touch within the step (the list covers it), so it has no
   // event and the balls predicted are those the grid's screen would give events to.
   // Every pair that passes also gets its collision time here, by next_event's own expressions
-  // (pair_time), into approaches_: drift takes the balls' first events from them instead of
+  // (approach_root), into approaches_: drift takes the balls' first events from them instead of
   // walking each active ball's 3 x 3 cells again (first_pair_events).
   template <bool kEqualRadii>
   void screen_list() {
@@ -1068,7 +1064,7 @@ class Home final : public Engine {
   Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
-  std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each)
+  std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each); solve_contacts' scratch
   std::vector<int> cluster_;
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   ForkJoin pool_;
