@@ -162,10 +162,10 @@ class Home final : public Engine {
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
-    // On the grid path one parallel pass kicks and measures what the grid and the wall screen need
-    // (start_pass); the neighbour list needs neither.
+    // Without a neighbour list one parallel pass kicks and measures what the grid and the wall
+    // screen need (start_pass); the list needs neither (and has gravity only if rest_velocity is 0).
     walls_screened_ = false;
-    if (!listed_ && !sc_.no_pairs) {
+    if (!listed_) {
       start_pass();
     } else if (!sc_.no_gravity) {
       v_.col(0).array() += g_.x() * dt;
@@ -217,15 +217,14 @@ class Home final : public Engine {
       return;
     }
     // At the start of a step start_pass has measured the speeds and bounds; in mid-step they are taken afresh.
-    const bool measured = !mid_step && !sc_.no_pairs;
-    vbound_ = (measured ? std::sqrt(start_.speed2) : max_speed()) * kSpeedMargin;
+    vbound_ = (mid_step ? max_speed() : std::sqrt(start_.speed2)) * kSpeedMargin;
     if (sc_.no_pairs) return;
-    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_, true, measured ? &start_.bounds : nullptr);
+    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_, true, mid_step ? nullptr : &start_.bounds);
     // A renumbering moves the balls: the wall screen start_pass did is done again after it.
     if (!mid_step && renumber_if_due()) walls_screened_ = false;
   }
 
-  // The grid path's first pass over the balls, in parallel: the kick (symplectic Euler's velocity
+  // The first pass over the balls without a neighbour list, in parallel: the kick (symplectic Euler's velocity
   // update), then the largest speed and the positions' bounds for the grid, and the wall screen
   // (screen_walls) unless a renumbering is due. One read of the state instead of four (10^6 bowl
   // balls: PERFORMANCE.md).
@@ -247,7 +246,7 @@ class Home final : public Engine {
         sc_.equal_radii ? scan_range<true, true, true, false>(b, e, reach, near, scan)
                         : scan_range<false, true, true, false>(b, e, reach, near, scan);
     });
-    start_ = start_parts_[0];
+    start_ = StartScan{};
     for (const StartScan& q : start_parts_) start_.merge(q);
     walls_screened_ = screen;
   }
@@ -414,20 +413,7 @@ class Home final : public Engine {
   // same solve. In a falling gas most contacts are isolated pairs, close but parting (10^6 bowl
   // balls: ~20 000 contacts, half of them such, 10-16 sweeps; PERFORMANCE.md, section 21).
   double solve_contacts(int sweeps, double tolerance) {
-    if (sweeps <= 0) {
-      double left = 0;
-      for (const Contact& c : contacts_) left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
-      return left;
-    }
-    // Balls' contact counts (saturating at 2) in in_cluster_, which is all zero outside a cluster's
-    // gathering and is left so.
-    uint8_t* degree = in_cluster_.data();
-    const auto bump = [&](int b) { degree[b] = static_cast<uint8_t>(std::min(degree[b] + 1, 2)); };
-    for (const Contact& c : contacts_) {
-      bump(c.i);
-      if (c.j >= 0) bump(c.j);
-    }
-    double worst = 0;  // largest violation seen in this sweep (m/s)
+    double worst = kNever;  // largest violation seen in the last sweep (m/s)
     const auto update = [&](Contact& c) {
       const double vn = relative_normal_velocity(c.i, c.j, c.nx, c.ny);
       const double old = c.impulse;
@@ -437,26 +423,31 @@ class Home final : public Engine {
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
       return c.impulse != old;
     };
-    // live_: the contacts the next sweep visits, an isolated one marked by its index + 1 negated.
+    // live_: the contacts a sweep after the first visits, an isolated one as -1 - its index.
     live_.clear();
-    for (size_t k = 0; k < contacts_.size(); ++k) {
-      Contact& c = contacts_[k];
-      const bool isolated = degree[c.i] == 1 && (c.j < 0 || degree[c.j] == 1);
-      if (update(c) || !isolated) live_.push_back(isolated ? -1 - static_cast<int>(k) : static_cast<int>(k));
-    }
-    for (const Contact& c : contacts_) {
-      degree[c.i] = 0;
-      if (c.j >= 0) degree[c.j] = 0;
-    }
-    for (int it = 1; worst > tolerance; ++it) {
-      if (it == sweeps) {
-        double left = 0;
-        for (int k : live_) {
-          const Contact& c = contacts_[k < 0 ? -1 - k : k];
-          left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
-        }
-        return left;
+    if (sweeps <= 0) {
+      for (size_t k = 0; k < contacts_.size(); ++k) live_.push_back(static_cast<int>(k));
+    } else {
+      // Balls' contact counts (saturating at 2) in in_cluster_, which is all zero outside a
+      // cluster's gathering and is left so.
+      uint8_t* degree = in_cluster_.data();
+      const auto bump = [&](int b) { degree[b] = static_cast<uint8_t>(std::min(degree[b] + 1, 2)); };
+      for (const Contact& c : contacts_) {
+        bump(c.i);
+        if (c.j >= 0) bump(c.j);
       }
+      worst = 0;
+      for (size_t k = 0; k < contacts_.size(); ++k) {
+        Contact& c = contacts_[k];
+        const bool isolated = degree[c.i] == 1 && (c.j < 0 || degree[c.j] == 1);
+        if (update(c) || !isolated) live_.push_back(isolated ? -1 - static_cast<int>(k) : static_cast<int>(k));
+      }
+      for (const Contact& c : contacts_) {
+        degree[c.i] = 0;
+        if (c.j >= 0) degree[c.j] = 0;
+      }
+    }
+    for (int it = 1; it < sweeps && worst > tolerance; ++it) {
       worst = 0;
       size_t kept = 0;
       for (int k : live_)
@@ -464,7 +455,14 @@ class Home final : public Engine {
         else if (update(contacts_[-1 - k])) live_[kept++] = k;
       live_.resize(kept);
     }
-    return 0.0;
+    if (worst <= tolerance) return 0.0;
+    // A contact no longer visited changed nothing and approaches no faster than its target.
+    double left = 0;
+    for (int k : live_) {
+      const Contact& c = contacts_[k < 0 ? -1 - k : k];
+      left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
+    }
+    return left;
   }
 
   // Resting contact at the start of the step: every contact within reach of resting speeds
@@ -520,7 +518,7 @@ class Home final : public Engine {
     warm_entries_.clear();
     for (const Contact& c : contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
-    warm_.assign(n_, warm_entries_);
+    warm_.assign(warm_entries_);
   }
 
   // Per ball, in parallel: `active` if it can reach the wall it moves towards within the step
@@ -769,7 +767,7 @@ class Home final : public Engine {
         warm_entries_.push_back({new_number[e.i], e.j >= 0 ? new_number[e.j] : e.j, e.impulse});
       });
     });
-    warm_.assign(n_, warm_entries_);
+    warm_.assign(warm_entries_);
   }
 
   // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the

@@ -20,9 +20,8 @@ class WarmStart {
     double impulse;
   };
 
-  // Replaces the contents with `entries` (any order; one entry per (i, j)). `n` (the ball count) is
-  // not needed by the table; it stays for the callers' symmetry with the ball arrays.
-  void assign(int /*n*/, const std::vector<Entry>& entries) {
+  // Replaces the contents with `entries` (any order; one entry per (i, j)).
+  void assign(const std::vector<Entry>& entries) {
     entries_ = entries;
     size_t size = 16;
     while (size < 2 * entries_.size()) size *= 2;  // at most half full: short probes
