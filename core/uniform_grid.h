@@ -46,9 +46,15 @@ class UniformGrid {
   // Every pair of positions in order() in the same or adjacent cells, as runs: f(a, begin, end)
   // for each position a and each run [begin, end) of later partners (the rest of a's cell and the
   // next cell in its row; the three cells below in the next row). Each pair lies in exactly one run.
+  // Only the positions a in rows [row_begin, row_end) of cells: disjoint row ranges give disjoint
+  // pairs (so parts of a thread team can share the work).
   template <class F>
   void for_each_forward_range(F&& f) const {
-    for (int cy = 0; cy < ny_; ++cy)
+    for_each_forward_range(0, ny_, f);
+  }
+  template <class F>
+  void for_each_forward_range(int row_begin, int row_end, F&& f) const {
+    for (int cy = row_begin; cy < row_end; ++cy)
       for (int cx = 0; cx < nx_; ++cx) {
         const int c = cy * nx_ + cx;
         const int row_end = start_[cy * nx_ + (cx + 1 < nx_ ? cx + 2 : cx + 1)];
@@ -66,6 +72,7 @@ class UniformGrid {
   const std::vector<int>& order() const { return order_; }
 
   double cell() const { return cell_; }
+  int rows() const { return ny_; }
 
  private:
   template <class F>

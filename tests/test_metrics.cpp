@@ -214,29 +214,31 @@ TEST(Tunnelling, TheListedSearchCountsExactlyTheBruteForcePassThroughs) {
   // pile up and are searched among themselves on a grid); a huge allowance (long list).
   const Tuning tunings[] = {{3.0, 0.1}, {0.2, 0.02}, {0.2, 2.0}, {10.0, 0.1}};
   long total = 0;
-  for (const double tolerance : {0.02, 0.0, 0.3, -0.05})
-    for (const Tuning& tuning : tunings) {
-      RandomMotion motion(300, 7);
-      TunnellingCheck check(motion.radius(), motion.box(), tolerance);
-      check.set_tuning(tuning.allowance_radii, tuning.rebuild_share);
-      State prev = motion.state();
-      for (int k = 1; k <= 120; ++k) {
-        const State cur = motion.step();
-        prev = motion.previous_with_throws(prev);
-        const StepTunnelling got = check.step(prev, cur);
-        const int want = brute_force_passthroughs(prev, cur, motion.radius(), tolerance);
-        ASSERT_TRUE(got.finite);
-        ASSERT_EQ(got.pair, want) << "step " << k << ", tolerance " << tolerance << ", allowance "
-                                  << tuning.allowance_radii << ", rebuild share " << tuning.rebuild_share;
-        ASSERT_EQ(got.wall, wall_escapes(prev, cur, motion.box())) << "step " << k;
-        total += want;
-        prev = cur;
+  // One part, and three (each with its share of the balls, the grid's rows and the list).
+  for (const int threads : {1, 3})
+    for (const double tolerance : {0.02, 0.0, 0.3, -0.05})
+      for (const Tuning& tuning : tunings) {
+        RandomMotion motion(300, 7);
+        TunnellingCheck check(motion.radius(), motion.box(), tolerance, threads);
+        check.set_tuning(tuning.allowance_radii, tuning.rebuild_share);
+        State prev = motion.state();
+        for (int k = 1; k <= 120; ++k) {
+          const State cur = motion.step();
+          prev = motion.previous_with_throws(prev);
+          const StepTunnelling got = check.step(prev, cur);
+          const int want = brute_force_passthroughs(prev, cur, motion.radius(), tolerance);
+          ASSERT_TRUE(got.finite);
+          ASSERT_EQ(got.pair, want) << threads << " parts, step " << k << ", tolerance " << tolerance << ", allowance "
+                                    << tuning.allowance_radii << ", rebuild share " << tuning.rebuild_share;
+          ASSERT_EQ(got.wall, wall_escapes(prev, cur, motion.box())) << "step " << k;
+          total += want;
+          prev = cur;
+        }
+        if (tuning.rebuild_share < 1) {
+          EXPECT_GT(check.rebuilds(), 2) << "the list was never rebuilt";
+        }
       }
-      if (tuning.rebuild_share < 1) {
-        EXPECT_GT(check.rebuilds(), 2) << "the list was never rebuilt";
-      }
-    }
-  EXPECT_GT(total, 1000);  // the comparison saw many pass-throughs that count
+  EXPECT_GT(total, 2000);  // the comparison saw many pass-throughs that count
 }
 
 TEST(Tunnelling, ATeleportThroughARowOfBallsIsCaughtWithoutARebuild) {
@@ -308,6 +310,13 @@ TEST(Tunnelling, ANonFiniteStateCountsNothing) {
   after.vel(0, 1) = 0, after.pos(1, 0) = std::numeric_limits<double>::infinity();
   EXPECT_FALSE(m.observe_motion(before, after));
   EXPECT_EQ(m.summary().tunnelling_wall, 0);
+  // On two parts (one ball each): an escape in each part counts twice, a NaN in the first part
+  // makes the whole step non-finite.
+  TunnellingCheck check(s.radius, s.container, 0.02, 2);
+  after = state({-1, -5.3, 1, -5.2}, {0, 0, 0, 0});
+  EXPECT_EQ(check.step(before, after).wall, 2);
+  after.vel(0, 0) = std::nan("");
+  EXPECT_FALSE(check.step(before, after).finite);
 }
 
 TEST(Sticking, APairHeldOverlappingKPlusOneSamplesCountsOne) {

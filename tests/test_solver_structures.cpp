@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "solver/fork_join.h"
+#include "fork_join.h"
 #include "solver/home_grid.h"
 #include "solver/warm_start.h"
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace ballbench {
 
@@ -47,10 +48,20 @@ bool leaves_allowance(double ax, double ay, double bx, double by, double rx, dou
   return !(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2);
 }
 
+int check_threads(int n, int requested) {
+  if (requested > 0) return requested;
+  if (n < TunnellingCheck::kParallelBalls) return 1;
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+}
+
 }  // namespace
 
-TunnellingCheck::TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance)
-    : radius_(radius), box_(box), tolerance_(tolerance) {
+TunnellingCheck::TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance, int threads)
+    : radius_(radius),
+      box_(box),
+      tolerance_(tolerance),
+      pool_(check_threads(static_cast<int>(radius.size()), threads)),
+      parts_(pool_.parts()) {
   if (radius_.size() > 0) {
     r_min_ = radius_.minCoeff(), r_max_ = radius_.maxCoeff();
     equal_radii_ = r_min_ == r_max_;
@@ -95,43 +106,70 @@ StepTunnelling TunnellingCheck::step(const State& prev, const State& cur) {
     rebuild(prev, cur, std::sqrt(sw.step2_sum / n));
   }
   for (int e : escaped_) is_escaped_[e] = 1;
-  out.pair = count_listed(prev, cur) + count_escaped(prev, cur);
+  pool_.run([&](int p) { parts_[p].pairs = count_listed(prev, cur, parts_[p]); });
+  out.pair = count_escaped(prev, cur);
+  for (const Part& part : parts_) out.pair += part.pairs;
   for (int e : escaped_) is_escaped_[e] = 0;
   return out;
 }
 
-TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cur, bool contained) {
-  const int n = cur.n();
-  double* rec = records();
-  const double *px = prev.pos.col(0).data(), *py = prev.pos.col(1).data();
-  const double *cx = cur.pos.col(0).data(), *cy = cur.pos.col(1).data();
-  const double *vx = cur.vel.col(0).data(), *vy = cur.vel.col(1).data();
-  const bool box = box_.kind == ContainerKind::Box;
-  const double x0 = box_.min.x(), y0 = box_.min.y(), x1 = box_.max.x(), y1 = box_.max.y();
-  const double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
-  const double a2 = a_ * a_;
-  double nonfinite = 0;  // x - x is 0 for a finite x, NaN otherwise: the sum stays 0 iff all are finite
-  int wall = 0;
-  double m2max = 0, m2sum = 0;
+// The parts' escaped balls, in ball order (each part's range follows the one before).
+void TunnellingCheck::gather_escaped() {
   escaped_.clear();
-  for (int i = 0; i < n; ++i) {
-    const double ax = px[i], ay = py[i], bx = cx[i], by = cy[i];
-    nonfinite += (bx - bx) + (by - by) + (vx[i] - vx[i]) + (vy[i] - vy[i]);
-    const bool in_before = !(ax < x0 || ay < y0 || ax > x1 || ay > y1);
-    const bool out_after = bx < x0 || by < y0 || bx > x1 || by > y1;
-    wall += box && in_before && out_after;
-    const double dx = bx - ax, dy = by - ay;
-    m2max = std::max(m2max, dx * dx + dy * dy);
-    m2sum += dx * dx + dy * dy;
-    double* r = rec + 4 * i;
-    r[0] = ax, r[1] = ay, r[2] = dx, r[3] = dy;
-    if (contained && leaves_allowance(ax, ay, bx, by, rx[i], ry[i], a2)) escaped_.push_back(i);
+  for (const Part& part : parts_) escaped_.insert(escaped_.end(), part.escaped.begin(), part.escaped.end());
+}
+
+TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cur, bool contained) {
+  const int n = cur.n(), parts = pool_.parts();
+  double* rec = records();
+  pool_.run([&](int p) {
+    // Locals, not the closure's references: the loop's push_back may call out, after which every
+    // captured value would be loaded again, each ball.
+    const double *px = prev.pos.col(0).data(), *py = prev.pos.col(1).data();
+    const double *cx = cur.pos.col(0).data(), *cy = cur.pos.col(1).data();
+    const double *vx = cur.vel.col(0).data(), *vy = cur.vel.col(1).data();
+    const bool box = box_.kind == ContainerKind::Box;
+    const double x0 = box_.min.x(), y0 = box_.min.y(), x1 = box_.max.x(), y1 = box_.max.y();
+    const double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
+    const double a2 = a_ * a_;
+    Part& part = parts_[p];
+    // Every sum and flag below is carried from ball to ball: kept to one cheap operation each (an
+    // integer AND, one add, one max), since a chain of four dependent adds per ball (the
+    // finiteness sum this sweep had) set its pace.
+    int finite = 1;
+    int wall = 0;
+    double m2max = 0, m2sum = 0;
+    part.escaped.clear();
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    for (long i = b; i < e; ++i) {
+      const double ax = px[i], ay = py[i], bx = cx[i], by = cy[i];
+      // x - x is 0 for a finite x, NaN otherwise.
+      finite &= ((bx - bx) + (by - by)) + ((vx[i] - vx[i]) + (vy[i] - vy[i])) == 0;
+      const bool in_before = !(ax < x0 || ay < y0 || ax > x1 || ay > y1);
+      const bool out_after = bx < x0 || by < y0 || bx > x1 || by > y1;
+      wall += box && in_before && out_after;
+      const double dx = bx - ax, dy = by - ay, m2 = dx * dx + dy * dy;
+      m2max = std::max(m2max, m2);
+      m2sum += m2;
+      double* r = rec + 4 * i;
+      r[0] = ax, r[1] = ay, r[2] = dx, r[3] = dy;
+      if (contained && leaves_allowance(ax, ay, bx, by, rx[i], ry[i], a2)) part.escaped.push_back(static_cast<int>(i));
+    }
+    part.sweep = {finite != 0, wall, m2max, m2sum};
+  });
+  gather_escaped();
+  Sweep all;  // in part order: the same sums for a given number of parts
+  for (const Part& part : parts_) {
+    all.finite = all.finite && part.sweep.finite;
+    all.wall += part.sweep.wall;
+    all.step2_max = std::max(all.step2_max, part.sweep.step2_max);
+    all.step2_sum += part.sweep.step2_sum;
   }
-  return {nonfinite == 0, wall, m2max, m2sum};
+  return all;
 }
 
 void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_rms) {
-  const int n = cur.n();
+  const int n = cur.n(), parts = pool_.parts();
   ++rebuilds_;
   built_ = true;
   // A few radii, or two typical steps where balls step further (then a ball keeps its place in the
@@ -144,33 +182,58 @@ void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_r
   double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
   const double *px = prev.pos.col(0).data(), *py = prev.pos.col(1).data();
   const double *cx = cur.pos.col(0).data(), *cy = cur.pos.col(1).data();
-  escaped_.clear();
-  for (int i = 0; i < n; ++i) {
-    rx[i] = 0.5 * (px[i] + cx[i]), ry[i] = 0.5 * (py[i] + cy[i]);
-    if (leaves_allowance(px[i], py[i], cx[i], cy[i], rx[i], ry[i], a2)) escaped_.push_back(i);
-  }
+  pool_.run([&](int p) {
+    Part& part = parts_[p];
+    part.escaped.clear();
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    for (long i = b; i < e; ++i) {
+      rx[i] = 0.5 * (px[i] + cx[i]), ry[i] = 0.5 * (py[i] + cy[i]);
+      if (leaves_allowance(px[i], py[i], cx[i], cy[i], rx[i], ry[i], a2)) part.escaped.push_back(static_cast<int>(i));
+    }
+  });
+  gather_escaped();
   grid_.build(ref_, 2.0 * reach_ * r_max_ + 2.0 * a_);
   const std::vector<int>& ball = grid_.order();
   sx_.resize(n), sy_.resize(n), sr_.resize(n);
-  for (int a = 0; a < n; ++a) {
-    const int i = ball[a];
-    sx_[a] = rx[i], sy_[a] = ry[i], sr_[a] = radius_[i];
-  }
   // Listed: references closer than c (r_i + r_j) + 2 a, so in the same or adjacent cells. Appended
   // without a branch: the distance test's outcome is random, and mispredictions cost more than it.
+  // Each part lists the pairs whose first slot lies in its rows of cells.
   const double twice_a = 2.0 * a_;
-  size_t m = 0;
-  grid_.for_each_forward_range([&](int a, int begin, int end) {
-    if (list_.size() < m + (end - begin)) list_.resize(2 * (m + end - begin));
-    const double x = sx_[a], y = sy_[a], r = sr_[a];
-    const int i = ball[a];
-    for (int b = begin; b < end; ++b) {
-      const double dx = x - sx_[b], dy = y - sy_[b], range = reach_ * (r + sr_[b]) + twice_a;
-      list_[m] = {i, ball[b]};
-      m += dx * dx + dy * dy < range * range;
+  const int rows = grid_.rows();
+  pool_.run([&](int p) {
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    for (long a = b; a < e; ++a) {
+      const int i = ball[a];
+      sx_[a] = rx[i], sy_[a] = ry[i], sr_[a] = radius_[i];
     }
   });
-  listed_ = m;
+  pool_.run([&](int p) {
+    Part& part = parts_[p];
+    // Locals (pointers reloaded only after a resize): through the closure's references the
+    // compiler loaded every one of them again for each candidate.
+    const double *sx = sx_.data(), *sy = sy_.data(), *sr = sr_.data(), reach = reach_;
+    const int* order = ball.data();
+    std::array<int, 2>* list = part.list.data();
+    size_t m = 0, capacity = part.list.size();
+    const int row_begin = static_cast<int>(ForkJoin::range_begin(rows, p, parts));
+    const int row_end = static_cast<int>(ForkJoin::range_begin(rows, p + 1, parts));
+    grid_.for_each_forward_range(row_begin, row_end, [&](int a, int begin, int end) {
+      if (capacity < m + (end - begin)) {
+        part.list.resize(2 * (m + end - begin));
+        list = part.list.data(), capacity = part.list.size();
+      }
+      const double x = sx[a], y = sy[a], r = sr[a];
+      const int i = order[a];
+      size_t k = m;
+      for (int b = begin; b < end; ++b) {
+        const double dx = x - sx[b], dy = y - sy[b], range = reach * (r + sr[b]) + twice_a;
+        list[k] = {i, order[b]};
+        k += dx * dx + dy * dy < range * range;
+      }
+      m = k;
+    });
+    part.listed = m;
+  });
 }
 
 // Necessary conditions for a pass-through from the step records (see the constructor).
@@ -189,18 +252,19 @@ inline bool TunnellingCheck::judge(const State& prev, const State& cur, int i, i
   return may_pass(i, j, rs) && passes_through(prev, cur, i, j, rs, tolerance_);
 }
 
-int TunnellingCheck::count_listed(const State& prev, const State& cur) {
+int TunnellingCheck::count_listed(const State& prev, const State& cur, Part& part) {
   // First the chord filter over every listed pair, without a branch (its outcome is random), then
   // the rest on the few that pass.
-  if (survivors_.size() < listed_) survivors_.resize(listed_);
+  const size_t listed = part.listed;
+  if (part.survivors.size() < listed) part.survivors.resize(listed);
   const double* rec = records();
-  const std::array<int, 2>* list = list_.data();
-  int* survivors = survivors_.data();
+  const std::array<int, 2>* list = part.list.data();
+  int* survivors = part.survivors.data();
   const double equal_rs = 2.0 * r_max_;
   size_t m = 0;
   constexpr size_t kAhead = 16;  // records fetched ahead: the partners lie at random in memory
-  for (size_t k = 0; k < listed_; ++k) {
-    if (k + kAhead < listed_) {
+  for (size_t k = 0; k < listed; ++k) {
+    if (k + kAhead < listed) {
       __builtin_prefetch(rec + 4 * list[k + kAhead][0]);
       __builtin_prefetch(rec + 4 * list[k + kAhead][1]);
     }

@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include "fork_join.h"
 #include "scene.h"
 #include "state.h"
 #include "uniform_grid.h"
@@ -67,12 +68,22 @@ struct StepTunnelling {
 //    relative positions must pass within (1 - tolerance)(r_i + r_j); each with a margin of 1e-6
 //    (r_i + r_j), far above rounding for coordinates up to ~10^8 radii.
 // The list is rebuilt when more than a share of the balls escaped (their search then costs more).
-// tests/test_metrics.cpp compares it with the brute-force count over every pair.
+// tests/test_metrics.cpp compares it with the brute-force count over every pair, on one part and
+// on several.
+//
+// Threads: the sweep, the list's build and its check run on a ForkJoin team (from kParallelBalls
+// balls by default), each part over a fixed range of balls or of the grid's rows, with a list of
+// its own; the counts are integers and the step statistics are summed in part order, so the
+// result is the same on any number of parts. The engine's own threads wait meanwhile (the runner
+// steps, then checks), so the harness may use the cores the engine uses.
 // Working memory lives here, kept across steps: fresh allocations of a few MB per step cost page
 // faults that outweigh the search at 10^5 balls.
 class TunnellingCheck {
  public:
-  TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance);
+  // `threads` 0: one below kParallelBalls balls, else the machine's cores (at most 8).
+  TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance, int threads = 0);
+  // Measured (bench/harness_benchmark.cpp, PERFORMANCE.md "Harness overhead").
+  static constexpr int kParallelBalls = 50'000;
 
   StepTunnelling step(const State& prev, const State& cur);
 
@@ -88,9 +99,20 @@ class TunnellingCheck {
     double step2_max = 0;  // the longest step of a ball, squared
     double step2_sum = 0;  // the sum of every ball's step squared
   };
+  // What one part of the team holds: its pairs of the list (those whose first ball lies in its
+  // rows of the grid), its escaped balls of this step (in ball order), its scratch.
+  struct Part {
+    std::vector<std::array<int, 2>> list;
+    size_t listed = 0;  // pairs in list (its size is only capacity)
+    std::vector<int> survivors;
+    std::vector<int> escaped;
+    Sweep sweep;
+    int pairs = 0;  // pass-throughs among its listed pairs, this step
+  };
   Sweep sweep(const State& prev, const State& cur, bool contained);
   void rebuild(const State& prev, const State& cur, double step_rms);
-  int count_listed(const State& prev, const State& cur);
+  void gather_escaped();
+  int count_listed(const State& prev, const State& cur, Part& part);
   int count_escaped(const State& prev, const State& cur);
   double* records();
   const double* records() const { return const_cast<TunnellingCheck*>(this)->records(); }
@@ -116,13 +138,12 @@ class TunnellingCheck {
   UniformGrid grid_;                // over ref_; its order() maps a slot (position in cell order) to a ball
   std::vector<double> sx_, sy_, sr_;  // reference point and radius by slot: a cell's neighbourhood is
                                       // contiguous there (the scene's order is random in space)
-  std::vector<std::array<int, 2>> list_;  // the listed pairs of balls, in cell order
-  size_t listed_ = 0;                     // pairs in list_ (its size is only capacity)
-  std::vector<int> survivors_;            // scratch of count_listed()
+  ForkJoin pool_;
+  std::vector<Part> parts_;          // one per part of pool_
   // Per step, by ball: prev x, prev y, step x, step y side by side, 32-byte aligned: one cache line
   // per ball for the pair filters, which reach balls at random.
   std::vector<double> rec_;
-  std::vector<int> escaped_;        // the balls not contained in this step
+  std::vector<int> escaped_;        // the balls not contained in this step, in ball order
   std::vector<char> is_escaped_;    // by ball
   UniformGrid escaped_grid_;
   Eigen::MatrixX2d escaped_mid_;

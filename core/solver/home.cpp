@@ -15,7 +15,7 @@
 
 #include "engine_settings.h"
 #include "input_error.h"
-#include "solver/fork_join.h"
+#include "fork_join.h"
 #include "solver/home_grid.h"
 #include "solver/neighbour_list.h"
 #include "solver/warm_start.h"
@@ -187,14 +187,20 @@ class Home final : public Engine {
       out.pos = p_, out.vel = v_;
       return;
     }
+    // A gather through the renumbering (random reads): on the step's threads, each part over its
+    // own range of the scene's order.
     const int* at = ball_of_.data();
-    for (int c = 0; c < 2; ++c) {
-      const double* __restrict p = p_.col(c).data();
-      const double* __restrict v = v_.col(c).data();
-      double* __restrict op = out.pos.col(c).data();
-      double* __restrict ov = out.vel.col(c).data();
-      for (int k = 0; k < n_; ++k) op[k] = p[at[k]], ov[k] = v[at[k]];
-    }
+    const int parts = pool_.parts();
+    pool_.run([&](int part) {
+      const long b = ForkJoin::range_begin(n_, part, parts), e = ForkJoin::range_begin(n_, part + 1, parts);
+      for (int c = 0; c < 2; ++c) {
+        const double* __restrict p = p_.col(c).data();
+        const double* __restrict v = v_.col(c).data();
+        double* __restrict op = out.pos.col(c).data();
+        double* __restrict ov = out.vel.col(c).data();
+        for (long k = b; k < e; ++k) op[k] = p[at[k]], ov[k] = v[at[k]];
+      }
+    });
   }
 
   nlohmann::json settings() const override {
@@ -1065,7 +1071,7 @@ class Home final : public Engine {
   std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each); solve_contacts' scratch
   std::vector<int> cluster_;
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
-  ForkJoin pool_;
+  mutable ForkJoin pool_;  // mutable: read() gathers on it too
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
   std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift

@@ -12,7 +12,7 @@
 
 #include <Eigen/Core>
 
-#include "solver/fork_join.h"
+#include "fork_join.h"
 
 namespace ballbench {
 

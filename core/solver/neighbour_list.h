@@ -14,7 +14,7 @@
 // the per-step grid (core/solver/PERFORMANCE.md).
 #include <vector>
 
-#include "solver/fork_join.h"
+#include "fork_join.h"
 #include "solver/home_grid.h"
 
 namespace ballbench {

@@ -1,11 +1,12 @@
 #pragma once
-// A fixed team of threads for the home solver's per-ball loops: run(f) calls f(part) for every
-// part 0 .. parts() - 1, part 0 on the calling thread, and returns when all are done.
+// A fixed team of threads for per-ball loops (the home solver's step, the harness's tunnelling
+// check): run(f) calls f(part) for every part 0 .. parts() - 1, part 0 on the calling thread, and
+// returns when all are done.
 //
 // Why not OpenMP: the runner isolates each engine run in a fork()ed child (core/isolated_run.cpp),
 // and GCC's libgomp hangs in a child forked after the parent used a parallel region (measured on
-// this machine with a ten-line program). Here the threads belong to the engine object, so an
-// engine built in the child has its own.
+// this machine with a ten-line program). Here the threads belong to the object that
+// uses them (an engine, a metrics accumulator), so one built in the child has its own.
 //
 // Determinism: callers give each part a fixed, contiguous range of work and never reduce floating
 // point sums across parts; results are then the same for any number of parts.

@@ -1,4 +1,4 @@
-#include "solver/fork_join.h"
+#include "fork_join.h"
 
 namespace ballbench {
 
