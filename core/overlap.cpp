@@ -2,27 +2,40 @@
 
 #include <cmath>
 
-#include "uniform_grid.h"
-
 namespace ballbench {
 
-void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, UniformGrid& grid,
+void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, OverlapScratch& scratch,
                        std::vector<Overlap>& out) {
   out.clear();
-  if (pos.rows() < 2) return;
+  const int n = static_cast<int>(pos.rows());
+  if (n < 2) return;
+  UniformGrid& grid = scratch.grid;
   grid.build(pos, 2.0 * radius.maxCoeff());
-  grid.for_each_candidate_pair([&](int i, int j) {
-    const double dx = pos(i, 0) - pos(j, 0), dy = pos(i, 1) - pos(j, 1);
-    const double rs = radius(i) + radius(j);
-    const double d2 = dx * dx + dy * dy;
-    if (d2 < rs * rs) out.push_back({std::min(i, j), std::max(i, j), rs - std::sqrt(d2)});
+  const int* order = grid.order().data();
+  scratch.x.resize(n), scratch.y.resize(n), scratch.r.resize(n);
+  double *x = scratch.x.data(), *y = scratch.y.data(), *r = scratch.r.data();
+  for (int a = 0; a < n; ++a) {
+    const int i = order[a];
+    x[a] = pos(i, 0), y[a] = pos(i, 1), r[a] = radius(i);
+  }
+  // The same pairs in the same order as for_each_candidate_pair (the rest of a ball's cell, the
+  // next cell in its row, the three cells of the next row), as runs over the copies.
+  grid.for_each_forward_range([&](int a, int begin, int end) {
+    const double xa = x[a], ya = y[a], ra = r[a];
+    for (int b = begin; b < end; ++b) {
+      const double dx = xa - x[b], dy = ya - y[b], rs = ra + r[b], d2 = dx * dx + dy * dy;
+      if (d2 < rs * rs) [[unlikely]] {
+        const int i = order[a], j = order[b];
+        out.push_back({std::min(i, j), std::max(i, j), rs - std::sqrt(d2)});
+      }
+    }
   });
 }
 
 std::optional<std::pair<int, int>> first_overlapping_pair(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius) {
-  UniformGrid grid;
+  OverlapScratch scratch;
   std::vector<Overlap> found;
-  overlapping_pairs(pos, radius, grid, found);
+  overlapping_pairs(pos, radius, scratch, found);
   if (found.empty()) return std::nullopt;
   auto best = found.front();
   for (const auto& o : found)

@@ -8,9 +8,9 @@
 
 #include <Eigen/Core>
 
-namespace ballbench {
+#include "uniform_grid.h"
 
-class UniformGrid;
+namespace ballbench {
 
 // The overlapping pair (i < j) with the smallest i, then j, or none.
 std::optional<std::pair<int, int>> first_overlapping_pair(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius);
@@ -20,8 +20,17 @@ struct Overlap {
   double depth;   // r_i + r_j - |x_i - x_j| (m), > 0
 };
 
-// Every overlapping pair, via `grid` (rebuilt here with a cell of twice the largest radius).
-void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, UniformGrid& grid,
+// What overlapping_pairs works in, kept by the caller across calls (no allocation once warm): a
+// grid, and the positions and radii copied in its cell order, so that each ball's candidates are
+// two contiguous runs of memory instead of balls at random in the scene's order.
+struct OverlapScratch {
+  UniformGrid grid;
+  std::vector<double> x, y, r;
+};
+
+// Every overlapping pair, via a grid with a cell of twice the largest radius, in the grid's visiting
+// order (UniformGrid::for_each_candidate_pair's).
+void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, OverlapScratch& scratch,
                        std::vector<Overlap>& out);
 
 // An incremental spatial hash for placing balls one at a time (random scenes without overlap).

@@ -43,9 +43,9 @@ double kinetic_energy(const State& st, const Scene& s) {
 
 // Deepest overlap of any pair (m), 0 if none.
 double deepest_overlap(const State& st, const Scene& s) {
-  UniformGrid grid;
+  OverlapScratch scratch;
   std::vector<Overlap> found;
-  overlapping_pairs(st.pos, s.radius, grid, found);
+  overlapping_pairs(st.pos, s.radius, scratch, found);
   double worst = 0;
   for (const Overlap& o : found) worst = std::max(worst, o.depth);
   return worst;

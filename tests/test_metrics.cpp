@@ -10,6 +10,7 @@
 #include "metrics/energy.h"
 #include "metrics/metrics.h"
 #include "metrics/tunnelling.h"
+#include "overlap.h"
 #include "scene_loader.h"
 
 namespace ballbench {
@@ -205,6 +206,48 @@ class RandomMotion {
   State state_;
   std::vector<std::pair<int, Eigen::Vector2d>> history_fix_;
 };
+
+TEST(Overlaps, EveryOverlappingPairInTheGridsOrder) {
+  // 600 balls of radii 0.1 - 0.5 dropped at random into a 12 x 12 square: hundreds of overlaps,
+  // some of them between balls of very different sizes (the grid's cell is set by the largest).
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> at(-6, 6), size(0.1, 0.5);
+  const int n = 600;
+  Eigen::MatrixX2d pos(n, 2);
+  Eigen::VectorXd radius(n);
+  for (int i = 0; i < n; ++i) pos(i, 0) = at(rng), pos(i, 1) = at(rng), radius(i) = size(rng);
+  OverlapScratch scratch;
+  std::vector<Overlap> found;
+  overlapping_pairs(pos, radius, scratch, found);
+  std::vector<Overlap> want;  // brute force, in the order the grid visits candidate pairs
+  scratch.grid.for_each_candidate_pair([&](int i, int j) {
+    const double d = (pos.row(i) - pos.row(j)).norm(), rs = radius(i) + radius(j);
+    if (d < rs) want.push_back({std::min(i, j), std::max(i, j), rs - d});
+  });
+  int brute = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) brute += (pos.row(i) - pos.row(j)).norm() < radius(i) + radius(j);
+  EXPECT_GT(brute, 300);
+  ASSERT_EQ(static_cast<int>(found.size()), brute);
+  ASSERT_EQ(found.size(), want.size());
+  for (size_t k = 0; k < found.size(); ++k) {
+    EXPECT_EQ(found[k].i, want[k].i) << k;
+    EXPECT_EQ(found[k].j, want[k].j) << k;
+    EXPECT_NEAR(found[k].depth, want[k].depth, 1e-12) << k;
+  }
+  // The scratch is reused: a second, smaller call finds the same as a fresh one.
+  const Eigen::MatrixX2d few = pos.topRows(50);
+  const Eigen::VectorXd few_r = radius.head(50);
+  std::vector<Overlap> again, fresh;
+  overlapping_pairs(few, few_r, scratch, again);
+  OverlapScratch other;
+  overlapping_pairs(few, few_r, other, fresh);
+  ASSERT_EQ(again.size(), fresh.size());
+  for (size_t k = 0; k < again.size(); ++k) {
+    EXPECT_EQ(again[k].i, fresh[k].i);
+    EXPECT_EQ(again[k].j, fresh[k].j);
+  }
+}
 
 TEST(Tunnelling, TheListedSearchCountsExactlyTheBruteForcePassThroughs) {
   struct Tuning {

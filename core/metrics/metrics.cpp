@@ -34,7 +34,7 @@ void MetricsAccumulator::observe(const State& s) {
   m_.momentum.max_abs_drift = std::max(m_.momentum.max_abs_drift, (p - m_.momentum.initial).norm());
 
   // Overlaps: penetration (every depth) and sticking (deeper than the tolerance).
-  overlapping_pairs(s.pos, scene_.radius, grid_, overlaps_);
+  overlapping_pairs(s.pos, scene_.radius, overlap_scratch_, overlaps_);
   deep_.clear();
   deep_leaving_.clear();
   for (const Overlap& o : overlaps_) {

@@ -74,7 +74,7 @@ class MetricsAccumulator {
   MetricsConfig cfg_;
   MetricsSummary m_;
   StickingTracker sticking_;
-  UniformGrid grid_;
+  OverlapScratch overlap_scratch_;
   TunnellingCheck tunnelling_;
   std::vector<Overlap> overlaps_, deep_;
   std::vector<char> deep_in_wall_, wall_leaving_, deep_leaving_;
