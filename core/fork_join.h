@@ -5,8 +5,8 @@
 //
 // Why not OpenMP: the runner isolates each engine run in a fork()ed child (core/isolated_run.cpp),
 // and GCC's libgomp hangs in a child forked after the parent used a parallel region (measured on
-// this machine with a ten-line program). Here the threads belong to the object that
-// uses them (an engine, a metrics accumulator), so one built in the child has its own.
+// this machine with a ten-line program). Here the threads belong to the object that uses them (an
+// engine, a tunnelling check), so one built in the child has its own.
 //
 // Determinism: callers give each part a fixed, contiguous range of work and never reduce floating
 // point sums across parts; results are then the same for any number of parts.
