@@ -14,12 +14,35 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return parts;
 }
 
+std::optional<HarnessRow> harness_row(const nlohmann::json& b, const std::vector<std::string>& parts) {
+  HarnessRow row;
+  row.engine = parts[1], row.scene = parts[2];
+  try {
+    row.n = std::stol(parts[3]);
+    row.sample_every = std::stoi(parts[4].substr(std::string("sample_every:").size()));
+  } catch (const std::exception&) {
+    return std::nullopt;  // not one of ours
+  }
+  if (b.value("error_occurred", false)) {
+    row.error = b.value("error_message", "skipped");
+  } else {
+    row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
+    row.harness_ns_per_ball_step = b.at("harness_ns_per_ball_step").get<double>();
+    row.overhead = b.at("overhead").get<double>();
+  }
+  return row;
+}
+
 BenchResults bench_from_json(const nlohmann::json& j) {
   BenchResults out;
   out.context = j.value("context", nlohmann::json::object());
   for (const auto& b : j.at("benchmarks")) {
     if (b.value("run_type", "iteration") != "iteration") continue;
     const auto parts = split(b.at("name").get<std::string>(), '/');
+    if (parts.size() >= 5 && parts[0] == "harness" && parts[4].starts_with("sample_every:")) {
+      if (auto row = harness_row(b, parts)) out.harness.push_back(std::move(*row));
+      continue;
+    }
     if (parts.size() < 5 || (parts[0] != "step" && parts[0] != "pour")) continue;  // then options, e.g. min_time:0.200
     BenchRow row;
     row.window = parts[0];

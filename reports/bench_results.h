@@ -21,14 +21,27 @@ struct BenchRow {
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 
+// What the harness costs beside the engine (bench/harness_benchmark.cpp): a run of `ENGINE` on the
+// scaled SCENE with N balls, the sampled metrics seeing every K-th step.
+struct HarnessRow {
+  std::string engine, scene;           // from the benchmark name harness/ENGINE/SCENE/N/sample_every:K
+  long n = 0;
+  int sample_every = 1;
+  double engine_ns_per_ball_step = 0, harness_ns_per_ball_step = 0;  // the benchmark's counters
+  double overhead = 0;                 // harness time over engine time, the same run
+  std::string error;                   // the benchmark skipped with this message ("" = ran)
+};
+
 struct BenchResults {
   nlohmann::json context;              // Google Benchmark's context: host, CPU, library versions
   std::vector<BenchRow> rows;          // step/ rows in the file's order; aggregates (mean, median) left out
   std::vector<BenchRow> pour;          // pour/ rows (window "pour"), apart: they are not scaling points
+  std::vector<HarnessRow> harness;     // harness/ rows
 };
 
-// Rows whose names do not start step/ or pour/ENGINE/PROFILE/SCENE/N (other benchmarks in the same
-// file) are skipped. Throws InputError naming the file if it is not Google Benchmark JSON.
+// Rows whose names do not start step/ or pour/ENGINE/PROFILE/SCENE/N or
+// harness/ENGINE/SCENE/N/sample_every:K (other benchmarks in the same file) are skipped. Throws
+// InputError naming the file if it is not Google Benchmark JSON.
 BenchResults read_bench_file(const std::string& path);
 
 }  // namespace ballbench

@@ -272,6 +272,26 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
   }
 }
 
+// Issue 6's fourth target: metrics and sampling at most 10% of the engine's own step time.
+void put_harness(MarkdownBuffer& put, const BenchResults& bench) {
+  put("## Harness overhead\n\n`bench/ballbench_harness_benchmark` (Google Benchmark): `run_engine` on the scaled "
+      "`gas`, 100 steps without a reference, engine step time and harness time (reading each state back, the "
+      "tunnelling and finiteness check every step, the sampled metrics and checksums every k-th step) from the same "
+      "run. The target is a harness at most 10% of the engine's time (0.10). Source: `results/harness.json`, Google "
+      "Benchmark's own JSON.\n\n");
+  put("| engine | scene | balls | sampled metrics every | engine ns/ball-step | harness ns/ball-step | harness / engine "
+      "|\n|---|---|---:|---:|---:|---:|---:|\n");
+  for (const HarnessRow& r : bench.harness) {
+    if (!r.error.empty()) {
+      put("| {} | {} | {} | {} | failed: {} | | |\n", r.engine, r.scene, r.n, r.sample_every, r.error);
+      continue;
+    }
+    put("| {} | {} | {} | {} | {:.1f} | {:.1f} | {:.2f} |\n", r.engine, r.scene, r.n, r.sample_every,
+        r.engine_ns_per_ball_step, r.harness_ns_per_ball_step, r.overhead);
+  }
+  put("\n");
+}
+
 }  // namespace
 
 ReportInputs read_report_inputs(const std::string& results_dir) {
@@ -289,6 +309,8 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.run = nlohmann::json::parse(s, nullptr, false);
     } else if (name == "bench.json") {
       in.bench = read_bench_file(f.string());
+    } else if (name == "harness.json") {
+      in.harness = read_bench_file(f.string());
     } else if (name.starts_with("sweep-")) {
       in.sweeps.push_back(read_sweep_file(f.string()));
     } else if (name.starts_with("stress-")) {
@@ -360,6 +382,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   }
   for (const SweepResult& sw : in.sweeps) put_sweep(put, sw, figures);
   if (in.bench && !in.bench->rows.empty()) put_scaling(put, *in.bench, figures);
+  if (in.harness && !in.harness->harness.empty()) put_harness(put, *in.harness);
   for (const FrontierResult& f : in.frontiers) put_frontier(put, f, figures);
 
   put("## Engines, profiles and limits\n\n`stock` is the engine as shipped (its defaults); `tuned` is what its own "

@@ -20,6 +20,7 @@ struct ReportInputs {
   std::vector<SweepResult> sweeps;   // results/sweep-*.json (`ballbench sweep`)
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
+  std::optional<BenchResults> harness;  // results/harness.json (bench/ballbench_harness_benchmark)
 };
 
 // A figure drawn for the report (figures.h).

@@ -7,6 +7,7 @@
 
 #include "bench_results.h"
 #include "input_error.h"
+#include "report_writer.h"
 
 namespace ballbench {
 namespace {
@@ -44,6 +45,49 @@ TEST(BenchResults, ReadsStepBenchmarksFromGoogleBenchmarkJson) {
   EXPECT_EQ(b.pour[0].window, "pour");
   EXPECT_EQ(b.pour[0].n, 1000000);
   EXPECT_EQ(b.pour[0].steps_per_s, 3.3);
+}
+
+TEST(BenchResults, ReadsHarnessBenchmarksAndTheReportShowsThem) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_harness." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({
+  "context": {"num_cpus": 2},
+  "benchmarks": [
+    {"name": "tunnelling/home/gas/100000/min_time:1.000/manual_time", "run_type": "iteration", "ns_per_ball_step": 20},
+    {"name": "harness/home/gas/100000/sample_every:1/min_time:1.000/manual_time", "run_type": "iteration",
+     "engine_ns_per_ball_step": 40.0, "harness_ns_per_ball_step": 110.0, "overhead": 2.75},
+    {"name": "harness/home/gas/100000/sample_every:10/min_time:1.000/manual_time", "run_type": "iteration",
+     "engine_ns_per_ball_step": 35.0, "harness_ns_per_ball_step": 38.5, "overhead": 1.1},
+    {"name": "harness/box2d/gas/100000/sample_every:10", "run_type": "iteration", "error_occurred": true,
+     "error_message": "out of memory"}
+  ]})";
+  const BenchResults b = read_bench_file(path.string());
+  std::filesystem::remove(path);
+  EXPECT_TRUE(b.rows.empty());
+  ASSERT_EQ(b.harness.size(), 3u);
+  EXPECT_EQ(b.harness[0].engine, "home");
+  EXPECT_EQ(b.harness[0].scene, "gas");
+  EXPECT_EQ(b.harness[0].n, 100000);
+  EXPECT_EQ(b.harness[0].sample_every, 1);
+  EXPECT_EQ(b.harness[1].sample_every, 10);
+  EXPECT_EQ(b.harness[1].harness_ns_per_ball_step, 38.5);
+  EXPECT_EQ(b.harness[1].overhead, 1.1);
+  EXPECT_EQ(b.harness[2].error, "out of memory");
+
+  ReportInputs in;
+  in.run = nlohmann::json::object();
+  in.harness = b;
+  const std::string md = render_report(in);
+  for (const char* want : {"## Harness overhead", "| home | gas | 100000 | 10 | 35.0 | 38.5 | 1.10 |",
+                           "| home | gas | 100000 | 1 | 40.0 | 110.0 | 2.75 |", "failed: out of memory"})
+    EXPECT_NE(md.find(want), std::string::npos) << want << "\n" << md;
+}
+
+TEST(BenchResults, AHarnessRowWithoutItsCountersIsAnInputError) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_harness_bad." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({"benchmarks": [{"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration",
+                             "overhead": 1.0}]})";
+  EXPECT_THROW(read_bench_file(path.string()), InputError);
+  std::filesystem::remove(path);
 }
 
 TEST(BenchResults, AFileThatIsNotBenchmarkJsonIsAnInputError) {

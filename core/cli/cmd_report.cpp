@@ -1,12 +1,14 @@
 // `ballbench report`: run the standard comparison (scene tables, work-precision sweeps, stability
-// frontiers, the step benchmark), write the results and render REPORT.md with its figures.
+// frontiers, the step and harness benchmarks), write the results and render REPORT.md with its figures.
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -36,6 +38,7 @@ struct Suite {
   int stress_levels = 5;
   std::vector<std::string> bench_filters;  // Google Benchmark --benchmark_filter, one process each
   double bench_min_time = 0.05;           // s per benchmark
+  std::string harness_filter;             // of bench/ballbench_harness_benchmark (its own minimum times)
   double timeout_s = 600;                 // per engine run
 };
 
@@ -51,6 +54,7 @@ Suite quick_suite() {
       "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas/(100000|1000000)|bowl/100000)(/|$)",
       "^(step|pour)/home/default/bowl/1000000(/|$)"};
   s.bench_min_time = 0.05;
+  s.harness_filter = "^harness/home/gas/100000/";  // issue 6's measure: 10^5 balls, every step and every 10th
   s.timeout_s = 120;
   return s;
 }
@@ -65,6 +69,7 @@ Suite full_suite() {
   s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
                      "^(step|pour)/home/default/bowl/1000000(/|$)"};
   s.bench_min_time = 0.2;
+  s.harness_filter = "^harness/";
   s.timeout_s = 600;
   return s;
 }
@@ -102,42 +107,44 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
 }
 
 
-// The step benchmark built beside this executable (build/<preset>/bench/ next to core/cli/).
-std::string default_bench_binary() {
+// A benchmark binary built beside this executable (build/<preset>/bench/ next to core/cli/).
+std::string default_bench_binary(const std::string& name) {
   std::error_code ec;
   const fs::path self = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return "";
-  return (self.parent_path().parent_path().parent_path() / "bench" / "ballbench_step_benchmark").string();
+  return (self.parent_path().parent_path().parent_path() / "bench" / name).string();
 }
 
-// Runs the step benchmark into `path` (Google Benchmark's JSON, via its own --benchmark_out); its
-// console table goes to stderr as progress. A missing binary or a failed run is reported and
-// skipped: the rest of the report stands without the scaling section.
-void run_bench(const ReportArgs& a, const Suite& suite, const std::string& path) {
-  const std::string bin = a.bench_binary.empty() ? default_bench_binary() : a.bench_binary;
+// Runs benchmark binary `bin` once per filter into `path` (Google Benchmark's JSON, via its own
+// --benchmark_out, the processes' outputs joined); its console table goes to stderr as progress.
+// `found` says whether an output holds what the filter asked for. A missing binary or a failed run
+// is reported and skipped ("`section` skipped: ..."): the rest of the report stands without it.
+void run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
+               const std::string& path, const std::string& section,
+               const std::function<bool(const BenchResults&)>& found) {
   if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
-    fmt::print(stderr, "scaling skipped: no step benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", bin);
+    fmt::print(stderr, "{} skipped: no benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", section, bin);
     return;
   }
-  fmt::print(stderr, "running the step benchmark ({}), about a minute\n", bin);
+  fmt::print(stderr, "running {} for the {} section, about a minute\n", bin, section);
   // One process per filter; the peak resident set of the last one (the largest run alone) is then
-  // that run's own. Their JSON outputs are joined into one file.
+  // that run's own.
   nlohmann::json joined;
-  for (size_t k = 0; k < suite.bench_filters.size(); ++k) {
-    const std::string& filter = suite.bench_filters[k];
+  for (size_t k = 0; k < filters.size(); ++k) {
+    const std::string& filter = filters[k];
     const std::string tmp = fmt::format("{}.running{}", path, k);
-    const std::string cmd = fmt::format("'{}' --benchmark_filter='{}' --benchmark_min_time={} --benchmark_out='{}' "
-                                        "--benchmark_out_format=json 1>&2",
-                                        bin, filter, suite.bench_min_time, tmp);
+    const std::string cmd =
+        fmt::format("'{}' --benchmark_filter='{}' {} --benchmark_out='{}' --benchmark_out_format=json 1>&2", bin, filter,
+                    min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", tmp);
     const int rc = std::system(cmd.c_str());
     std::string why = rc != 0 ? fmt::format("it failed (status {})", rc) : "";
     if (why.empty()) try {
-        if (read_bench_file(tmp).rows.empty()) why = "no benchmark matched " + filter;
+        if (!found(read_bench_file(tmp))) why = "no benchmark matched " + filter;
       } catch (const InputError& e) {
         why = e.what();
       }
     if (!why.empty()) {
-      fmt::print(stderr, "scaling skipped: the step benchmark: {}; its output is in {}\n", why, tmp);
+      fmt::print(stderr, "{} skipped: {}: {}; its output is in {}\n", section, bin, why, tmp);
       return;
     }
     const nlohmann::json part = parse_json_file(tmp, "Google Benchmark JSON");
@@ -204,9 +211,20 @@ void report(const ReportArgs& a) {
       write_frontier_file(path, run_frontier(scene, engines, o, run_context()));
       fmt::print(stderr, "stressed {}\n", name);
     }
-    const std::string bench_path = results_dir + "/bench.json";
-    if (a.no_bench) fs::remove(bench_path);
-    else if (!reuse(bench_path, fs::exists(bench_path))) run_bench(a, suite, bench_path);
+    const std::string bench_path = results_dir + "/bench.json", harness_path = results_dir + "/harness.json";
+    if (a.no_bench) {
+      fs::remove(bench_path), fs::remove(harness_path);
+    } else {
+      const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
+      if (!reuse(bench_path, fs::exists(bench_path)))
+        run_bench(bin, suite.bench_filters, suite.bench_min_time, bench_path, "scaling",
+                  [](const BenchResults& b) { return !b.rows.empty(); });
+      // The harness benchmark beside the step benchmark.
+      if (!reuse(harness_path, fs::exists(harness_path)))
+        run_bench((fs::path(bin).parent_path() / "ballbench_harness_benchmark").string(), {suite.harness_filter},
+                  std::nullopt, harness_path, "harness overhead",
+                  [](const BenchResults& b) { return !b.harness.empty(); });
+    }
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";
     context["scenes"] = suite.scenes;  // the report's order
@@ -233,10 +251,12 @@ void add_report(CLI::App& app) {
       cmd->add_flag("--render-only", a->render_only, "only rebuild REPORT.md from the results already in OUT/results");
   cmd->add_flag("--fresh", a->fresh, "run everything again, even what complete results in OUT/results already hold")
       ->excludes(render_only);
-  auto* no_bench = cmd->add_flag("--no-bench", a->no_bench, "leave the step benchmark (and the scaling section) out")
+  auto* no_bench = cmd->add_flag("--no-bench", a->no_bench,
+                                 "leave the benchmarks (and the scaling and harness overhead sections) out")
                        ->excludes(render_only);
   cmd->add_option("--bench-binary", a->bench_binary,
-                  "the step benchmark to run (default: bench/ballbench_step_benchmark in this build)")
+                  "the step benchmark to run (default: bench/ballbench_step_benchmark in this build); the "
+                  "harness benchmark is taken from the same folder")
       ->excludes(render_only)
       ->excludes(no_bench);
   cmd->callback([a] { report(*a); });
