@@ -28,7 +28,10 @@ inline CliOutcome run_cli(const std::string& args) {
   const std::string out = (dir / ("ballbench_cli_out." + tag)).string();
   const std::string err = (dir / ("ballbench_cli_err." + tag)).string();
   const int rc = std::system((std::string(BALLBENCH_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
-  return {WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
+  CliOutcome outcome{WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
+  std::error_code ec;  // nothing left behind in the temporary folder
+  std::filesystem::remove(out, ec), std::filesystem::remove(err, ec);
+  return outcome;
 }
 
 }  // namespace ballbench::testing

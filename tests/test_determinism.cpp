@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -56,6 +57,7 @@ TEST_P(Deterministic, TwoRunsGiveTheSameChecksums) {
   TrajectoryCsv csv(csv_path);
   EXPECT_EQ(a.checksum_trajectory, run(scene, engine, steps, &csv).checksum_trajectory);
   csv.close();
+  std::filesystem::remove(csv_path);
 }
 
 // `exact` is event-driven and `home` iterates contacts: both must still repeat themselves exactly.

@@ -181,6 +181,7 @@ TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
   // No part files left behind.
   for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
     EXPECT_EQ(e.path().filename().string().find("bb_isolation_traj.csv."), std::string::npos) << e.path();
+  std::filesystem::remove(csv);
 }
 
 // The trajectory CSV is the same whether runs are isolated or not.
@@ -196,6 +197,7 @@ TEST(Isolation, TrajectoryIsTheSameWithAndWithoutIsolation) {
   };
   EXPECT_FALSE(slurp(a).empty());
   EXPECT_EQ(slurp(a), slurp(b));
+  std::filesystem::remove(a), std::filesystem::remove(b);
 }
 
 TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {

@@ -1,5 +1,6 @@
 // `ballbench report`: run the standard comparison (scene tables, work-precision sweeps, stability
-// frontiers, the step and harness benchmarks), write the results and render REPORT.md with its figures.
+// frontiers, the step and harness benchmarks), write the results and render REPORT.md with its
+// figures.
 #include <unistd.h>
 
 #include <algorithm>
