@@ -127,7 +127,7 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     fmt::print(stderr, "{} skipped: no benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", section, bin);
     return;
   }
-  fmt::print(stderr, "running {} for the {} section, about a minute\n", bin, section);
+  fmt::print(stderr, "running {} for the {} section\n", bin, section);
   // One process per filter; the peak resident set of the last one (the largest run alone) is then
   // that run's own.
   nlohmann::json joined;
