@@ -24,17 +24,24 @@ using Outcome = ballbench::testing::CliOutcome;
 
 Outcome regress(const std::string& args) { return ballbench::testing::run_cli("regress " + args); }
 
-// A baseline from this build, made once for the tests below.
+// A baseline from this build, made once for the tests below and removed when the process ends.
 const std::string& fresh_baseline_path() {
-  static const std::string path = [] {
+  struct Baseline {
+    std::string path;
+    ~Baseline() {
+      std::error_code ec;
+      std::filesystem::remove(path, ec);
+    }
+  };
+  static const Baseline baseline = [] {
     const std::string p =
         (std::filesystem::temp_directory_path() / ("bb_fresh_baseline." + std::to_string(::getpid()) + ".json")).string();
     std::filesystem::remove(p);
     const Outcome o = regress("--update --baseline " + p);
     if (o.status != 0) throw std::runtime_error("regress --update failed: " + o.err);
-    return p;
+    return Baseline{p};
   }();
-  return path;
+  return baseline.path;
 }
 
 nlohmann::json fresh_baseline() {
