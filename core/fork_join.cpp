@@ -1,6 +1,14 @@
 #include "fork_join.h"
 
+#include <algorithm>
+
 namespace ballbench {
+
+int ForkJoin::threads_for(int n, int parallel_from, int requested) {
+  if (requested > 0) return requested;
+  if (n < parallel_from) return 1;
+  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
+}
 
 ForkJoin::ForkJoin(int threads) {
   for (int p = 1; p < threads; ++p) workers_.emplace_back([this, p] { work(p); });

@@ -31,6 +31,11 @@ class ForkJoin {
   // [begin, end) of part p when n items are split into parts() contiguous ranges.
   static long range_begin(long n, int p, int parts) { return n * p / parts; }
 
+  // How many threads a team for n balls should have: `requested` if positive, else one below
+  // `parallel_from` balls (waking a thread costs more than it saves there) and the machine's cores
+  // (at most 8) from there on. Each user measures its own `parallel_from`.
+  static int threads_for(int n, int parallel_from, int requested);
+
  private:
   void work(int part);
 

@@ -230,6 +230,8 @@ TEST(Overlaps, EveryOverlappingPairInTheGridsOrder) {
   EXPECT_GT(brute, 300);
   ASSERT_EQ(static_cast<int>(found.size()), brute);
   ASSERT_EQ(found.size(), want.size());
+  // Depths: the same distance through Eigen's norm here; 1e-12 m is a thousand ulps of the
+  // coordinates (|x| < 6 m, ulp ~1e-15 m), so only a wrong pair or formula can miss it.
   for (size_t k = 0; k < found.size(); ++k) {
     EXPECT_EQ(found[k].i, want[k].i) << k;
     EXPECT_EQ(found[k].j, want[k].j) << k;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 namespace ballbench {
 
@@ -48,19 +47,13 @@ bool leaves_allowance(double ax, double ay, double bx, double by, double rx, dou
   return !(std::max(ex * ex + ey * ey, fx * fx + fy * fy) <= a2);
 }
 
-int check_threads(int n, int requested) {
-  if (requested > 0) return requested;
-  if (n < TunnellingCheck::kParallelBalls) return 1;
-  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
-}
-
 }  // namespace
 
 TunnellingCheck::TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance, int threads)
     : radius_(radius),
       box_(box),
       tolerance_(tolerance),
-      pool_(check_threads(static_cast<int>(radius.size()), threads)),
+      pool_(ForkJoin::threads_for(static_cast<int>(radius.size()), kParallelBalls, threads)),
       parts_(pool_.parts()) {
   if (radius_.size() > 0) {
     r_min_ = radius_.minCoeff(), r_max_ = radius_.maxCoeff();

@@ -8,7 +8,6 @@
 #include <functional>
 #include <limits>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include <fmt/format.h>
@@ -55,11 +54,6 @@ int reorder_steps(int n, int requested) {
   return n >= kReorderBalls ? kReorderSteps : 0;
 }
 
-int thread_count(int n, int requested) {
-  if (requested > 0) return requested;
-  if (n < kParallelBalls) return 1;
-  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 8u));
-}
 
 // The shortcuts this scene allows among those `allow` permits.
 HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double rest_velocity) {
@@ -141,7 +135,7 @@ class Home final : public Engine {
         count_(n_, 0),
         in_cluster_(n_, 0),
         active_(n_, 0),
-        pool_(thread_count(n_, s.threads)),
+        pool_(ForkJoin::threads_for(n_, kParallelBalls, s.threads)),
         pair_hits_(pool_.parts()),
         wall_hits_(pool_.parts()),
         first_events_(pool_.parts()),

@@ -24,8 +24,9 @@ class WarmStart {
   void assign(const std::vector<Entry>& entries) {
     entries_ = entries;
     size_t size = 16;
-    while (size < 2 * entries_.size()) size *= 2;  // at most half full: short probes
-    mask_ = size - 1;
+    int bits = 4;
+    while (size < 2 * entries_.size()) size *= 2, ++bits;  // at most half full: short probes
+    mask_ = size - 1, shift_ = 64 - bits;
     slot_.assign(size, kEmpty);
     for (size_t k = 0; k < entries_.size(); ++k) {
       size_t s = hash(entries_[k].i, entries_[k].j);
@@ -55,12 +56,13 @@ class WarmStart {
   // Fibonacci hashing of the pair (Knuth, TAOCP vol. 3, 6.4): the top bits of a multiplicative hash.
   size_t hash(int i, int j) const {
     const uint64_t key = (static_cast<uint64_t>(static_cast<uint32_t>(i)) << 32) | static_cast<uint32_t>(j);
-    return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
+    return static_cast<size_t>((key * 0x9E3779B97F4A7C15ull) >> shift_);
   }
 
   std::vector<Entry> entries_;
   std::vector<int> slot_;  // entry index or kEmpty
   size_t mask_ = 0;
+  int shift_ = 60;  // 64 - log2(slots): the hash's top bits index a slot
 };
 
 }  // namespace ballbench
