@@ -48,6 +48,45 @@ TEST(WarmStart, FindsEveryStoredContactAndNothingElse) {
   EXPECT_EQ(left, 0);
 }
 
+// The parallel counting sort gives the serial sort's slots on any number of parts, whether the
+// balls come in random order (most are strays: in another part's cells) or nearly in cell order
+// (renumbered a few steps ago: few strays), and whatever the cell size.
+TEST(HomeGrid, ParallelSortGivesTheSerialSlots) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> coord(-40.0, 40.0), jitter(-0.6, 0.6);
+  const int n = 4000;
+  Eigen::MatrixX2d pos(n, 2), vel(n, 2);
+  for (int i = 0; i < n; ++i) pos(i, 0) = coord(rng), pos(i, 1) = coord(rng), vel(i, 0) = i, vel(i, 1) = -i;
+  for (bool near_sorted : {false, true}) {
+    if (near_sorted) {  // cell order, then every ball moved a little
+      ForkJoin one(1);
+      HomeGrid sorter;
+      sorter.build(pos, vel, Eigen::VectorXd(), 1.5, one);
+      Eigen::MatrixX2d moved(n, 2);
+      for (int s = 0; s < n; ++s) moved.row(s) = pos.row(sorter.id()[s]) + Eigen::RowVector2d(jitter(rng), jitter(rng));
+      pos = moved;
+    }
+    for (double cell : {0.9, 1.5, 6.0}) {
+      ForkJoin one(1);
+      HomeGrid serial;
+      serial.build(pos, vel, Eigen::VectorXd(), cell, one);
+      for (int threads : {2, 3}) {
+        ForkJoin pool(threads);
+        HomeGrid grid;
+        grid.build(pos, vel, Eigen::VectorXd(), cell, pool);
+        ASSERT_EQ(grid.cells(), serial.cells());
+        for (int c = 0; c <= grid.cells(); ++c)
+          ASSERT_EQ(grid.first(c), serial.first(c)) << "cell " << c << ", " << threads << " parts";
+        for (int s = 0; s < n; ++s) {
+          ASSERT_EQ(grid.id()[s], serial.id()[s]) << "slot " << s << ", " << threads << " parts, cell " << cell
+                                                  << (near_sorted ? ", nearly sorted" : ", random order");
+          ASSERT_EQ(grid.vx()[s], serial.vx()[s]);
+        }
+      }
+    }
+  }
+}
+
 // for_each_slot_beyond visits every ball beyond the four thresholds, each slot once, on one part
 // and on two (the grid's parallel sort), whatever the cell size.
 TEST(HomeGrid, EdgeWalkFindsEveryBallBeyondTheThresholds) {

@@ -87,28 +87,49 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
     gather();
     return;
   }
-  // In parallel by ranges of cells:
-  // part p owns cells [cb, ce) and their entries of start_. Every part reads every ball's cell
-  // (computed in parallel first), counts those in its cells, takes the running sums over them, and
-  // places them from the last ball backwards, which leaves each cell's first slot in start_: the
-  // same slots on any number of parts, and no histogram beside start_ (a second one cost 4 bytes
-  // per cell, ~4.4 per ball at 10^6 bowl balls). Each part reads the n cell indices twice instead
-  // of half of them: a few MB, sequentially, against a step of tens of ms at 10^6.
+  // In parallel by ranges of cells: part p owns cells [cut[p], cut[p + 1]) and their entries of
+  // start_, and places the balls of those cells; no histogram beside start_ (a second one cost 4
+  // bytes per cell, ~4.4 per ball at 10^6 bowl balls). The cuts are the cells of the balls that
+  // begin each part's range of balls, so when the balls are nearly in cell order (renumbered in it
+  // a few steps ago: every large scene) a part's cells hold nearly its own balls. Each part counts
+  // the balls of its range that fall in its cells and lists the others (strays) for their owners;
+  // then it counts the strays others listed for it, takes the running sums over its cells, and
+  // places its balls from the last backwards (the strays of later ranges, its own range, the strays
+  // of earlier ones: ball order), which leaves each cell's first slot in start_. The same slots for
+  // any cuts and any number of parts; each part reads n / parts cells plus the strays, where it
+  // read all n twice before (10^6 bowl balls, the sort from cell indices to placing: 6.0 - 7.6 ->
+  // 4.7 - 5.7 ms a step; PERFORMANCE.md, section 25).
   start_.resize(cells + 1);
-  std::vector<long> total(parts + 1, 0);  // balls in each part's cells, then its first slot
   pool.run([&](int p) {
-    const size_t cb = ForkJoin::range_begin(cells, p, parts), ce = ForkJoin::range_begin(cells, p + 1, parts);
-    std::fill(start_.begin() + cb, start_.begin() + ce, 0);
     const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
     for (long i = b; i < e; ++i) cell_of_[i] = cell_y(py[i]) * nx_ + cell_x(px[i]);
   });
+  std::vector<size_t> cut(parts + 1);
+  cut[0] = 0, cut[parts] = cells;
+  for (int p = 1; p < parts; ++p)
+    cut[p] = std::max<size_t>(cut[p - 1], cell_of_[ForkJoin::range_begin(n, p, parts)]);
+  strays_.resize(parts);
+  std::vector<long> total(parts + 1, 0);  // balls in each part's cells, then its first slot
   pool.run([&](int p) {
-    const size_t cb = ForkJoin::range_begin(cells, p, parts), ce = ForkJoin::range_begin(cells, p + 1, parts);
+    const size_t cb = cut[p], ce = cut[p + 1];
     int* count = start_.data();
-    for (int i = 0; i < n; ++i) {
+    std::fill(count + cb, count + ce, 0);
+    std::vector<int>& strays = strays_[p];
+    strays.clear();
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    for (long i = b; i < e; ++i) {
       const size_t c = cell_of_[i];
       if (c - cb < ce - cb) ++count[c];  // c in [cb, ce)
+      else strays.push_back(static_cast<int>(i));
     }
+  });
+  pool.run([&](int p) {
+    const size_t cb = cut[p], ce = cut[p + 1];
+    int* count = start_.data();
+    for (int q = 0; q < parts; ++q)
+      if (q != p)
+        for (int i : strays_[q])
+          if (cell_of_[i] - cb < ce - cb) ++count[cell_of_[i]];
     long sum = 0;
     for (size_t c = cb; c < ce; ++c) sum += count[c], count[c] = static_cast<int>(sum);  // ends, from the part's first slot
     total[p + 1] = sum;
@@ -116,15 +137,22 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
   for (int p = 0; p < parts; ++p) total[p + 1] += total[p];
   start_[cells] = n;
   pool.run([&](int p) {
-    const size_t cb = ForkJoin::range_begin(cells, p, parts), ce = ForkJoin::range_begin(cells, p + 1, parts);
+    const size_t cb = cut[p], ce = cut[p + 1];
     const int offset = static_cast<int>(total[p]);
     for (size_t c = cb; c < ce; ++c) start_[c] += offset;
-    for (int i = n - 1; i >= 0; --i) {
+    const auto place = [&](int i) {
       const size_t c = cell_of_[i];
-      if (c - cb >= ce - cb) continue;  // not this part's cell
+      if (c - cb >= ce - cb) return;  // not this part's cell
       const int s = --start_[c];
       id_[s] = i, cell_sorted_[s] = static_cast<int>(c);
-    }
+    };
+    const auto place_strays = [&](int q) {
+      for (auto it = strays_[q].rbegin(); it != strays_[q].rend(); ++it) place(*it);
+    };
+    for (int q = parts - 1; q > p; --q) place_strays(q);
+    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+    for (long i = e - 1; i >= b; --i) place(static_cast<int>(i));
+    for (int q = p - 1; q >= 0; --q) place_strays(q);
   });
   gather();
 }

@@ -109,6 +109,7 @@ class HomeGrid {
   std::vector<int> cell_of_;  // ball -> cell
   std::vector<int> cell_sorted_;  // slot -> cell
   std::vector<int> id_;       // slot -> ball
+  std::vector<std::vector<int>> strays_;  // per part of the parallel sort: its balls in others' cells
   std::vector<double> x_, y_, vx_, vy_, r_;  // in slot order
 };
 
