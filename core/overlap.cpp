@@ -12,12 +12,10 @@ void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radiu
   UniformGrid& grid = scratch.grid;
   grid.build(pos, 2.0 * radius.maxCoeff());
   const int* order = grid.order().data();
-  scratch.x.resize(n), scratch.y.resize(n), scratch.r.resize(n);
-  double *x = scratch.x.data(), *y = scratch.y.data(), *r = scratch.r.data();
-  for (int a = 0; a < n; ++a) {
-    const int i = order[a];
-    x[a] = pos(i, 0), y[a] = pos(i, 1), r[a] = radius(i);
-  }
+  CellOrderedBalls& balls = scratch.balls;
+  balls.resize(n);
+  balls.gather(grid, pos, radius, 0, n);
+  const double *x = balls.x.data(), *y = balls.y.data(), *r = balls.r.data();
   // The same pairs in the same order as for_each_candidate_pair (the rest of a ball's cell, the
   // next cell in its row, the three cells of the next row), as runs over the copies.
   grid.for_each_forward_range([&](int a, int begin, int end) {

@@ -21,11 +21,10 @@ struct Overlap {
 };
 
 // What overlapping_pairs works in, kept by the caller across calls (no allocation once warm): a
-// grid, and the positions and radii copied in its cell order, so that each ball's candidates are
-// two contiguous runs of memory instead of balls at random in the scene's order.
+// grid, and the positions and radii copied in its cell order.
 struct OverlapScratch {
   UniformGrid grid;
-  std::vector<double> x, y, r;
+  CellOrderedBalls balls;
 };
 
 // Every overlapping pair, via a grid with a cell of twice the largest radius, in the grid's visiting

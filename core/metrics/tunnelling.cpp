@@ -187,24 +187,20 @@ void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_r
   gather_escaped();
   grid_.build(ref_, 2.0 * reach_ * r_max_ + 2.0 * a_);
   const std::vector<int>& ball = grid_.order();
-  sx_.resize(n), sy_.resize(n), sr_.resize(n);
+  slots_.resize(n);
+  pool_.run([&](int p) {
+    slots_.gather(grid_, ref_, radius_, ForkJoin::range_begin(n, p, parts), ForkJoin::range_begin(n, p + 1, parts));
+  });
   // Listed: references closer than c (r_i + r_j) + 2 a, so in the same or adjacent cells. Appended
   // without a branch: the distance test's outcome is random, and mispredictions cost more than it.
   // Each part lists the pairs whose first slot lies in its rows of cells.
   const double twice_a = 2.0 * a_;
   const int rows = grid_.rows();
   pool_.run([&](int p) {
-    const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-    for (long a = b; a < e; ++a) {
-      const int i = ball[a];
-      sx_[a] = rx[i], sy_[a] = ry[i], sr_[a] = radius_[i];
-    }
-  });
-  pool_.run([&](int p) {
     Part& part = parts_[p];
     // Locals (pointers reloaded only after a resize): through the closure's references the
     // compiler loaded every one of them again for each candidate.
-    const double *sx = sx_.data(), *sy = sy_.data(), *sr = sr_.data(), reach = reach_;
+    const double *sx = slots_.x.data(), *sy = slots_.y.data(), *sr = slots_.r.data(), reach = reach_;
     const int* order = ball.data();
     std::array<int, 2>* list = part.list.data();
     size_t m = 0, capacity = part.list.size();
@@ -288,6 +284,7 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
   if (m == 0) return 0;
   const double* rec = records();
   const std::vector<int>& ball = grid_.order();
+  const double *sx = slots_.x.data(), *sy = slots_.y.data(), *sr = slots_.r.data();
   int count = 0;
   // Against contained balls: their references lie within c (r_e + r_j) + a of e's segment, so
   // within c (r_e + r_j) + a + |d_e| / 2 of its midpoint.
@@ -299,7 +296,7 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
     const double mx = r[0] + 0.5 * r[2], my = r[1] + 0.5 * r[3], re = radius_[e], slack = a_ + 0.5 * step;
     auto against = [&](int begin, int end) {
       for (int b = begin; b < end; ++b) {
-        const double dx = mx - sx_[b], dy = my - sy_[b], near = reach_ * (re + sr_[b]) + slack;
+        const double dx = mx - sx[b], dy = my - sy[b], near = reach_ * (re + sr[b]) + slack;
         if (dx * dx + dy * dy >= near * near) continue;  // the reference is too far from e's path
         const int j = ball[b];
         if (!is_escaped_[j] && judge(prev, cur, e, j, re + radius_[j])) ++count;

@@ -136,8 +136,7 @@ class TunnellingCheck {
   long rebuilds_ = 0;
   Eigen::MatrixX2d ref_;            // reference points of the current list, by ball
   UniformGrid grid_;                // over ref_; its order() maps a slot (position in cell order) to a ball
-  std::vector<double> sx_, sy_, sr_;  // reference point and radius by slot: a cell's neighbourhood is
-                                      // contiguous there (the scene's order is random in space)
+  CellOrderedBalls slots_;          // reference point and radius by slot of grid_
   ForkJoin pool_;
   std::vector<Part> parts_;          // one per part of pool_
   // Per step, by ball: prev x, prev y, step x, step y side by side, 32-byte aligned: one cache line

@@ -54,7 +54,6 @@ int reorder_steps(int n, int requested) {
   return n >= kReorderBalls ? kReorderSteps : 0;
 }
 
-
 // The shortcuts this scene allows among those `allow` permits.
 HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double rest_velocity) {
   const SceneFeatures f = scene.features();
@@ -82,20 +81,17 @@ struct Event {
 };
 
 // What the grid needs from the positions and velocities at the start of a step: the largest
-// squared speed and the positions' bounds (min x, min y, max x, max y). Min and max are exact in
-// any order, so parts may merge them.
+// squared speed and the positions' bounds. Both are exact in any order, so parts may merge them.
 struct StartScan {
   double speed2 = 0;
-  std::array<double, 4> bounds = {kNever, kNever, -kNever, -kNever};
+  HomeGrid::Bounds bounds;
   void add(double x, double y, double v2) {
     speed2 = std::max(speed2, v2);
-    bounds[0] = std::min(bounds[0], x), bounds[1] = std::min(bounds[1], y);
-    bounds[2] = std::max(bounds[2], x), bounds[3] = std::max(bounds[3], y);
+    bounds.add(x, y);
   }
   void merge(const StartScan& o) {
     speed2 = std::max(speed2, o.speed2);
-    bounds[0] = std::min(bounds[0], o.bounds[0]), bounds[1] = std::min(bounds[1], o.bounds[1]);
-    bounds[2] = std::max(bounds[2], o.bounds[2]), bounds[3] = std::max(bounds[3], o.bounds[3]);
+    bounds.merge(o.bounds);
   }
 };
 
@@ -238,13 +234,12 @@ class Home final : public Engine {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
       std::vector<int>& near = wall_hits_[p];
-      StartScan& scan = start_parts_[p];
       if (screen)
-        sc_.equal_radii ? scan_range<true, true, true, true>(b, e, reach, near, scan)
-                        : scan_range<false, true, true, true>(b, e, reach, near, scan);
+        start_parts_[p] = sc_.equal_radii ? scan_range<true, true, true, true>(b, e, reach, near)
+                                          : scan_range<false, true, true, true>(b, e, reach, near);
       else
-        sc_.equal_radii ? scan_range<true, true, true, false>(b, e, reach, near, scan)
-                        : scan_range<false, true, true, false>(b, e, reach, near, scan);
+        start_parts_[p] = sc_.equal_radii ? scan_range<true, true, true, false>(b, e, reach, near)
+                                          : scan_range<false, true, true, false>(b, e, reach, near);
     });
     start_ = StartScan{};
     for (const StartScan& q : start_parts_) start_.merge(q);
@@ -531,13 +526,12 @@ class Home final : public Engine {
       wall_hits_[p].clear();
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      StartScan unused;
       if (sc_.elastic)
-        sc_.equal_radii ? scan_range<true, false, false, true>(b, e, reach, wall_hits_[p], unused)
-                        : scan_range<false, false, false, true>(b, e, reach, wall_hits_[p], unused);
+        sc_.equal_radii ? scan_range<true, false, false, true>(b, e, reach, wall_hits_[p])
+                        : scan_range<false, false, false, true>(b, e, reach, wall_hits_[p]);
       else
-        sc_.equal_radii ? scan_range<true, true, false, true>(b, e, reach, wall_hits_[p], unused)
-                        : scan_range<false, true, false, true>(b, e, reach, wall_hits_[p], unused);
+        sc_.equal_radii ? scan_range<true, true, false, true>(b, e, reach, wall_hits_[p])
+                        : scan_range<false, true, false, true>(b, e, reach, wall_hits_[p]);
     });
   }
 
@@ -561,9 +555,9 @@ class Home final : public Engine {
   // Balls [b, e): with kScreen the wall screen (screen_walls); kContacts false (the elastic
   // shortcut): no contact pass, so touching a wall is no reason to be predicted and no ball is
   // listed; an approach within the step still is. With kStart (start_pass) each ball is kicked first,
-  // and its speed and position go into `scan`.
+  // and the speeds and positions are returned (else an empty StartScan).
   template <bool kEqualRadii, bool kContacts, bool kStart, bool kScreen>
-  void scan_range(int b, int e, double reach, std::vector<int>& near, StartScan& scan) {
+  StartScan scan_range(int b, int e, double reach, std::vector<int>& near) {
     const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
     const double* __restrict x = p_.col(0).data();
     const double* __restrict y = p_.col(1).data();
@@ -574,7 +568,7 @@ class Home final : public Engine {
     const double x0 = box_.min(0), x1 = box_.max(0), y0 = box_.min(1), y1 = box_.max(1), r0 = r0_;
     if (kScreen && !walls_) {  // open space without the no-walls shortcut: nothing reaches a wall
       std::fill(active + b, active + e, 0);
-      if (!kStart) return;
+      if (!kStart) return {};
     }
     const bool kick = kStart && !sc_.no_gravity;
     const double gx = g_.x() * dt_, gy = g_.y() * dt_;
@@ -596,7 +590,7 @@ class Home final : public Engine {
         active[i] = hit;
       }
     }
-    if constexpr (kStart) scan = q;
+    return q;
   }
 
   // One sweep over every pair of balls in adjacent cells, on the cell-ordered copy, in parallel

@@ -5,7 +5,7 @@
 namespace ballbench {
 
 void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius,
-                     double cell, ForkJoin& pool, bool velocities, const std::array<double, 4>* bounds) {
+                     double cell, ForkJoin& pool, bool velocities, const Bounds* bounds) {
   const int n = static_cast<int>(pos.rows());
   const int parts = pool.parts();
   if (n == 0) {
@@ -19,25 +19,20 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
   // Bounds: min and max are exact in any order, so parts may reduce them.
   const double* px = pos.col(0).data();
   const double* py = pos.col(1).data();
-  double w, h;
-  if (bounds) {
-    x0_ = (*bounds)[0], y0_ = (*bounds)[1];
-    w = (*bounds)[2] - x0_, h = (*bounds)[3] - y0_;
-  } else {
-    std::vector<double> lo_x(parts), lo_y(parts), hi_x(parts), hi_y(parts);
+  Bounds measured;
+  if (!bounds) {
+    std::vector<Bounds> part(parts);
     pool.run([&](int p) {
       const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-      double ax = px[b], ay = py[b], bx = px[b], by = py[b];
-      for (long i = b; i < e; ++i) {
-        ax = std::min(ax, px[i]), bx = std::max(bx, px[i]);
-        ay = std::min(ay, py[i]), by = std::max(by, py[i]);
-      }
-      lo_x[p] = ax, lo_y[p] = ay, hi_x[p] = bx, hi_y[p] = by;
+      Bounds q;
+      for (long i = b; i < e; ++i) q.add(px[i], py[i]);
+      part[p] = q;
     });
-    x0_ = *std::min_element(lo_x.begin(), lo_x.end()), y0_ = *std::min_element(lo_y.begin(), lo_y.end());
-    w = *std::max_element(hi_x.begin(), hi_x.end()) - x0_;
-    h = *std::max_element(hi_y.begin(), hi_y.end()) - y0_;
+    for (const Bounds& q : part) measured.merge(q);
+    bounds = &measured;
   }
+  x0_ = bounds->v[0], y0_ = bounds->v[1];
+  const double w = bounds->v[2] - x0_, h = bounds->v[3] - y0_;
   // As UniformGrid::build: at most ~4 cells per ball (larger cells stay correct).
   const double max_cells = 4.0 * n + 16;
   cell = std::max(cell, 1e-300);

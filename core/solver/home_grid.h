@@ -6,8 +6,10 @@
 //
 // Cells and origin are chosen exactly as UniformGrid chooses them (core/uniform_grid.h), so the
 // candidate pairs, and the order the contact pass sees them in, are the ones the solver had before.
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -18,12 +20,27 @@ namespace ballbench {
 
 class HomeGrid {
  public:
+  // The positions' bounding box: min x, min y, max x, max y. Min and max are exact in any order, so
+  // parts of a thread team may each take their own and merge them.
+  struct Bounds {
+    static constexpr double kInf = std::numeric_limits<double>::infinity();
+    std::array<double, 4> v = {kInf, kInf, -kInf, -kInf};
+    void add(double x, double y) {
+      v[0] = std::min(v[0], x), v[1] = std::min(v[1], y);
+      v[2] = std::max(v[2], x), v[3] = std::max(v[3], y);
+    }
+    void merge(const Bounds& o) {
+      v[0] = std::min(v[0], o.v[0]), v[1] = std::min(v[1], o.v[1]);
+      v[2] = std::max(v[2], o.v[2]), v[3] = std::max(v[3], o.v[3]);
+    }
+  };
+
   // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. `radius` may be
   // empty (all radii equal), otherwise it is copied in cell order too. Without `velocities`, vx()
   // and vy() are left as they were (a neighbour list's build needs positions only). `bounds`, if
-  // given, are the positions' min x, min y, max x, max y, already measured (else measured here).
+  // given, were already measured (else they are measured here).
   void build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius, double cell,
-             ForkJoin& pool, bool velocities = true, const std::array<double, 4>* bounds = nullptr);
+             ForkJoin& pool, bool velocities = true, const Bounds* bounds = nullptr);
 
   int cells() const { return nx_ * ny_; }
   int balls() const { return static_cast<int>(id_.size()); }
