@@ -133,6 +133,7 @@ class Home final : public Engine {
         active_(n_, 0),
         pool_(ForkJoin::threads_for(n_, kParallelBalls, s.threads)),
         pair_hits_(pool_.parts()),
+        pair_contacts_(pool_.parts()),
         wall_hits_(pool_.parts()),
         first_events_(pool_.parts()),
         approaches_(pool_.parts()),
@@ -170,16 +171,20 @@ class Home final : public Engine {
   // In the scene's order: a plain copy until the balls are first renumbered, then a gather through
   // the scene -> ball map, which writes the output front to back (scattering the writes through a
   // ball -> scene map instead cost 10-15% of a harness step at 10^5 balls).
+  // A step whose final advance is left to the next start_pass (unfinished_dt_) gets its end
+  // positions here, by finish_step's expressions: the same numbers.
   void read(State& out) const override {
     out.t = t_;
     out.resize(n_);
-    if (!renumbered_) {
+    const double end = unfinished_dt_;
+    const double* __restrict tl = t_local_.data();
+    if (!renumbered_ && end == 0) {
       out.pos = p_, out.vel = v_;
       return;
     }
     // A gather through the renumbering (random reads): on the step's threads, each part over its
     // own range of the scene's order.
-    const int* at = ball_of_.data();
+    const int* at = renumbered_ ? ball_of_.data() : nullptr;
     const int parts = pool_.parts();
     pool_.run([&](int part) {
       const long b = ForkJoin::range_begin(n_, part, parts), e = ForkJoin::range_begin(n_, part + 1, parts);
@@ -188,7 +193,13 @@ class Home final : public Engine {
         const double* __restrict v = v_.col(c).data();
         double* __restrict op = out.pos.col(c).data();
         double* __restrict ov = out.vel.col(c).data();
-        for (long k = b; k < e; ++k) op[k] = p[at[k]], ov[k] = v[at[k]];
+        if (end == 0)
+          for (long k = b; k < e; ++k) op[k] = p[at[k]], ov[k] = v[at[k]];
+        else
+          for (long k = b; k < e; ++k) {
+            const long i = at ? at[k] : k;
+            op[k] = p[i] + v[i] * (end - tl[i]), ov[k] = v[i];
+          }
       }
     });
   }
@@ -220,10 +231,11 @@ class Home final : public Engine {
     if (!mid_step && renumber_if_due()) walls_screened_ = false;
   }
 
-  // The first pass over the balls without a neighbour list, in parallel: the kick (symplectic Euler's velocity
-  // update), then the largest speed and the positions' bounds for the grid, and the wall screen
-  // (screen_walls) unless a renumbering is due. One read of the state instead of four (10^6 bowl
-  // balls: PERFORMANCE.md).
+  // The first pass over the balls without a neighbour list, in parallel: the end of the last step
+  // (each ball from its own clock to the step's end, as finish_step does with a list), the kick
+  // (symplectic Euler's velocity update), then the largest speed and the positions' bounds for the
+  // grid, and the wall screen (screen_walls) unless a renumbering is due. One read of the state
+  // instead of five (10^6 bowl balls: PERFORMANCE.md, sections 21 and 27).
   void start_pass() {
     const int parts = pool_.parts();
     const bool screen = walls_ && !sc_.no_walls && !renumber_due();
@@ -241,6 +253,7 @@ class Home final : public Engine {
         start_parts_[p] = sc_.equal_radii ? scan_range<true, true, true, false>(b, e, reach, near)
                                           : scan_range<false, true, true, false>(b, e, reach, near);
     });
+    unfinished_dt_ = 0;
     start_ = StartScan{};
     for (const StartScan& q : start_parts_) start_.merge(q);
     walls_screened_ = screen;
@@ -362,17 +375,32 @@ class Home final : public Engine {
   //   part of its gap within `horizon` but not overlap, target -f gap / horizon (f < 1, so that
   //   it lands as touching over a few steps instead of as an impact event at the end of this one);
   // - approaching faster than v_rest and not touching: left to the exact event loop.
+  // make_contact writes the contact into `c` from the relative normal velocity vn, or returns false
+  // (fast and apart); it reads the state only, so the pair screen's parts call it too.
   void add_contact(int i, int j, double nx, double ny, double gap, double touch, double horizon, bool close_overlap) {
-    const double vn = relative_normal_velocity(i, j, nx, ny);
+    Contact c;
+    if (make_contact(i, j, nx, ny, relative_normal_velocity(i, j, nx, ny), gap, touch, horizon, close_overlap, c))
+      contacts_.push_back(c);
+  }
+  bool make_contact(int i, int j, double nx, double ny, double vn, double gap, double touch, double horizon,
+                    bool close_overlap, Contact& c) const {
     const bool touching = gap < touch, fast = -vn > v_rest_;
-    if (fast && !touching) return;
+    if (fast && !touching) return false;
     double target;
     if (touching && fast) target = -e_ * vn;
     else if (touching) target = close_overlap ? std::min(std::max(-gap, 0.0) / horizon, v_rest_) : 0.0;
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
     const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
-    contacts_.push_back({i, j, nx, ny, target, eff, 0.0, false});
+    c = {i, j, nx, ny, target, eff, 0.0, false};
+    return true;
+  }
+
+  // Warm start (Catto 2005): the impulse contact c ended the last step with, if it had one. Only
+  // looked up: the impulses are applied afterwards, in the contacts' order.
+  void find_warm_impulse(Contact& c) const {
+    const double impulse = warm_.find(c.i, c.j);
+    if (impulse >= 0) c.impulse = impulse, c.moved = true;
   }
 
   // Adds a contact for every wall within max(touch, reach) of ball i.
@@ -484,23 +512,21 @@ class Home final : public Engine {
       for (const auto& near : wall_hits_)
         for (int i : near) add_wall_contacts(i, reach, dt_, true);
     }
+    const size_t wall_contacts = contacts_.size();
     if (!sc_.no_pairs) {
-      // With pairs, the elastic shortcut always has its neighbour list (listed_).
-      if (listed_)
+      // With pairs, the elastic shortcut always has its neighbour list (listed_), and no contacts.
+      if (listed_) {
         sc_.equal_radii ? screen_list<true>() : screen_list<false>();
-      else
+      } else {
         sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
-      const int* id = grid_.id();
-      for (const auto& hits : pair_hits_)
-        for (const auto& [a, b] : hits) add_pair_contact(id[a], id[b], reach, dt_, true);
+        for (const auto& found : pair_contacts_) contacts_.insert(contacts_.end(), found.begin(), found.end());
+      }
     }
     if (sc_.elastic) return;  // no contacts were listed: nothing to solve or remember
-    for (Contact& c : contacts_) {
-      const double impulse = warm_.find(c.i, c.j);
-      if (impulse < 0) continue;
-      c.impulse = impulse, c.moved = true;
-      apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
-    }
+    // The pair contacts found their warm-start impulses in the screen.
+    for (size_t k = 0; k < wall_contacts; ++k) find_warm_impulse(contacts_[k]);
+    for (const Contact& c : contacts_)
+      if (c.moved) apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
     // A contact that moved its balls changed velocities the screen could not know: predict both.
     // One that applied nothing (most, in a gas: close but parting) leaves them to the screen, which
@@ -554,13 +580,16 @@ class Home final : public Engine {
 
   // Balls [b, e): with kScreen the wall screen (screen_walls); kContacts false (the elastic
   // shortcut): no contact pass, so touching a wall is no reason to be predicted and no ball is
-  // listed; an approach within the step still is. With kStart (start_pass) each ball is kicked first,
-  // and the speeds and positions are returned (else an empty StartScan).
+  // listed; an approach within the step still is. With kStart (start_pass) each ball is first
+  // brought to the end of the last step (if unfinished) and kicked, and the speeds and positions
+  // are returned (else an empty StartScan).
   template <bool kEqualRadii, bool kContacts, bool kStart, bool kScreen>
   StartScan scan_range(int b, int e, double reach, std::vector<int>& near) {
     const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
-    const double* __restrict x = p_.col(0).data();
-    const double* __restrict y = p_.col(1).data();
+    double* __restrict x = p_.col(0).data();
+    double* __restrict y = p_.col(1).data();
+    double* __restrict tl = t_local_.data();
+    const double end = unfinished_dt_;
     double* __restrict vx = v_.col(0).data();
     double* __restrict vy = v_.col(1).data();
     const double* __restrict rad = r_.data();
@@ -575,6 +604,11 @@ class Home final : public Engine {
     StartScan q;
     for (int i = b; i < e; ++i) {
       if constexpr (kStart) {
+        if (end > 0) {  // finish_step's expressions
+          const double h = end - tl[i];
+          x[i] += vx[i] * h, y[i] += vy[i] * h;
+          tl[i] = 0;
+        }
         if (kick) vx[i] += gx, vy[i] += gy;  // as the Eigen kick: v + g dt, each component
         q.add(x[i], y[i], vx[i] * vx[i] + vy[i] * vy[i]);
       }
@@ -594,7 +628,8 @@ class Home final : public Engine {
   }
 
   // One sweep over every pair of balls in adjacent cells, on the cell-ordered copy, in parallel
-  // over fixed runs of slots. It records (a) the pairs within contact reach, in the order the contact
+  // over fixed runs of slots. It makes (a) the contacts of the pairs within contact reach
+  // (add_pair_contact's, from the copy, with their warm-start impulses), in the order the contact
   // pass has always added them, and (b) marks `active` both balls of every pair predict could find
   // an event for: approaching (b < 0) and not provably apart at the end of the step by the very
   // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
@@ -605,17 +640,23 @@ class Home final : public Engine {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       pair_hits_[p].clear();
+      pair_contacts_[p].clear();
       const int n = grid_.balls();
       screen_slots<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
-                                static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p]);
+                                static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p],
+                                pair_contacts_[p]);
     });
   }
 
   // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
   // contact, or an approach within the step) takes one branch, decided by both tests at once.
   // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
+  // The contacts are made here, from the copy the screen has just read, rather than by a serial
+  // pass over the pairs afterwards that fetched both balls' state again (10^6 bowl balls, ~25 000
+  // contacts: ~2 ms a step; PERFORMANCE.md, section 27). The same contacts, bit for bit: the copy
+  // is the state, and the expressions are add_pair_contact's.
   template <bool kEqualRadii>
-  void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits) {
+  void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<Contact>& found) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
     const double* __restrict x = grid_.x();
@@ -649,6 +690,17 @@ class Home final : public Engine {
         }
       }
     });
+    for (const auto& [a, b] : hits) {
+      const double dx = x[a] - x[b], dy = y[a] - y[b];
+      const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
+      const double d = std::sqrt(dx * dx + dy * dy), nx = dx / d, ny = dy / d;
+      const double rs = kEqualRadii ? rs0 : r[a] + r[b];
+      Contact c;
+      if (make_contact(id[a], id[b], nx, ny, wx * nx + wy * ny, d - rs, slop * rs, dt, true, c)) {
+        find_warm_impulse(c);
+        found.push_back(c);
+      }
+    }
   }
 
   // The pair screen over the neighbour list (elastic scenes: no contacts to find, only the
@@ -816,7 +868,7 @@ class Home final : public Engine {
   // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
   // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
   void drift() {
-    // t_local_ is 0 for every ball here: the last step's final advance left it so.
+    // t_local_ is 0 for every ball here: the last step's final advance (or this one's start_pass) left it so.
     queue_.clear();
     // The active balls' predictions read only the state at the start of the step: on several
     // parts each predicts its fixed range of balls, and the events are queued in ball order, as
@@ -871,17 +923,22 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
+    // Without a neighbour list the next step's start_pass brings the balls to the end of this one,
+    // in the same pass as the kick (read() computes the end positions for its copy meanwhile).
+    if (!listed_) {
+      unfinished_dt_ = dt_;
+      return;
+    }
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      listed_ ? finish_step<true>(b, e, extent_[p]) : finish_step<false>(b, e, extent_[p]);
+      finish_step(b, e, extent_[p]);
     });
   }
 
   // Balls [b, e) to the end of the step (advance(i, dt)), each clock set back to 0 for the next
-  // step; with a neighbour list (kMeasure) the same pass measures the largest squared displacement
-  // from the list's build and the largest squared speed, which the next step's list_covers needs.
-  template <bool kMeasure>
+  // step; the same pass measures the largest squared displacement from the list's build and the
+  // largest squared speed, which the next step's list_covers needs.
   void finish_step(int b, int e, std::pair<double, double>& extent) {
     double* __restrict x = p_.col(0).data();
     double* __restrict y = p_.col(1).data();
@@ -896,13 +953,11 @@ class Home final : public Engine {
       const double h = dt - tl[i];
       x[i] += vx[i] * h, y[i] += vy[i] * h;
       tl[i] = 0;
-      if constexpr (kMeasure) {
-        const double dx = x[i] - bx[i], dy = y[i] - by[i];
-        moved2 = std::max(moved2, dx * dx + dy * dy);
-        speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
-      }
+      const double dx = x[i] - bx[i], dy = y[i] - by[i];
+      moved2 = std::max(moved2, dx * dx + dy * dy);
+      speed2 = std::max(speed2, vx[i] * vx[i] + vy[i] * vy[i]);
     }
-    if constexpr (kMeasure) extent = {moved2, speed2};
+    extent = {moved2, speed2};
   }
 
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
@@ -1067,6 +1122,7 @@ class Home final : public Engine {
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   mutable ForkJoin pool_;  // mutable: read() gathers on it too
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
+  std::vector<std::vector<Contact>> pair_contacts_;  // per part: their contacts (screen_slots)
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
   std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift
   StartScan start_;                // this step's start_pass, merged
@@ -1077,6 +1133,7 @@ class Home final : public Engine {
   std::vector<int> first_j_;      // listed_: its partner (-1: none, kAsk: next_event decides)
   double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
+  double unfinished_dt_ = 0;      // > 0: the last step (this long) awaits its final advance (see drift)
   double v_rest_ = 0;             // this step's resting-impact speed (m/s)
   double vbound_ = 0;             // speed the broad phase allows for this step (m/s)
   double v_tol_ = 0;              // this step's round-off approach speed (m/s), see predict
