@@ -422,9 +422,18 @@ class Home final : public Engine {
     const double rs = radius(i) + radius(j), limit = rs + std::max(touch_pair(i, j), reach);
     const double d2 = dx * dx + dy * dy;
     if (d2 >= limit * limit || d2 == 0) return false;  // squared first: most candidates are far
-    const double d = std::sqrt(d2);
-    add_contact(i, j, dx / d, dy / d, d - rs, touch_pair(i, j), horizon, close_overlap);
+    Contact c;
+    if (make_pair_contact(i, j, dx, dy, d2, v_(i, 0) - v_(j, 0), v_(i, 1) - v_(j, 1), rs, horizon, close_overlap, c))
+      contacts_.push_back(c);
     return true;
+  }
+
+  // make_contact for pair (i, j) at separation (dx, dy), |d|^2 = d2 > 0, relative velocity (wx, wy)
+  // and radius sum rs: add_pair_contact's and the pair screen's (from the cell-ordered copy).
+  bool make_pair_contact(int i, int j, double dx, double dy, double d2, double wx, double wy, double rs,
+                         double horizon, bool close_overlap, Contact& c) const {
+    const double d = std::sqrt(d2), nx = dx / d, ny = dy / d;
+    return make_contact(i, j, nx, ny, wx * nx + wy * ny, d - rs, s_.contact_slop * rs, horizon, close_overlap, c);
   }
 
   // Sequential impulses (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005): sweeps
@@ -651,10 +660,11 @@ class Home final : public Engine {
   // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
   // contact, or an approach within the step) takes one branch, decided by both tests at once.
   // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
-  // The contacts are made here, from the copy the screen has just read, rather than by a serial
-  // pass over the pairs afterwards that fetched both balls' state again (10^6 bowl balls, ~25 000
+  // The part then makes its pairs' contacts, from the copy it has just read, rather than a serial
+  // pass over all pairs afterwards that fetched both balls' state again (10^6 bowl balls, ~25 000
   // contacts: ~2 ms a step; PERFORMANCE.md, section 27). The same contacts, bit for bit: the copy
-  // is the state, and the expressions are add_pair_contact's.
+  // is the state, and the expressions are add_pair_contact's (make_pair_contact). Made inside the
+  // kernel instead, they slowed the sweep itself by ~1 ms.
   template <bool kEqualRadii>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<Contact>& found) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
@@ -692,11 +702,9 @@ class Home final : public Engine {
     });
     for (const auto& [a, b] : hits) {
       const double dx = x[a] - x[b], dy = y[a] - y[b];
-      const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
-      const double d = std::sqrt(dx * dx + dy * dy), nx = dx / d, ny = dy / d;
-      const double rs = kEqualRadii ? rs0 : r[a] + r[b];
       Contact c;
-      if (make_contact(id[a], id[b], nx, ny, wx * nx + wy * ny, d - rs, slop * rs, dt, true, c)) {
+      if (make_pair_contact(id[a], id[b], dx, dy, dx * dx + dy * dy, vx[a] - vx[b], vy[a] - vy[b],
+                            kEqualRadii ? rs0 : r[a] + r[b], dt, true, c)) {
         find_warm_impulse(c);
         found.push_back(c);
       }
