@@ -55,13 +55,13 @@ TEST(HomeGrid, ParallelSortGivesTheSerialSlots) {
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> coord(-40.0, 40.0), jitter(-0.6, 0.6);
   const int n = 4000;
-  Eigen::MatrixX2d pos(n, 2), vel(n, 2);
-  for (int i = 0; i < n; ++i) pos(i, 0) = coord(rng), pos(i, 1) = coord(rng), vel(i, 0) = i, vel(i, 1) = -i;
+  Eigen::MatrixX2d pos(n, 2);
+  for (int i = 0; i < n; ++i) pos(i, 0) = coord(rng), pos(i, 1) = coord(rng);
   for (bool near_sorted : {false, true}) {
     if (near_sorted) {  // cell order, then every ball moved a little
       ForkJoin one(1);
       HomeGrid sorter;
-      sorter.build(pos, vel, Eigen::VectorXd(), 1.5, one);
+      sorter.build(pos, Eigen::VectorXd(), 1.5, one, false);
       Eigen::MatrixX2d moved(n, 2);
       for (int s = 0; s < n; ++s) moved.row(s) = pos.row(sorter.id()[s]) + Eigen::RowVector2d(jitter(rng), jitter(rng));
       pos = moved;
@@ -69,18 +69,19 @@ TEST(HomeGrid, ParallelSortGivesTheSerialSlots) {
     for (double cell : {0.9, 1.5, 6.0}) {
       ForkJoin one(1);
       HomeGrid serial;
-      serial.build(pos, vel, Eigen::VectorXd(), cell, one);
+      serial.build(pos, Eigen::VectorXd(), cell, one, true);
       for (int threads : {2, 3}) {
         ForkJoin pool(threads);
         HomeGrid grid;
-        grid.build(pos, vel, Eigen::VectorXd(), cell, pool);
+        grid.build(pos, Eigen::VectorXd(), cell, pool, true);
         ASSERT_EQ(grid.cells(), serial.cells());
         for (int c = 0; c <= grid.cells(); ++c)
           ASSERT_EQ(grid.first(c), serial.first(c)) << "cell " << c << ", " << threads << " parts";
         for (int s = 0; s < n; ++s) {
           ASSERT_EQ(grid.id()[s], serial.id()[s]) << "slot " << s << ", " << threads << " parts, cell " << cell
                                                   << (near_sorted ? ", nearly sorted" : ", random order");
-          ASSERT_EQ(grid.vx()[s], serial.vx()[s]);
+          ASSERT_EQ(grid.x()[s], pos(grid.id()[s], 0));  // the copy in slot order
+          ASSERT_EQ(grid.y()[s], pos(grid.id()[s], 1));
         }
       }
     }
@@ -93,13 +94,13 @@ TEST(HomeGrid, EdgeWalkFindsEveryBallBeyondTheThresholds) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> coord(-50.0, 50.0);
   const int n = 3000;
-  Eigen::MatrixX2d pos(n, 2), vel = Eigen::MatrixX2d::Zero(n, 2);
+  Eigen::MatrixX2d pos(n, 2);
   for (int i = 0; i < n; ++i) pos(i, 0) = coord(rng), pos(i, 1) = coord(rng);
   for (int threads : {1, 2}) {
     ForkJoin pool(threads);
     for (double cell : {0.7, 3.0, 11.0, 200.0}) {
       HomeGrid grid;
-      grid.build(pos, vel, Eigen::VectorXd(), cell, pool);
+      grid.build(pos, Eigen::VectorXd(), cell, pool, false);
       for (double margin : {0.0, 2.5, 9.0, 60.0}) {
         const double ax = -50 + margin, bx = 50 - margin, ay = -50 + margin, by = 50 - margin;
         std::multiset<int> visited;

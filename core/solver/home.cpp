@@ -214,7 +214,7 @@ class Home final : public Engine {
  private:
   // Grid over the positions at the start of the step, with cells wide enough that any two balls
   // which can touch during the rest of the step are in adjacent cells.
-  // Positions and velocities are copied into it in cell order, for the pair screen. `mid_step`: a
+  // `mid_step`: a
   // rebuild within the step (rebuild_mid_step), which must not renumber the balls.
   // With a neighbour list (elastic scenes) the list is kept while it covers the step, rebuilt when
   // it does not (in mid-step, rebuild_mid_step rebuilds it itself).
@@ -226,7 +226,7 @@ class Home final : public Engine {
     // At the start of a step start_pass has measured the speeds and bounds; in mid-step they are taken afresh.
     vbound_ = (mid_step ? max_speed() : std::sqrt(start_.speed2)) * kSpeedMargin;
     if (sc_.no_pairs) return;
-    grid_.build(p_, v_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_, true, mid_step ? nullptr : &start_.bounds);
+    grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_, false, mid_step ? nullptr : &start_.bounds);
     // A renumbering moves the balls: the wall screen start_pass did is done again after it.
     if (!mid_step && renumber_if_due()) walls_screened_ = false;
   }
@@ -307,8 +307,8 @@ class Home final : public Engine {
     // The relative margin keeps round-off in the positions from failing the check at once.
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
     for (int i : near_wall_) near_wall_mark_[i] = 0;  // in the numbers before a renumbering
-    // The list is built from positions only: the grid copies velocities only for a renumbering.
-    grid_.build(at, v_, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_, may_renumber && renumber_due());
+    // The list is built from the grid's copy of the positions.
+    grid_.build(at, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_, true);
     // Renumbering (at the start of a step only, where `at` is p_) leaves the grid's slot -> ball map
     // the identity and p_ in the new order: the list and built_at_ then use the new numbers.
     if (may_renumber) renumber_if_due();
@@ -429,7 +429,7 @@ class Home final : public Engine {
   }
 
   // make_contact for pair (i, j) at separation (dx, dy), |d|^2 = d2 > 0, relative velocity (wx, wy)
-  // and radius sum rs: add_pair_contact's and the pair screen's (from the cell-ordered copy).
+  // and radius sum rs: add_pair_contact's and the pair screen's.
   bool make_pair_contact(int i, int j, double dx, double dy, double d2, double wx, double wy, double rs,
                          double horizon, bool close_overlap, Contact& c) const {
     const double d = std::sqrt(d2), nx = dx / d, ny = dy / d;
@@ -636,9 +636,9 @@ class Home final : public Engine {
     return q;
   }
 
-  // One sweep over every pair of balls in adjacent cells, on the cell-ordered copy, in parallel
+  // One sweep over every pair of balls in adjacent cells, in cell order, in parallel
   // over fixed runs of slots. It makes (a) the contacts of the pairs within contact reach
-  // (add_pair_contact's, from the copy, with their warm-start impulses), in the order the contact
+  // (add_pair_contact's, with their warm-start impulses), in the order the contact
   // pass has always added them, and (b) marks `active` both balls of every pair predict could find
   // an event for: approaching (b < 0) and not provably apart at the end of the step by the very
   // bound predict uses, |d|^2 + 2 b dt > (r_i + r_j)^2. A ball in no such pair, no contact and no
@@ -657,26 +657,28 @@ class Home final : public Engine {
     });
   }
 
-  // The screen's kernel over slots [s0, s1), on the grid's cell-ordered copy. The rare outcome (a
-  // contact, or an approach within the step) takes one branch, decided by both tests at once.
+  // The screen's kernel over slots [s0, s1), reading the state through the slot -> ball map (nearly
+  // the identity between renumberings, so nearly front to back; a cell-ordered copy made every
+  // step cost more: PERFORMANCE.md, section 29). The rare outcome (a contact, or an approach within
+  // the step) takes one branch, decided by both tests at once.
   // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
-  // The part then makes its pairs' contacts, from the copy it has just read, rather than a serial
-  // pass over all pairs afterwards that fetched both balls' state again (10^6 bowl balls, ~25 000
-  // contacts: ~2 ms a step; PERFORMANCE.md, section 27). The same contacts, bit for bit: the copy
-  // is the state, and the expressions are add_pair_contact's (make_pair_contact). Made inside the
-  // kernel instead, they slowed the sweep itself by ~1 ms.
+  // The part then makes its pairs' contacts, from the state it has just read, rather than a serial
+  // pass over all pairs afterwards (10^6 bowl balls, ~25 000 contacts: ~2 ms a step; PERFORMANCE.md,
+  // section 27), by add_pair_contact's expressions (make_pair_contact). Made inside the kernel
+  // instead, they slowed the sweep itself by ~1 ms.
   template <bool kEqualRadii>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<Contact>& found) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
-    const double* __restrict x = grid_.x();
-    const double* __restrict y = grid_.y();
-    const double* __restrict vx = grid_.vx();
-    const double* __restrict vy = grid_.vy();
-    const double* __restrict r = grid_.r();
+    const double* __restrict x = p_.col(0).data();
+    const double* __restrict y = p_.col(1).data();
+    const double* __restrict vx = v_.col(0).data();
+    const double* __restrict vy = v_.col(1).data();
+    const double* __restrict r = r_.data();
     const int* __restrict id = grid_.id();
     uint8_t* active = active_.data();
-    grid_.for_each_forward_pair(s0, s1, [&](int a, int b) {
+    grid_.for_each_forward_pair(s0, s1, [&](int sa, int sb) {
+      const int a = id[sa], b = id[sb];  // nearly sa and sb: the balls are renumbered in cell order
       const double dx = x[a] - x[b], dy = y[a] - y[b];
       const double wx = vx[a] - vx[b], wy = vy[a] - vy[b];
       const double d2 = dx * dx + dy * dy, bb = dx * wx + dy * wy;
@@ -695,15 +697,15 @@ class Home final : public Engine {
         if (contact) hits.push_back({a, b});
         if (approach) {
           // Both parts may mark the same ball (the same value): atomic, relaxed, free on x86.
-          std::atomic_ref<uint8_t>(active[id[a]]).store(1, std::memory_order_relaxed);
-          std::atomic_ref<uint8_t>(active[id[b]]).store(1, std::memory_order_relaxed);
+          std::atomic_ref<uint8_t>(active[a]).store(1, std::memory_order_relaxed);
+          std::atomic_ref<uint8_t>(active[b]).store(1, std::memory_order_relaxed);
         }
       }
     });
     for (const auto& [a, b] : hits) {
       const double dx = x[a] - x[b], dy = y[a] - y[b];
       Contact c;
-      if (make_pair_contact(id[a], id[b], dx, dy, dx * dx + dy * dy, vx[a] - vx[b], vy[a] - vy[b],
+      if (make_pair_contact(a, b, dx, dy, dx * dx + dy * dy, vx[a] - vx[b], vy[a] - vy[b],
                             kEqualRadii ? rs0 : r[a] + r[b], dt, true, c)) {
         find_warm_impulse(c);
         found.push_back(c);
@@ -786,20 +788,26 @@ class Home final : public Engine {
   }
 
   // Renumbers the balls in the cell order of the grid just built (slot s becomes ball s). Everything
-  // indexed by ball moves with them; the warm-start impulses are re-keyed. No array is copied (at
-  // 10^6 balls each copy would raise the peak memory): positions and velocities come from the
-  // grid's own copies, which are the state in slot order, and the other per-ball arrays are
-  // permuted in place along the permutation's cycles.
+  // indexed by ball moves with them; the warm-start impulses are re-keyed. No array is allocated
+  // (at 10^6 balls each would raise the peak memory): positions and velocities are gathered in slot
+  // order one column at a time through t_local_, which is 0 for every ball at the start of a step
+  // (the last step's final advance or this one's start_pass left it so) and is zeroed again after;
+  // the other per-ball arrays are permuted in place along the permutation's cycles.
   void reorder_by_cell() {
     const int* id = grid_.id();
     const int parts = pool_.parts();
-    pool_.run([&](int p) {
-      const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
-      std::copy(grid_.x() + b, grid_.x() + e, p_.col(0).data() + b);
-      std::copy(grid_.y() + b, grid_.y() + e, p_.col(1).data() + b);
-      std::copy(grid_.vx() + b, grid_.vx() + e, v_.col(0).data() + b);
-      std::copy(grid_.vy() + b, grid_.vy() + e, v_.col(1).data() + b);
-    });
+    double* scratch = t_local_.data();
+    for (double* column : {p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data()}) {
+      pool_.run([&](int p) {
+        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+        for (long s = b; s < e; ++s) scratch[s] = column[id[s]];
+      });
+      pool_.run([&](int p) {
+        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+        std::copy(scratch + b, scratch + e, column + b);
+        if (column == v_.col(1).data()) std::fill(scratch + b, scratch + e, 0.0);  // the last column
+      });
+    }
     // active_ is free here (the contact pass sets it after the broad phase): it marks the slots done.
     auto permute = [&](auto* a) {
       std::fill(active_.begin(), active_.end(), 0);

@@ -4,8 +4,8 @@
 
 namespace ballbench {
 
-void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius,
-                     double cell, ForkJoin& pool, bool velocities, const Bounds* bounds) {
+void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, double cell, ForkJoin& pool,
+                     bool copy, const Bounds* bounds) {
   const int n = static_cast<int>(pos.rows());
   const int parts = pool.parts();
   if (n == 0) {
@@ -44,23 +44,15 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, c
   const size_t cells = static_cast<size_t>(nx_) * ny_;
   id_.resize(n);
   cell_sorted_.resize(n);
-  x_.resize(n), y_.resize(n), vx_.resize(n), vy_.resize(n);
-  r_.resize(radius.size() ? n : 0);
   cell_of_.resize(n);
-  const double* vxp = vel.col(0).data();
-  const double* vyp = vel.col(1).data();
   const double* rp = radius.size() ? radius.data() : nullptr;
-  // Positions and velocities (and radii) in slot order, each part over its fixed range of slots.
+  if (copy) x_.resize(n), y_.resize(n), r_.resize(rp ? n : 0);
+  // Positions (and radii) in slot order, each part over its fixed range of slots.
   auto gather = [&] {
+    if (!copy) return;
     pool.run([&](int p) {
       const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-      if (velocities)
-        for (long s = b; s < e; ++s) {
-          const int i = id_[s];
-          x_[s] = px[i], y_[s] = py[i], vx_[s] = vxp[i], vy_[s] = vyp[i];
-        }
-      else
-        for (long s = b; s < e; ++s) x_[s] = px[id_[s]], y_[s] = py[id_[s]];
+      for (long s = b; s < e; ++s) x_[s] = px[id_[s]], y_[s] = py[id_[s]];
       if (rp)
         for (long s = b; s < e; ++s) r_[s] = rp[id_[s]];
     });

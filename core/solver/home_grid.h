@@ -1,8 +1,10 @@
 #pragma once
-// The home solver's broad phase: a uniform grid rebuilt every step by a counting sort, with a
-// copy of positions and velocities in cell order, so the all-pairs screen of a step reads memory
-// front to back instead of jumping around the scene's ball order (core/solver/PERFORMANCE.md).
-// The balls themselves keep the scene's order; only this copy is sorted.
+// The home solver's broad phase: a uniform grid rebuilt every step by a counting sort, and on
+// request a copy of the positions in cell order (for the neighbour list's build).
+// The balls themselves are not moved here. The solver renumbers them in the grid's cell order every
+// few steps (Home::reorder_by_cell), so between renumberings the slot -> ball map is nearly the
+// identity and its pair screen reads the state through it: a copy of positions and velocities in
+// cell order every step cost more than it saved (10^6 bowl balls: PERFORMANCE.md, section 29).
 //
 // Cells and origin are chosen exactly as UniformGrid chooses them (core/uniform_grid.h), so the
 // candidate pairs, and the order the contact pass sees them in, are the ones the solver had before.
@@ -35,12 +37,12 @@ class HomeGrid {
     }
   };
 
-  // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. `radius` may be
-  // empty (all radii equal), otherwise it is copied in cell order too. Without `velocities`, vx()
-  // and vy() are left as they were (a neighbour list's build needs positions only). `bounds`, if
-  // given, were already measured (else they are measured here).
-  void build(const Eigen::MatrixX2d& pos, const Eigen::MatrixX2d& vel, const Eigen::VectorXd& radius, double cell,
-             ForkJoin& pool, bool velocities = true, const Bounds* bounds = nullptr);
+  // Sorts balls into cells of at least `cell` (m), at most ~4 cells per ball. With `copy`, the
+  // positions and, unless `radius` is empty (all radii equal), the radii are copied in cell order
+  // (x(), y(), r()); without, those are left as they were. `bounds`, if given, were already
+  // measured (else they are measured here).
+  void build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, double cell, ForkJoin& pool, bool copy,
+             const Bounds* bounds = nullptr);
 
   int cells() const { return nx_ * ny_; }
   int balls() const { return static_cast<int>(id_.size()); }
@@ -49,8 +51,6 @@ class HomeGrid {
   const int* id() const { return id_.data(); }
   const double* x() const { return x_.data(); }
   const double* y() const { return y_.data(); }
-  const double* vx() const { return vx_.data(); }
-  const double* vy() const { return vy_.data(); }
   const double* r() const { return r_.data(); }
 
   // Calls f(slot a, slot b) once for every pair of slots a < b in the same or adjacent cells, for
@@ -127,7 +127,7 @@ class HomeGrid {
   std::vector<int> cell_sorted_;  // slot -> cell
   std::vector<int> id_;       // slot -> ball
   std::vector<std::vector<int>> strays_;  // per part of the parallel sort: its balls in others' cells
-  std::vector<double> x_, y_, vx_, vy_, r_;  // in slot order
+  std::vector<double> x_, y_, r_;  // in slot order, as of the last build with `copy`
 };
 
 }  // namespace ballbench
