@@ -64,10 +64,9 @@ HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double r
   s.equal_masses = allow.equal_masses && f.equal_masses && scene.n() > 0;
   s.no_pairs = allow.no_pairs && scene.n() < 2;
   // Restitution 1 with a resting speed of 0 (no gravity, rest_velocity left to its default or 0):
-  // no impact is resting contact and no contact is speculative, so the contact pass could only
-  // bounce pairs that touch and approach at the start of a step, which the event loop does at once
-  // anyway (predict: touching and approaching collides at t0). Only simultaneous multi-contact
-  // bounces differ (sequential events instead of one simultaneous solve, as in `exact`).
+  // no impact is resting contact and no contact is speculative, so the contact pass would only hold
+  // touching pairs that do not approach, which it leaves as they are (every impact is the event
+  // loop's: make_contact).
   const bool no_rest = rest_velocity == 0 || (rest_velocity < 0 && !f.gravity);
   s.elastic = allow.elastic && f.elastic && no_rest;
   return s;
@@ -361,7 +360,12 @@ class Home final : public Engine {
   }
 
   // The velocity constraint of one contact, for the sequential-impulse solve:
-  // - touching and approaching faster than v_rest: an impact, target -e vn (the bounce);
+  // - approaching faster than v_rest, touching or not: an impact, left to the exact event loop (a
+  //   touching pair that approaches is collided at once there, pair by pair, each impact losing
+  //   energy to restitution). Bounce targets (-e vn) inside the solve, as this once had, can feed on
+  //   each other in a jammed cluster: the cluster solves of seed-bowl's pile escalated to ~10^5 m/s
+  //   within one step on 4 of 17 runs, and a fifth gained 50x its energy (shuffled ball orders,
+  //   other steps; PERFORMANCE.md, section 31);
   // - touching and slower: resting contact, target 0 (do not approach). Not a small separation:
   //   a jammed chain (seed-bowl's row of 20 balls spans its 10 m box exactly, wall to wall) cannot
   //   separate everywhere at once, and an infeasible target keeps the solve from converging. What
@@ -374,9 +378,8 @@ class Home final : public Engine {
   // - not touching: a speculative contact (Catto, "Speculative Contacts", 2013): the pair may close
   //   part of its gap within `horizon` but not overlap, target -f gap / horizon (f < 1, so that
   //   it lands as touching over a few steps instead of as an impact event at the end of this one);
-  // - approaching faster than v_rest and not touching: left to the exact event loop.
   // make_contact writes the contact into `c` from the relative normal velocity vn, or returns false
-  // (fast and apart); it reads the state only, so the pair screen's parts call it too.
+  // (fast); it reads the state only, so the pair screen's parts call it too.
   void add_contact(int i, int j, double nx, double ny, double gap, double touch, double horizon, bool close_overlap) {
     Contact c;
     if (make_contact(i, j, nx, ny, relative_normal_velocity(i, j, nx, ny), gap, touch, horizon, close_overlap, c))
@@ -385,10 +388,9 @@ class Home final : public Engine {
   bool make_contact(int i, int j, double nx, double ny, double vn, double gap, double touch, double horizon,
                     bool close_overlap, Contact& c) const {
     const bool touching = gap < touch, fast = -vn > v_rest_;
-    if (fast && !touching) return false;
+    if (fast) return false;
     double target;
-    if (touching && fast) target = -e_ * vn;
-    else if (touching) target = close_overlap ? std::min(std::max(-gap, 0.0) / horizon, v_rest_) : 0.0;
+    if (touching) target = close_overlap ? std::min(std::max(-gap, 0.0) / horizon, v_rest_) : 0.0;
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
     const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
@@ -861,8 +863,8 @@ class Home final : public Engine {
         if (add_pair_contact(a, b, 0.0, horizon, false)) enter(b);
       });
     }
-    // Sequential impulses need not converge inside a cluster (bounce targets of fast contacts can
-    // fight each other); then the step's round-off tolerance rises to twice what the solve left,
+    // Sequential impulses need not converge within the cluster's sweeps (a jammed pile converges
+    // slowly); then the step's round-off tolerance rises to twice what the solve left,
     // so the same residual cannot fire the same cluster again. Overlap stays below residual x dt,
     // and the next contact pass closes it.
     for (int b : cluster_) in_cluster_[b] = 0;
