@@ -14,7 +14,7 @@ void overlapping_pairs(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radiu
   const int* order = grid.order().data();
   CellOrderedBalls& balls = scratch.balls;
   balls.resize(n);
-  balls.gather(grid, pos, radius, 0, n);
+  balls.gather(order, pos, radius, 0, n);
   const double *x = balls.x.data(), *y = balls.y.data(), *r = balls.r.data();
   // The same pairs in the same order as for_each_candidate_pair (the rest of a ball's cell, the
   // next cell in its row, the three cells of the next row), as runs over the copies.

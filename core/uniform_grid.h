@@ -95,21 +95,20 @@ class UniformGrid {
   std::vector<int> fill_;   // scratch of build(), kept: no allocation per build once warm
 };
 
-// Positions and radii copied into a grid's cell order (slot a holds ball grid.order()[a]), so that a
-// ball's candidate partners are contiguous runs of memory instead of balls at random in the scene's
-// order: the overlap metric and the tunnelling check walk these instead of the scene's arrays.
+// Positions and radii copied into a grid's cell order (slot a holds ball order[a], the grid's slot
+// -> ball map), so that a ball's candidate partners are contiguous runs of memory instead of balls
+// at random in the scene's order: the overlap metric, the tunnelling check and the home solver's
+// neighbour-list build walk these instead of the scene's arrays.
 struct CellOrderedBalls {
   std::vector<double> x, y, r;
 
-  void resize(int n) { x.resize(n), y.resize(n), r.resize(n); }
-  // Slots [begin, end), after resize(grid's ball count): disjoint ranges may be filled in parallel.
-  void gather(const UniformGrid& grid, const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, long begin,
-              long end) {
-    const int* order = grid.order().data();
-    for (long a = begin; a < end; ++a) {
-      const int i = order[a];
-      x[a] = pos(i, 0), y[a] = pos(i, 1), r[a] = radius(i);
-    }
+  // Without `radii` (all equal, known elsewhere) r stays empty and gather skips it.
+  void resize(int n, bool radii = true) { x.resize(n), y.resize(n), r.resize(radii ? n : 0); }
+  // Slots [begin, end), after resize: disjoint ranges may be filled in parallel.
+  void gather(const int* order, const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius, long begin, long end) {
+    for (long a = begin; a < end; ++a) x[a] = pos(order[a], 0), y[a] = pos(order[a], 1);
+    if (!r.empty())
+      for (long a = begin; a < end; ++a) r[a] = radius(order[a]);
   }
 };
 

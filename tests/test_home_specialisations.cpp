@@ -222,8 +222,10 @@ TEST(HomeThreads, SameResultsOnAnyNumberOfThreads) {
 // Without a neighbour list a step's final advance is left to the next step's first pass, and read()
 // computes the end positions for its copy (core/solver/home.cpp, drift): a lone ball in free fall
 // must read where symplectic Euler puts it after each step, x + (v + g dt) dt, not where the step
-// began; exactly, since the solver evaluates the same sums in the same order. (The same expressions through the renumbering's gather are covered by
-// HomeReorder.ReadKeepsTheScenesOrder, which a wrong clock index there fails.)
+// began. Compared exactly: the solver evaluates the same products and sums in the same order (its
+// clock is 0 at the step's start, so x + v (dt - 0) is x + v dt). The same expressions through the
+// renumbering's gather are covered by HomeReorder.ReadKeepsTheScenesOrder, which a wrong clock
+// index there fails.
 TEST(HomeRead, EndOfStepPositions) {
   const Scene lone = parse_scene(R"(
 name = "fall"

@@ -189,7 +189,8 @@ void TunnellingCheck::rebuild(const State& prev, const State& cur, double step_r
   const std::vector<int>& ball = grid_.order();
   slots_.resize(n);
   pool_.run([&](int p) {
-    slots_.gather(grid_, ref_, radius_, ForkJoin::range_begin(n, p, parts), ForkJoin::range_begin(n, p + 1, parts));
+    slots_.gather(ball.data(), ref_, radius_, ForkJoin::range_begin(n, p, parts),
+                  ForkJoin::range_begin(n, p + 1, parts));
   });
   // Listed: references closer than c (r_i + r_j) + 2 a, so in the same or adjacent cells. Appended
   // without a branch: the distance test's outcome is random, and mispredictions cost more than it.

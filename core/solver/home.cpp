@@ -94,6 +94,11 @@ struct StartScan {
   }
 };
 
+// Where a ball that was at x with velocity v at its own clock t_own is at time t (one coordinate).
+// Every advance along a line (the event loop's, the end of a step, read()'s end positions) is this
+// one expression, so read() gives exactly what the next step's start_pass will compute.
+inline double on_line(double x, double v, double t, double t_own) { return x + v * (t - t_own); }
+
 // A pair the list screen found approaching, and when it meets (kTouching: it touches now).
 struct Approach {
   int a, b;
@@ -197,7 +202,7 @@ class Home final : public Engine {
         else
           for (long k = b; k < e; ++k) {
             const long i = at ? at[k] : k;
-            op[k] = p[i] + v[i] * (end - tl[i]), ov[k] = v[i];
+            op[k] = on_line(p[i], v[i], end, tl[i]), ov[k] = v[i];
           }
       }
     });
@@ -615,9 +620,8 @@ class Home final : public Engine {
     StartScan q;
     for (int i = b; i < e; ++i) {
       if constexpr (kStart) {
-        if (end > 0) {  // finish_step's expressions
-          const double h = end - tl[i];
-          x[i] += vx[i] * h, y[i] += vy[i] * h;
+        if (end > 0) {  // as finish_step
+          x[i] = on_line(x[i], vx[i], end, tl[i]), y[i] = on_line(y[i], vy[i], end, tl[i]);
           tl[i] = 0;
         }
         if (kick) vx[i] += gx, vy[i] += gy;  // as the Eigen kick: v + g dt, each component
@@ -807,9 +811,11 @@ class Home final : public Engine {
       pool_.run([&](int p) {
         const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
         std::copy(scratch + b, scratch + e, column + b);
-        if (column == v_.col(1).data()) std::fill(scratch + b, scratch + e, 0.0);  // the last column
       });
     }
+    pool_.run([&](int p) {
+      std::fill(scratch + ForkJoin::range_begin(n_, p, parts), scratch + ForkJoin::range_begin(n_, p + 1, parts), 0.0);
+    });
     // active_ is free here (the contact pass sets it after the broad phase): it marks the slots done.
     auto permute = [&](auto* a) {
       std::fill(active_.begin(), active_.end(), 0);
@@ -886,7 +892,8 @@ class Home final : public Engine {
   // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
   // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
   void drift() {
-    // t_local_ is 0 for every ball here: the last step's final advance (or this one's start_pass) left it so.
+    // t_local_ is 0 for every ball here: the last step's final advance (or this one's start_pass)
+    // left it so.
     queue_.clear();
     // The active balls' predictions read only the state at the start of the step: on several
     // parts each predicts its fixed range of balls, and the events are queued in ball order, as
@@ -968,8 +975,7 @@ class Home final : public Engine {
     const double dt = dt_;
     double moved2 = 0, speed2 = 0;
     for (int i = b; i < e; ++i) {
-      const double h = dt - tl[i];
-      x[i] += vx[i] * h, y[i] += vy[i] * h;
+      x[i] = on_line(x[i], vx[i], dt, tl[i]), y[i] = on_line(y[i], vy[i], dt, tl[i]);
       tl[i] = 0;
       const double dx = x[i] - bx[i], dy = y[i] - by[i];
       moved2 = std::max(moved2, dx * dx + dy * dy);
@@ -1023,8 +1029,7 @@ class Home final : public Engine {
   }
 
   void advance(int i, double t) {
-    const double h = t - t_local_[i];
-    p_(i, 0) += v_(i, 0) * h, p_(i, 1) += v_(i, 1) * h;
+    p_(i, 0) = on_line(p_(i, 0), v_(i, 0), t, t_local_[i]), p_(i, 1) = on_line(p_(i, 1), v_(i, 1), t, t_local_[i]);
     t_local_[i] = t;
   }
 
@@ -1051,8 +1056,13 @@ class Home final : public Engine {
       if (j == i) return;
       const double tj = kAtStart ? 0.0 : t_local_[j];
       const double t0 = std::max(ti, tj);
-      const double dx = kAtStart ? p_(i, 0) - p_(j, 0) : (p_(i, 0) + v_(i, 0) * (t0 - ti)) - (p_(j, 0) + v_(j, 0) * (t0 - tj));
-      const double dy = kAtStart ? p_(i, 1) - p_(j, 1) : (p_(i, 1) + v_(i, 1) * (t0 - ti)) - (p_(j, 1) + v_(j, 1) * (t0 - tj));
+      double dx, dy;  // i - j at t0
+      if constexpr (kAtStart) {
+        dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
+      } else {
+        dx = on_line(p_(i, 0), v_(i, 0), t0, ti) - on_line(p_(j, 0), v_(j, 0), t0, tj);
+        dy = on_line(p_(i, 1), v_(i, 1), t0, ti) - on_line(p_(j, 1), v_(j, 1), t0, tj);
+      }
       const double wx = v_(i, 0) - v_(j, 0), wy = v_(i, 1) - v_(j, 1);
       const double b = dx * wx + dy * wy;  // < 0: approaching
       const double d2 = dx * dx + dy * dy;
@@ -1139,7 +1149,7 @@ class Home final : public Engine {
   std::vector<int> cluster_;
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   mutable ForkJoin pool_;  // mutable: read() gathers on it too
-  std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: slot pairs within contact reach
+  std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: ball pairs within contact reach
   std::vector<std::vector<Contact>> pair_contacts_;  // per part: their contacts (screen_slots)
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
   std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift

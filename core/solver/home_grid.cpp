@@ -45,16 +45,13 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius,
   id_.resize(n);
   cell_sorted_.resize(n);
   cell_of_.resize(n);
-  const double* rp = radius.size() ? radius.data() : nullptr;
-  if (copy) x_.resize(n), y_.resize(n), r_.resize(rp ? n : 0);
+  if (copy) copy_.resize(n, radius.size() > 0);
   // Positions (and radii) in slot order, each part over its fixed range of slots.
   auto gather = [&] {
     if (!copy) return;
     pool.run([&](int p) {
       const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
-      for (long s = b; s < e; ++s) x_[s] = px[id_[s]], y_[s] = py[id_[s]];
-      if (rp)
-        for (long s = b; s < e; ++s) r_[s] = rp[id_[s]];
+      copy_.gather(id_.data(), pos, radius, b, e);
     });
   };
   // Counting sort, stable: within a cell, balls keep their order.
@@ -118,7 +115,8 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius,
         for (int i : strays_[q])
           if (cell_of_[i] - cb < ce - cb) ++count[cell_of_[i]];
     long sum = 0;
-    for (size_t c = cb; c < ce; ++c) sum += count[c], count[c] = static_cast<int>(sum);  // ends, from the part's first slot
+    // Each cell's end, counted from the part's first slot.
+    for (size_t c = cb; c < ce; ++c) sum += count[c], count[c] = static_cast<int>(sum);
     total[p + 1] = sum;
   });
   for (int p = 0; p < parts; ++p) total[p + 1] += total[p];

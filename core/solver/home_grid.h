@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include "fork_join.h"
+#include "uniform_grid.h"
 
 namespace ballbench {
 
@@ -49,9 +50,9 @@ class HomeGrid {
   // Balls of cell c are the slots [first(c), first(c + 1)); slot s is ball id[s].
   int first(int c) const { return start_[c]; }
   const int* id() const { return id_.data(); }
-  const double* x() const { return x_.data(); }
-  const double* y() const { return y_.data(); }
-  const double* r() const { return r_.data(); }
+  const double* x() const { return copy_.x.data(); }
+  const double* y() const { return copy_.y.data(); }
+  const double* r() const { return copy_.r.data(); }
 
   // Calls f(slot a, slot b) once for every pair of slots a < b in the same or adjacent cells, for
   // the balls in slots [s0, s1), in the order UniformGrid::for_each_candidate_pair visits them.
@@ -127,7 +128,7 @@ class HomeGrid {
   std::vector<int> cell_sorted_;  // slot -> cell
   std::vector<int> id_;       // slot -> ball
   std::vector<std::vector<int>> strays_;  // per part of the parallel sort: its balls in others' cells
-  std::vector<double> x_, y_, r_;  // in slot order, as of the last build with `copy`
+  CellOrderedBalls copy_;     // positions (and radii) in slot order, as of the last build with `copy`
 };
 
 }  // namespace ballbench
