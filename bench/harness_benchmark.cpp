@@ -4,18 +4,31 @@
 // step in both. Counters: engine and harness ns per ball-step, and overhead = harness / engine.
 // `tunnelling/...` times the per-step check alone (finiteness, wall escapes, pass-throughs) on
 // recorded states of the same gas: ns per ball-step, and the events it counted (0 for home).
+// `floor/home/gas/N` measures, in one run, what any per-step check from states must at least pay
+// beside the engine's step: copying the state out once (32 bytes per ball, on as many threads as
+// the machine has cores, as `home` steps at 10^5), and one streaming pass comparing two consecutive
+// states (finiteness and the longest step: 48 bytes read, 16 written per ball). Neither is harness
+// code; together they are a lower bound on a harness that reads the state and compares it with the
+// last one, with no pair search. `engine_cores` is the engine's CPU time over its wall time: the
+// cores it keeps busy, so the rest is what a harness running beside it could use.
 //
 //   build/release/bench/ballbench_harness_benchmark --benchmark_format=json > harness.json
 #include <benchmark/benchmark.h>
 
 #include "bench_main.h"
 
+#include <time.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <map>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "fork_join.h"
 #include "registry.h"
 #include "runner.h"
 #include "scaled_scene.h"
@@ -88,6 +101,79 @@ void tunnelling_benchmark(benchmark::State& state, int n) {
   state.counters["tunnelling"] = static_cast<double>(passthroughs);
 }
 
+double process_cpu_s() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+// See the top of the file: the engine's step beside the least a per-step check from states costs.
+void floor_benchmark(benchmark::State& state, int n) {
+  const Scene& scene = shared_scaled_scene(SceneKind::Gas, n);
+  const EngineEntry& home = find_engine("home");
+  ForkJoin pool(ForkJoin::threads_for(n, 0, 0));
+  const int parts = pool.parts();
+  double engine_s = 0, engine_cpu_s = 0, copy_s = 0, pass_s = 0;
+  long moving_steps = 0;  // steps the pass found finite with a ball moving: its result used, so computed
+  for (auto _ : state) {
+    auto engine = home.create(scene, home.info.profiles.front(), nlohmann::json::object());
+    State read, copy;
+    engine->read(read);
+    copy = read;
+    std::vector<double> last_x(read.pos.col(0).data(), read.pos.col(0).data() + n);
+    std::vector<double> last_y(read.pos.col(1).data(), read.pos.col(1).data() + n);
+    std::vector<double> longest(parts);
+    std::vector<int> finite(parts);
+    double seconds = 0;
+    for (long k = 1; k <= kSteps; ++k) {
+      const double cpu0 = process_cpu_s();
+      auto t0 = std::chrono::steady_clock::now();
+      engine->step(scene.dt);
+      const double step_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      engine_s += step_s, engine_cpu_s += process_cpu_s() - cpu0;
+      engine->read(read);  // untimed: the copy below stands for it
+      t0 = std::chrono::steady_clock::now();
+      pool.run([&](int p) {
+        const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+        for (int c = 0; c < 2; ++c) {
+          std::memcpy(copy.pos.col(c).data() + b, read.pos.col(c).data() + b, sizeof(double) * (e - b));
+          std::memcpy(copy.vel.col(c).data() + b, read.vel.col(c).data() + b, sizeof(double) * (e - b));
+        }
+      });
+      const double copied_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      t0 = std::chrono::steady_clock::now();
+      pool.run([&](int p) {
+        const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);
+        const double *x = copy.pos.col(0).data(), *y = copy.pos.col(1).data();
+        const double *vx = copy.vel.col(0).data(), *vy = copy.vel.col(1).data();
+        double *lx = last_x.data(), *ly = last_y.data();
+        int ok = 1;
+        double m2 = 0;
+        for (long i = b; i < e; ++i) {
+          ok &= ((x[i] - x[i]) + (y[i] - y[i])) + ((vx[i] - vx[i]) + (vy[i] - vy[i])) == 0;
+          const double dx = x[i] - lx[i], dy = y[i] - ly[i];
+          m2 = std::max(m2, dx * dx + dy * dy);
+          lx[i] = x[i], ly[i] = y[i];
+        }
+        finite[p] = ok, longest[p] = m2;
+      });
+      const double passed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      copy_s += copied_s, pass_s += passed_s, seconds += step_s + copied_s + passed_s;
+      moving_steps += std::all_of(finite.begin(), finite.end(), [](int f) { return f != 0; }) &&
+                       *std::max_element(longest.begin(), longest.end()) > 0;
+    }
+    state.SetIterationTime(seconds);
+  }
+  const double ball_steps = static_cast<double>(state.iterations()) * kSteps * n;
+  state.counters["engine_ns_per_ball_step"] = 1e9 * engine_s / ball_steps;
+  state.counters["engine_cores"] = engine_cpu_s / engine_s;
+  state.counters["threads"] = parts;
+  state.counters["copy_ns_per_ball_step"] = 1e9 * copy_s / ball_steps;
+  state.counters["pass_ns_per_ball_step"] = 1e9 * pass_s / ball_steps;
+  state.counters["floor"] = (copy_s + pass_s) / engine_s;
+  state.counters["moving_steps"] = static_cast<double>(moving_steps);
+}
+
 }  // namespace
 
 void register_benchmarks() {
@@ -103,6 +189,10 @@ void register_benchmarks() {
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
           ->MinTime(1.0);
+  benchmark::RegisterBenchmark("floor/home/gas/100000", floor_benchmark, 100'000)
+      ->UseManualTime()
+      ->Unit(benchmark::kMillisecond)
+      ->MinTime(1.0);
 }
 
 }  // namespace ballbench::bench

@@ -33,6 +33,27 @@ std::optional<HarnessRow> harness_row(const nlohmann::json& b, const std::vector
   return row;
 }
 
+std::optional<FloorRow> floor_row(const nlohmann::json& b, const std::vector<std::string>& parts) {
+  FloorRow row;
+  row.engine = parts[1], row.scene = parts[2];
+  try {
+    row.n = std::stol(parts[3]);
+  } catch (const std::exception&) {
+    return std::nullopt;  // not one of ours
+  }
+  if (b.value("error_occurred", false)) {
+    row.error = b.value("error_message", "skipped");
+  } else {
+    row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
+    row.engine_cores = b.at("engine_cores").get<double>();
+    row.threads = static_cast<int>(b.at("threads").get<double>());
+    row.copy_ns_per_ball_step = b.at("copy_ns_per_ball_step").get<double>();
+    row.pass_ns_per_ball_step = b.at("pass_ns_per_ball_step").get<double>();
+    row.floor = b.at("floor").get<double>();
+  }
+  return row;
+}
+
 BenchResults bench_from_json(const nlohmann::json& j) {
   BenchResults out;
   out.context = j.value("context", nlohmann::json::object());
@@ -41,6 +62,10 @@ BenchResults bench_from_json(const nlohmann::json& j) {
     const auto parts = split(b.at("name").get<std::string>(), '/');
     if (parts.size() >= 5 && parts[0] == "harness" && parts[4].starts_with("sample_every:")) {
       if (auto row = harness_row(b, parts)) out.harness.push_back(std::move(*row));
+      continue;
+    }
+    if (parts.size() >= 4 && parts[0] == "floor") {
+      if (auto row = floor_row(b, parts)) out.floor.push_back(std::move(*row));
       continue;
     }
     if (parts.size() < 5 || (parts[0] != "step" && parts[0] != "pour")) continue;  // then options, e.g. min_time:0.200

@@ -32,15 +32,29 @@ struct HarnessRow {
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 
+// The least a per-step check from states costs beside the engine (bench/harness_benchmark.cpp,
+// floor/ENGINE/SCENE/N): copying the state once and one streaming pass over two states.
+struct FloorRow {
+  std::string engine, scene;           // from the benchmark name floor/ENGINE/SCENE/N
+  long n = 0;
+  double engine_ns_per_ball_step = 0;
+  double engine_cores = 0;             // the engine's CPU time over its wall time
+  int threads = 1;                     // the copy's and the pass's threads
+  double copy_ns_per_ball_step = 0, pass_ns_per_ball_step = 0;
+  double floor = 0;                    // (copy + pass) over the engine's time, the same run
+  std::string error;                   // the benchmark skipped with this message ("" = ran)
+};
+
 struct BenchResults {
   nlohmann::json context;              // Google Benchmark's context: host, CPU, library versions
   std::vector<BenchRow> rows;          // step/ rows in the file's order; aggregates (mean, median) left out
   std::vector<BenchRow> pour;          // pour/ rows (window "pour"), apart: they are not scaling points
   std::vector<HarnessRow> harness;     // harness/ rows
+  std::vector<FloorRow> floor;         // floor/ rows
 };
 
 // Rows whose names do not start step/ or pour/ENGINE/PROFILE/SCENE/N or
-// harness/ENGINE/SCENE/N/sample_every:K (other benchmarks in the same file) are skipped. Throws
+// harness/ENGINE/SCENE/N/sample_every:K or floor/ENGINE/SCENE/N (other benchmarks in the same file) are skipped. Throws
 // InputError naming the file if it is not Google Benchmark JSON.
 BenchResults read_bench_file(const std::string& path);
 

@@ -58,7 +58,10 @@ TEST(BenchResults, ReadsHarnessBenchmarksAndTheReportShowsThem) {
     {"name": "harness/home/gas/100000/sample_every:10/min_time:1.000/manual_time", "run_type": "iteration",
      "engine_ns_per_ball_step": 35.0, "harness_ns_per_ball_step": 38.5, "overhead": 1.1},
     {"name": "harness/box2d/gas/100000/sample_every:10", "run_type": "iteration", "error_occurred": true,
-     "error_message": "out of memory"}
+     "error_message": "out of memory"},
+    {"name": "floor/home/gas/100000/min_time:1.000/manual_time", "run_type": "iteration",
+     "engine_ns_per_ball_step": 28.0, "engine_cores": 1.33, "threads": 2, "copy_ns_per_ball_step": 1.75,
+     "pass_ns_per_ball_step": 1.61, "floor": 0.12}
   ]})";
   const BenchResults b = read_bench_file(path.string());
   std::filesystem::remove(path);
@@ -72,21 +75,29 @@ TEST(BenchResults, ReadsHarnessBenchmarksAndTheReportShowsThem) {
   EXPECT_EQ(b.harness[1].harness_ns_per_ball_step, 38.5);
   EXPECT_EQ(b.harness[1].overhead, 1.1);
   EXPECT_EQ(b.harness[2].error, "out of memory");
+  ASSERT_EQ(b.floor.size(), 1u);
+  EXPECT_EQ(b.floor[0].n, 100000);
+  EXPECT_EQ(b.floor[0].threads, 2);
+  EXPECT_EQ(b.floor[0].copy_ns_per_ball_step, 1.75);
+  EXPECT_EQ(b.floor[0].floor, 0.12);
 
   ReportInputs in;
   in.run = nlohmann::json::object();
   in.harness = b;
   const std::string md = render_report(in);
   for (const char* want : {"## Harness overhead", "| home | gas | 100000 | 10 | 35.0 | 38.5 | 1.10 |",
-                           "| home | gas | 100000 | 1 | 40.0 | 110.0 | 2.75 |", "failed: out of memory"})
+                           "| home | gas | 100000 | 1 | 40.0 | 110.0 | 2.75 |", "failed: out of memory",
+                           "keeping 1.33 of 2 cores", "together **0.12** of the engine's step"})
     EXPECT_NE(md.find(want), std::string::npos) << want << "\n" << md;
 }
 
 TEST(BenchResults, AHarnessRowWithoutItsCountersIsAnInputError) {
   const auto path = std::filesystem::temp_directory_path() / ("bb_harness_bad." + std::to_string(::getpid()) + ".json");
-  std::ofstream(path) << R"({"benchmarks": [{"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration",
-                             "overhead": 1.0}]})";
-  EXPECT_THROW(read_bench_file(path.string()), InputError);
+  for (const char* row : {R"({"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration", "overhead": 1.0})",
+                          R"({"name": "floor/home/gas/10", "run_type": "iteration", "floor": 0.1})"}) {
+    std::ofstream(path) << R"({"benchmarks": [)" << row << "]}";
+    EXPECT_THROW(read_bench_file(path.string()), InputError) << row;
+  }
   std::filesystem::remove(path);
 }
 
