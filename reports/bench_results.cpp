@@ -14,44 +14,49 @@ std::vector<std::string> split(const std::string& s, char sep) {
   return parts;
 }
 
-std::optional<HarnessRow> harness_row(const nlohmann::json& b, const std::vector<std::string>& parts) {
-  HarnessRow row;
+// A row named KIND/ENGINE/SCENE/N[/...]: the rest of its name read by `name` (throwing if it is
+// not one of ours), then its counters by `counters`, unless the benchmark was skipped (its message
+// kept as the row's error).
+template <class Row, class Name, class Counters>
+std::optional<Row> named_row(const nlohmann::json& b, const std::vector<std::string>& parts, Name name,
+                             Counters counters) {
+  Row row;
   row.engine = parts[1], row.scene = parts[2];
   try {
     row.n = std::stol(parts[3]);
-    row.sample_every = std::stoi(parts[4].substr(std::string("sample_every:").size()));
+    name(row);
   } catch (const std::exception&) {
     return std::nullopt;  // not one of ours
   }
-  if (b.value("error_occurred", false)) {
+  if (b.value("error_occurred", false))
     row.error = b.value("error_message", "skipped");
-  } else {
-    row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
-    row.harness_ns_per_ball_step = b.at("harness_ns_per_ball_step").get<double>();
-    row.overhead = b.at("overhead").get<double>();
-  }
+  else
+    counters(row);
   return row;
 }
 
+std::optional<HarnessRow> harness_row(const nlohmann::json& b, const std::vector<std::string>& parts) {
+  return named_row<HarnessRow>(
+      b, parts,
+      [&](HarnessRow& row) { row.sample_every = std::stoi(parts[4].substr(std::string("sample_every:").size())); },
+      [&](HarnessRow& row) {
+        row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
+        row.harness_ns_per_ball_step = b.at("harness_ns_per_ball_step").get<double>();
+        row.overhead = b.at("overhead").get<double>();
+      });
+}
+
 std::optional<FloorRow> floor_row(const nlohmann::json& b, const std::vector<std::string>& parts) {
-  FloorRow row;
-  row.engine = parts[1], row.scene = parts[2];
-  try {
-    row.n = std::stol(parts[3]);
-  } catch (const std::exception&) {
-    return std::nullopt;  // not one of ours
-  }
-  if (b.value("error_occurred", false)) {
-    row.error = b.value("error_message", "skipped");
-  } else {
-    row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
-    row.engine_cores = b.at("engine_cores").get<double>();
-    row.threads = static_cast<int>(b.at("threads").get<double>());
-    row.copy_ns_per_ball_step = b.at("copy_ns_per_ball_step").get<double>();
-    row.pass_ns_per_ball_step = b.at("pass_ns_per_ball_step").get<double>();
-    row.floor = b.at("floor").get<double>();
-  }
-  return row;
+  return named_row<FloorRow>(
+      b, parts, [](FloorRow&) {},
+      [&](FloorRow& row) {
+        row.engine_ns_per_ball_step = b.at("engine_ns_per_ball_step").get<double>();
+        row.engine_cores = b.at("engine_cores").get<double>();
+        row.threads = static_cast<int>(b.at("threads").get<double>());
+        row.copy_ns_per_ball_step = b.at("copy_ns_per_ball_step").get<double>();
+        row.pass_ns_per_ball_step = b.at("pass_ns_per_ball_step").get<double>();
+        row.floor = b.at("floor").get<double>();
+      });
 }
 
 BenchResults bench_from_json(const nlohmann::json& j) {
