@@ -341,8 +341,12 @@ class Home final : public Engine {
   double radius(int i) const { return sc_.equal_radii ? r0_ : r_(i); }
   double inv_mass(int i) const { return sc_.equal_masses ? inv_m0_ : inv_m_(i); }
 
-  double touch_pair(int i, int j) const { return s_.contact_slop * (radius(i) + radius(j)); }
-  double touch_wall(int i) const { return s_.contact_slop * radius(i); }
+  // A gap below this counts as touching: the contact slop times the radius sum (of a pair, or of a
+  // ball alone at a wall). The hot kernels (scan_range, screen_slots) keep the slop in a local and
+  // apply the same product.
+  double touching_gap(double radius_sum) const { return s_.contact_slop * radius_sum; }
+  double touch_pair(int i, int j) const { return touching_gap(radius(i) + radius(j)); }
+  double touch_wall(int i) const { return touching_gap(radius(i)); }
 
   // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
   double wall_gap(int i, int axis, int side) const {
@@ -440,7 +444,7 @@ class Home final : public Engine {
   bool make_pair_contact(int i, int j, double dx, double dy, double d2, double wx, double wy, double rs,
                          double horizon, bool close_overlap, Contact& c) const {
     const double d = std::sqrt(d2), nx = dx / d, ny = dy / d;
-    return make_contact(i, j, nx, ny, wx * nx + wy * ny, d - rs, s_.contact_slop * rs, horizon, close_overlap, c);
+    return make_contact(i, j, nx, ny, wx * nx + wy * ny, d - rs, touching_gap(rs), horizon, close_overlap, c);
   }
 
   // Sequential impulses (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005): sweeps
