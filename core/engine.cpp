@@ -13,6 +13,7 @@ std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
   if (f.gravity && !info.caps.gravity) missing.push_back("gravity");
   if (!f.equal_radii && !info.caps.per_ball_radius) missing.push_back("balls of different radii");
   if (!f.equal_masses && !info.caps.per_ball_mass) missing.push_back("balls of different masses");
+  if (!f.frictionless && !info.caps.friction) missing.push_back("friction (it has no rotation: friction would be ignored)");
   if (missing.empty()) return "";
   return fmt::format("{} cannot run scene '{}': it needs {}", info.name, scene.name, fmt::join(missing, ", "));
 }

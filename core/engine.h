@@ -21,6 +21,7 @@ struct Capabilities {
   bool per_ball_radius = true;     // radii may differ
   bool per_ball_mass = true;       // masses may differ
   bool any_restitution = true;     // restitution honoured at any impact speed (no threshold)
+  bool friction = true;            // Coulomb friction between balls and at walls (needs rotation)
   bool continuous_collision = false;  // fast balls cannot pass through walls or balls
   bool deterministic = true;       // same build, scene and settings -> same trajectory
 };

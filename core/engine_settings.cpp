@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -33,7 +34,13 @@ void SettingsReader::get(const char* key, double& value) {
 void SettingsReader::get(const char* key, int& value) {
   if (const auto* v = find(key)) {
     if (!v->is_number_integer()) fail(key, fmt::format("expected a whole number, got {}", v->dump()));
-    value = v->get<int>();
+    // get<int>() would wrap a 64-bit number silently (4294967297 becomes 1).
+    const auto wide = v->get<long long>();
+    const bool unsigned_big = v->is_number_unsigned() && v->get<unsigned long long>() > 2147483647ULL;
+    if (unsigned_big || wide > std::numeric_limits<int>::max() || wide < std::numeric_limits<int>::min())
+      fail(key, fmt::format("{} is out of range (a whole number from {} to {})", v->dump(),
+                            std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+    value = static_cast<int>(wide);
   }
 }
 

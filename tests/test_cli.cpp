@@ -156,6 +156,63 @@ TEST(Cli, NegativeStepsAndDt) {
   expect_one_line_error(cli("run --scene seed-box --engine home --dt -0.1"), "--dt");
 }
 
+// Numbers that parse but mean nothing: NaN, infinity, zero where a positive size is needed, no
+// step at all, and whole numbers out of an int's range. Each is one line naming the flag and the
+// value, across the commands that take such flags.
+TEST(Cli, NonFiniteAndZeroNumbersAreRefused) {
+  for (const char* args : {"run --scene seed-box --engine home --dt nan", "run --scene seed-box --engine home --dt inf",
+                           "run --scene seed-box --engine home --duration nan",
+                           "run --scene seed-box --engine home --duration -inf",
+                           "run --scene seed-box --engine home --timeout nan",
+                           "sweep --scene seed-box --engine home --horizon nan",
+                           "stress --scene seed-box --engine home --energy-tolerance nan"})
+    expect_one_line_error(cli(args), "must be a finite number");
+  const Outcome zero = cli("run --scene seed-box --engine home --dt 0");
+  expect_one_line_error(zero, "must be > 0, got '0'");
+  EXPECT_LT(zero.err.size(), 200u) << zero.err;  // no range printed with DBL_MAX's digits
+}
+
+TEST(Cli, RunsOfNoStepAreRefused) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 0"), "--steps: must be >= 1");
+  expect_one_line_error(cli("run --scene seed-box --engine home --duration 0.001"), "no step to run");
+  expect_one_line_error(cli("run --scene seed-box --engine home --sample-every 0"), "--sample-every");
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 5e3"), "expected a whole number");
+}
+
+TEST(Cli, IntegerSettingsDoNotWrap) {
+  // 2^32 + 1 would become 1 in a 32-bit int.
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set home.contact_iterations=4294967297"),
+                        "out of range");
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set home.substeps=-4294967295"),
+                        "out of range");
+}
+
+TEST(Cli, FrictionIsRefusedByEnginesWithoutRotation) {
+  // Our solvers have no rotation: friction would be ignored with status ok. They are reported
+  // unsupported, with the reason; an engine with friction runs.
+  const std::string scene = write_scene("ballbench_friction.toml", R"(dt = 0.01
+duration = 0.1
+gravity = [0.0, -9.81]
+friction = 0.5
+[container]
+min = [-5.0, 0.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [0.0, 0.25]
+vel = [3.0, 0.0]
+radius = 0.25
+)");
+  const Outcome o = cli("run --quiet --no-reference --scene " + scene + " --engine home,exact,home-seed,box2d");
+  EXPECT_EQ(o.status, 0) << o.err;
+  for (const char* engine : {"home ", "exact ", "home-seed "}) {
+    const size_t row = o.out.find(std::string("\n") + engine);
+    ASSERT_NE(row, std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("unsupported", row), std::string::npos) << o.out;
+  }
+  EXPECT_NE(o.out.find("it needs friction"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("box2d/tuned        ok"), std::string::npos) << o.out;
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

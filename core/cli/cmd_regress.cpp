@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "validators.h"
 #include "input_error.h"
 #include "json_value.h"
 #include "machine_info.h"
@@ -245,7 +246,7 @@ void add_regress(CLI::App& app) {
   auto* set = cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable): see what a change does");
   cmd->add_flag("--update", a->update, "rewrite the baseline from this run (after an intended change)")->excludes(set);
   cmd->add_option("--timeout", a->timeout_s, "seconds each run may take before it is killed (default 120)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveNumber);
   cmd->callback([a] { regress(*a); });
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "validators.h"
 #include "input_error.h"
 #include "registry.h"
 #include "run_engines.h"
@@ -43,6 +44,9 @@ void run(const RunArgs& a) {
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;
   if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
+  if (!a.steps && scene.steps() < 1)
+    throw InputError(fmt::format("--dt/--duration: duration {} s is under half a step of {} s: no step to run",
+                                 scene.duration, scene.dt));
   check_profile(engines, a.profile);
   RunOptions options;
   options.steps = a.steps ? *a.steps : -1;
@@ -62,10 +66,10 @@ void add_run(CLI::App& app) {
   auto* cmd = app.add_subcommand("run", "run engines on one scene and print their metrics");
   cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
-  cmd->add_option("--dt", a->dt, "step size in seconds (overrides the scene's)")->check(CLI::PositiveNumber);
-  auto* steps = cmd->add_option("--steps", a->steps, "number of steps")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--dt", a->dt, "step size in seconds (overrides the scene's)")->check(kPositiveNumber);
+  auto* steps = cmd->add_option("--steps", a->steps, "number of steps")->check(kPositiveCount);
   cmd->add_option("--duration", a->duration, "simulated seconds (overrides the scene's)")
-      ->check(CLI::PositiveNumber)
+      ->check(kPositiveNumber)
       ->excludes(steps);
   cmd->add_option("--json", a->json, "write one JSON object per engine run (an array) to FILE");
   cmd->add_option("--trajectory", a->trajectory, "write every ball's state at every step as CSV to FILE");
@@ -75,14 +79,14 @@ void add_run(CLI::App& app) {
   cmd->add_option("--sample-every", a->sample_every,
                   "sampled metrics (energy, momentum, overlaps, sticking, error, checksums) see every K-th step "
                   "(default 1); tunnelling sees every step")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveCount);
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-reference", a->no_reference,
                 "do not run `exact` alongside to measure the error against it (it runs by default)");
   auto* timeout = cmd->add_option("--timeout", a->isolation.timeout_s,
                                   "seconds each engine run may take before it is killed and marked \"timed out\" "
                                   "(default 600)")
-                      ->check(CLI::PositiveNumber);
+                      ->check(kPositiveNumber);
   cmd->add_flag_function(
          "--no-isolation", [a](std::int64_t) { a->isolation.enabled = false; },
          "run engines in this process, not each in a child process (a crash then ends the whole run)")

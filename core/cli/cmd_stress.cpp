@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "validators.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "stability_frontier.h"
@@ -40,16 +41,16 @@ void add_stress(CLI::App& app) {
   cmd->add_option("--profile", a->options.profile, "settings profile, or all");
   cmd->add_option("--knobs", a->knobs, "comma-separated: dt, speed, mass-ratio, count (default: all four)")
       ->delimiter(',');
-  cmd->add_option("--steps", a->options.steps, "steps per run (default 200)")->check(CLI::PositiveNumber);
+  cmd->add_option("--steps", a->options.steps, "steps per run (default 200)")->check(kPositiveCount);
   cmd->add_option("--levels", a->options.levels, "doublings tried per knob (default 6: up to 32 x)")
       ->check(CLI::Range(1, 20));
   cmd->add_option("--energy-tolerance", a->options.energy_tolerance,
                   "a run fails when its energy is off the reference (or grew) by more than this fraction (default 0.1)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveNumber);
   cmd->add_option("--json", a->json, "write the frontiers as JSON to FILE");
   auto* timeout = cmd->add_option("--timeout", a->options.isolation.timeout_s,
                                   "seconds each run may take before it is killed and fails (default 120)")
-                      ->check(CLI::PositiveNumber);
+                      ->check(kPositiveNumber);
   cmd->add_flag("--no-isolation", a->no_isolation, "run engines in this process (a crash then ends the whole run)")
       ->excludes(timeout);
   cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");

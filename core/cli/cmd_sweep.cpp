@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "validators.h"
 #include "input_error.h"
 #include "registry.h"
 #include "scene_loader.h"
@@ -50,17 +51,17 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--horizon", a->options.horizon,
                   "simulated time at which the position error is taken (s, default 0.2; a whole number of steps "
                   "at every dt)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveNumber);
   cmd->add_option("--dt-factors", a->dt_factors, "the step sizes tried, as factors of the scene's dt (default 2,1,0.5,0.25)")
       ->delimiter(',')
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveNumber);
   cmd->add_flag("--no-knobs", a->no_knobs, "vary the step size only, not the engines' own knobs");
   cmd->add_option("--repeats", a->options.repeats, "timing runs per point; the median is reported (default 3)")
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--json", a->json, "JSON output (default sweep-SCENE.json)");
   cmd->add_option("--csv", a->csv, "CSV output (default: the JSON path with .csv)");
   cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds each run may take (default 120)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveNumber);
   cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
   cmd->callback([a] { sweep(*a); });
 }

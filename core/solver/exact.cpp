@@ -1075,6 +1075,7 @@ EngineEntry exact_engine() {
   info.caps.continuous_collision = true;
   info.caps.deterministic = true;
   info.caps.any_restitution = true;
+  info.caps.friction = false;  // frictionless disks: no rotation
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             ExactSettings s;
             SettingsReader r("exact", overrides);

@@ -159,6 +159,7 @@ EngineEntry home_seed_engine() {
       "tunnels and sticks by design; O(n^2) pair loop";
   info.summary = "faithful port of the 2017 thesis's MATLAB programs (sticks and tunnels on purpose)";
   info.caps.any_restitution = true;
+  info.caps.friction = false;  // frictionless disks: no rotation
   info.caps.continuous_collision = false;
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSeedSettings s;
