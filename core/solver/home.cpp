@@ -17,6 +17,7 @@
 #include "fork_join.h"
 #include "solver/home_grid.h"
 #include "solver/neighbour_list.h"
+#include "solver/soft_step.h"
 #include "solver/warm_start.h"
 
 namespace ballbench {
@@ -48,6 +49,9 @@ constexpr int kParallelBalls = 100'000;
 // renumbering); every scene in tests/ and the regression suite is far below 10^4 balls.
 constexpr int kReorderSteps = 16;
 constexpr int kReorderBalls = 10'000;
+// The soft step's contacts reach this fraction of the largest radius beyond what the balls' motion
+// can close within the step (speculative margin).
+constexpr double kSoftMargin = 0.1;
 
 int reorder_steps(int n, int requested) {
   if (requested >= 0) return requested;
@@ -141,7 +145,8 @@ class Home final : public Engine {
         wall_hits_(pool_.parts()),
         first_events_(pool_.parts()),
         approaches_(pool_.parts()),
-        extent_(pool_.parts()) {
+        extent_(pool_.parts()),
+        soft_(s.resting == "soft" && scene.features().gravity) {
     // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
     if (!sc_.equal_radii) r_ = scene.radius;
     if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
@@ -155,6 +160,7 @@ class Home final : public Engine {
     t_ += dt;
     dt_ = dt;
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
+    if (soft_) return soft_path();
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
     // Without a neighbour list one parallel pass kicks and measures what the grid and the wall
@@ -212,7 +218,12 @@ class Home final : public Engine {
     return {{"contact_iterations", s_.contact_iterations},
             {"rest_velocity", s_.rest_velocity},
             {"contact_slop", s_.contact_slop},
-            {"max_events_per_ball", s_.max_events_per_ball}};
+            {"max_events_per_ball", s_.max_events_per_ball},
+            {"resting", s_.resting},
+            {"substeps", s_.soft.substeps},
+            {"contact_hertz", s_.soft.contact_hertz},
+            {"damping_ratio", s_.soft.damping_ratio},
+            {"push_speed", s_.soft.push_speed}};
   }
 
  private:
@@ -889,6 +900,61 @@ class Home final : public Engine {
     for (int b : cluster_) predict(b);
   }
 
+  // Scenes with gravity: one soft step (soft_step.h) over every contact that can touch within the
+  // step, found on a grid whose cells cover the fastest ball's motion.
+  void soft_path() {
+    const double dt = dt_, g = g_.norm();
+    double speed2 = 0;
+    HomeGrid::Bounds bounds;
+    for (int i = 0; i < n_; ++i) {
+      bounds.add(p_(i, 0), p_(i, 1));
+      speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
+    }
+    // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin).
+    const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
+    const double margin = kSoftMargin * rmax_;
+    soft_contacts_.clear();
+    const auto add = [&](int i, int j, double nx, double ny, double gap) {
+      const double mass = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
+      const double warm = warm_.find(i, j);
+      soft_contacts_.push_back({i, j, nx, ny, gap, mass, 0.0, warm > 0 ? warm : 0.0, 0.0});
+    };
+    if (!sc_.no_pairs) {
+      grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
+      renumber_if_due();
+      const int* id = grid_.id();
+      grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
+        const int a = id[sa], b = id[sb];
+        const double dx = p_(a, 0) - p_(b, 0), dy = p_(a, 1) - p_(b, 1);
+        const double wx = v_(a, 0) - v_(b, 0), wy = v_(a, 1) - v_(b, 1);
+        const double rs = radius(a) + radius(b);
+        const double lim = rs + std::sqrt(wx * wx + wy * wy) * dt * kSpeedMargin + margin;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 >= lim * lim || d2 == 0) return;
+        const double d = std::sqrt(d2);
+        add(a, b, dx / d, dy / d, d - rs);
+      });
+    }
+    if (walls_)
+      for (int i = 0; i < n_; ++i)
+        for (int axis = 0; axis < 2; ++axis) {
+          const double v = v_(i, axis), toward = std::abs(v) + g * dt;
+          for (int side = 0; side < 2; ++side) {
+            const double gap = wall_gap(i, axis, side);
+            if (gap >= toward * dt * kSpeedMargin + margin) continue;
+            const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
+            add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
+          }
+        }
+    const SoftBodies bodies{p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data(),
+                            sc_.equal_masses ? nullptr : inv_m_.data(), inv_m0_};
+    soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
+    warm_entries_.clear();
+    for (const SoftContact& c : soft_contacts_)
+      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+    warm_.assign(warm_entries_);
+  }
+
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
   double velocity_tolerance() const { return s_.contact_slop * rmax_ / dt_; }
 
@@ -1186,6 +1252,9 @@ class Home final : public Engine {
   WarmStart warm_;                // impulses at the end of the last contact pass
   std::vector<WarmStart::Entry> warm_entries_;  // scratch for rebuilding warm_
   std::vector<Event> queue_;      // a min-heap on t, see push_event
+  bool soft_;                     // resting contact by the soft step (scenes with gravity)
+  std::vector<SoftContact> soft_contacts_;
+  SoftStepScratch soft_scratch_;
 };
 
 }  // namespace
@@ -1199,6 +1268,7 @@ EngineEntry home_engine() {
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
+  info.caps.friction = false;  // frictionless disks: no rotation
   // Sweeps of the resting-contact solve; motion between contacts is exact at any setting.
   info.sweep_knobs = {{"contact_iterations", {4, 16, 200}}};
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
@@ -1208,7 +1278,16 @@ EngineEntry home_engine() {
             r.get("rest_velocity", s.rest_velocity);
             r.get("contact_slop", s.contact_slop);
             r.get("max_events_per_ball", s.max_events_per_ball);
+            r.get("resting", s.resting, {"soft", "events"});
+            r.get("substeps", s.soft.substeps);
+            r.get("contact_hertz", s.soft.contact_hertz);
+            r.get("damping_ratio", s.soft.damping_ratio);
+            r.get("push_speed", s.soft.push_speed);
             r.finish();
+            if (s.soft.substeps < 1) throw InputError("settings.home.substeps: must be >= 1");
+            if (!(s.soft.contact_hertz > 0)) throw InputError("settings.home.contact_hertz: must be > 0");
+            if (!(s.soft.damping_ratio >= 0)) throw InputError("settings.home.damping_ratio: must be >= 0");
+            if (!(s.soft.push_speed > 0)) throw InputError("settings.home.push_speed: must be > 0");
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");

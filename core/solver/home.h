@@ -1,10 +1,12 @@
 #pragma once
 // `home`: our ball solver. Design and the reasons for it: core/solver/README.md.
 #include <memory>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "engine.h"
+#include "solver/soft_step.h"
 
 namespace ballbench {
 
@@ -37,6 +39,13 @@ struct HomeSettings {
   /// Safety valve: more events than this per ball in one step is reported as a failure instead of
   /// running on (it would mean an inelastic collapse the contact pass did not resolve). (count)
   int max_events_per_ball = 1000;
+  /// Resting contact in scenes with gravity: "soft", the soft step (core/solver/soft_step.h) over
+  /// every contact; "events", a contact pass at the start of the step, then exact event-driven
+  /// motion with resting clusters solved where they form. Scenes without gravity always run
+  /// the event-driven path, exact between collisions.
+  std::string resting = "events";
+  /// The soft step's substeps, push-out stiffness, damping and speed (resting = "soft").
+  SoftStepSettings soft;
 
   // Internal, not user settings (not in settings(), not readable with --set): they change how
   // fast, never what, the solver computes.

@@ -1,0 +1,62 @@
+#pragma once
+// The soft step: `home`'s contact solve for scenes with gravity, where balls rest on each other.
+//
+// Catto's soft step (E. Catto, "Solver2D", 2024; the solver of Box2D v3): the step is cut into
+// substeps; each substep integrates the velocities, re-applies the accumulated impulses (warm
+// start), solves every contact once with a soft constraint that pushes an overlap out at a bounded
+// speed, integrates the positions, then relaxes (solves again without the push, so the push moves
+// positions but leaves no velocity behind). Restitution is applied once after the last substep,
+// from each contact's approach speed at the start of the step. Contact normals are fixed for the
+// step and the separation is tracked from the balls' displacements, so a contact that is not yet
+// touching is speculative (it may close its gap, not more: Catto, "Speculative Contacts", 2013).
+//
+// Plain data in, plain data out: the balls as arrays, the contacts as a vector; no grid, no state
+// of its own. The caller finds the contacts (every pair and wall that can touch within the step).
+#include <vector>
+
+namespace ballbench {
+
+struct SoftContact {
+  int i, j;            // balls; j < 0: a wall (the caller's code), which never moves
+  double nx, ny;       // unit normal from j (or the wall) towards i, fixed for the step
+  double gap;          // separation at the start of the step (m); negative when overlapping
+  double mass;         // effective mass along the normal, 1 / (1 / m_i + 1 / m_j) (kg)
+  double vn0;          // relative normal velocity at the start of the step (m/s); < 0 approaching
+  double impulse;      // accumulated impulse of one substep (N s), >= 0; in: the warm start
+  double max_impulse;  // the largest it was during the step: restitution only where it pushed
+};
+
+struct SoftStepSettings {
+  int substeps = 4;            // (count)
+  double contact_hertz = 100;  // stiffness of the push-out (Hz); at most a quarter of the substep rate is used
+  double damping_ratio = 10;   // of the push-out: heavily damped, so a push does not ring
+  double push_speed = 3;       // fastest an overlap is pushed out (m/s)
+};
+
+// The scene's restitution and the approach speed below which a contact does not bounce (m/s).
+struct Restitution {
+  double e = 1;
+  double threshold = 1;
+};
+
+// Arrays of n balls, structure of arrays; inv_mass may be null (then every ball has inv_mass0).
+struct SoftBodies {
+  double* x;
+  double* y;
+  double* vx;
+  double* vy;
+  const double* inv_mass;
+  double inv_mass0;
+};
+
+// Scratch the step reuses between calls (no allocation once warm).
+struct SoftStepScratch {
+  std::vector<double> dx, dy;  // each ball's displacement since the start of the step (m)
+};
+
+// Advances the balls by dt under gravity (gx, gy), solving `contacts`; their impulses are left
+// as the warm start for the next step.
+void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, double gx, double gy, double dt,
+               const SoftStepSettings& s, Restitution restitution, SoftStepScratch& scratch);
+
+}  // namespace ballbench

@@ -1,0 +1,140 @@
+// The soft step (core/solver/soft_step.h) on plain data, and `home` with resting = "soft" on
+// piles: what it must keep (no tunnelling, no sticking, a pile that comes to rest) and where it
+// must not be taken (scenes without gravity run the exact event-driven path, bit for bit).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "input_error.h"
+#include "registry.h"
+#include "runner.h"
+#include "scene_loader.h"
+#include "solver/soft_step.h"
+
+namespace ballbench {
+namespace {
+
+struct Balls {
+  std::vector<double> x, y, vx, vy;
+  SoftBodies bodies() { return {x.data(), y.data(), vx.data(), vy.data(), nullptr, 1.0}; }
+};
+
+TEST(SoftStep, FreeBallFollowsSubsteppedSymplecticEuler) {
+  // n substeps of h = dt / n: y = y0 + v0 dt + g h^2 (1 + 2 + ... + n) = y0 + v0 dt + g dt^2 (n + 1) / (2 n).
+  Balls b{{0.0}, {1.0}, {0.5}, {2.0}};
+  std::vector<SoftContact> none;
+  SoftStepScratch scratch;
+  SoftStepSettings s;
+  s.substeps = 4;
+  const double dt = 0.01, g = -9.81;
+  soft_step(b.bodies(), 1, none, 0.0, g, dt, s, {}, scratch);
+  EXPECT_NEAR(b.x[0], 0.5 * dt, 1e-15);
+  EXPECT_NEAR(b.y[0], 1.0 + 2.0 * dt + g * dt * dt * 5.0 / 8.0, 1e-15);
+  EXPECT_NEAR(b.vy[0], 2.0 + g * dt, 1e-15);
+}
+
+TEST(SoftStep, BallOnTheFloorStaysAtRest) {
+  // A ball touching the floor (gap 0), carried by its contact: after a second it has settled where
+  // the push-out's spring of 100 Hz holds its weight, g / omega^2 deep, and no longer moves.
+  Balls b{{0.0}, {0.25}, {0.0}, {0.0}};
+  std::vector<SoftContact> floor{{0, -3, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0}};
+  SoftStepScratch scratch;
+  for (int k = 0; k < 100; ++k) {
+    floor[0].gap = b.y[0] - 0.25;  // the caller measures the gap at the start of each step
+    soft_step(b.bodies(), 1, floor, 0.0, -9.81, 0.01, {}, {0.5, 0.2}, scratch);
+  }
+  const double omega = 2 * M_PI * 100;
+  EXPECT_NEAR(b.y[0], 0.25 - 9.81 / (omega * omega), 1e-9);
+  EXPECT_LT(std::abs(b.vy[0]), 1e-9);
+  EXPECT_NEAR(floor[0].impulse, 9.81 * 0.01 / 4, 1e-9);  // its weight over one substep
+}
+
+TEST(SoftStep, ImpactLeavesAtTheRestitutionSpeed) {
+  // Two touching balls approaching head-on at 2 m/s, no gravity: they part at e times that.
+  Balls b{{-0.25, 0.25}, {0.0, 0.0}, {1.0, -1.0}, {0.0, 0.0}};
+  std::vector<SoftContact> pair{{1, 0, 1.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0}};
+  SoftStepScratch scratch;
+  soft_step(b.bodies(), 2, pair, 0.0, 0.0, 0.01, {}, {0.8, 0.1}, scratch);
+  EXPECT_NEAR(b.vx[1] - b.vx[0], 0.8 * 2.0, 1e-12);
+  EXPECT_NEAR(b.vx[0] + b.vx[1], 0.0, 1e-12);  // momentum
+}
+
+Result run_soft(Scene scene) {
+  RunOptions options;
+  options.overrides = {{"resting", "soft"}};
+  return run_engine(scene, find_engine("home"), options);
+}
+
+TEST(HomeSoft, PileComesToRestWithoutTunnellingOrSticking) {
+  const Scene scene = load_scene("pile");
+  const Result r = run_soft(scene);
+  ASSERT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
+  EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
+  EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
+  ASSERT_TRUE(r.jitter.has_value());
+  EXPECT_LT(*r.jitter, 0.02);  // measured 6.7e-3 m/s at the defaults
+  EXPECT_LT(r.metrics.penetration_max, 0.1);  // measured 0.066 of a radius (impacts on the pile)
+}
+
+TEST(HomeSoft, OtherPilesToo) {
+  // Another count, radius, restitution and box than the pile scene's.
+  const std::string text = R"(
+dt = 0.01
+duration = 6.0
+gravity = [0.0, -9.81]
+restitution = 0.2
+[container]
+min = [-3.0, 0.0]
+max = [3.0, 12.0]
+[random]
+count = 300
+radius = 0.12
+pos_min = [-2.8, 0.2]
+pos_max = [2.8, 11.8]
+vel_min = [-1.0, -1.0]
+vel_max = [1.0, 1.0]
+seed = 11
+)";
+  const Scene scene = parse_scene(text, "other-pile");
+  const Result r = run_soft(scene);
+  ASSERT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
+  EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
+  EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
+  EXPECT_LT(*r.jitter, 0.02);
+}
+
+TEST(HomeSoft, SeedBowlEndsNearExactsEnergy) {
+  const Scene scene = load_scene("seed-bowl");
+  const Result soft = run_soft(scene);
+  const Result exact = run_engine(scene, find_engine("exact"), {});
+  ASSERT_EQ(soft.status, "ok") << soft.error;
+  EXPECT_EQ(soft.metrics.tunnelling_wall + soft.metrics.tunnelling_pair, 0);
+  EXPECT_EQ(soft.metrics.sticking_wall + soft.metrics.sticking_pair, 0);
+  // Measured 1.7% above exact's final energy at the defaults.
+  EXPECT_NEAR(soft.metrics.energy.final / exact.metrics.energy.final, 1.0, 0.05);
+}
+
+TEST(HomeSoft, ScenesWithoutGravityKeepTheEventDrivenPath) {
+  const Scene scene = load_scene("seed-box");
+  const Result soft = run_soft(scene);
+  const Result events = run_engine(scene, find_engine("home"), {});
+  ASSERT_EQ(soft.status, "ok") << soft.error;
+  EXPECT_EQ(soft.checksum_trajectory, events.checksum_trajectory);
+}
+
+TEST(HomeSoft, RejectsBadSettings) {
+  const Scene scene = load_scene("pile");
+  for (const auto& [key, value] : {std::pair<const char*, nlohmann::json>{"substeps", 0},
+                                   {"contact_hertz", 0.0},
+                                   {"damping_ratio", -1.0},
+                                   {"push_speed", 0.0},
+                                   {"resting", "hard"}}) {
+    EXPECT_THROW(find_engine("home").create(scene, "default", {{key, value}}), InputError) << key;
+  }
+}
+
+}  // namespace
+}  // namespace ballbench
