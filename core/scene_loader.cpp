@@ -1,6 +1,7 @@
 #include "scene_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -220,8 +221,13 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
     r.fail(nullptr, "origin", "origin and columns are required in open space");
   const Eigen::Vector2d origin =
       r.vec2_or("origin", container.min.array() + 0.5 * spacing);
-  int64_t columns = r.integer("columns", 0);
-  if (columns <= 0) columns = static_cast<int64_t>(std::floor((container.max.x() - radius - origin.x()) / spacing)) + 1;
+  int64_t columns = 0;
+  if (r.has("columns")) {
+    columns = r.integer("columns", 0);
+    if (columns <= 0) r.fail(r.node("columns"), "columns", fmt::format("must be at least 1, got {}", columns));
+  } else {
+    columns = static_cast<int64_t>(std::floor((container.max.x() - radius - origin.x()) / spacing)) + 1;
+  }
   if (columns <= 0) r.fail(r.node("origin"), "origin", "no column fits in the container");
   const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
   std::mt19937_64 rng(static_cast<uint64_t>(r.integer("seed", 1)));
@@ -338,6 +344,17 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source) 
   Scene s;
   s.source = source;
   s.name = top.string("name", std::filesystem::path(source).stem().string());
+  // The name is used in default output paths (`sweep` writes sweep-NAME.json) and in reports: it
+  // must stay one file name in the working folder.
+  if (top.node("name")) {
+    const bool plain = !s.name.empty() && s.name.front() != '.' &&
+                       std::none_of(s.name.begin(), s.name.end(), [](unsigned char c) {
+                         return c == '/' || c == '\\' || std::iscntrl(c);
+                       });
+    if (!plain)
+      top.fail(top.node("name"), "name",
+               fmt::format("'{}' cannot name a file (no '/', '\\', control characters or leading '.')", s.name));
+  }
   s.dt = top.number("dt");
   check_positive(top, "dt", s.dt);
   s.duration = top.number("duration");

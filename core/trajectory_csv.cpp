@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "data_file.h"
 #include "input_error.h"
 
 namespace ballbench {
@@ -32,7 +33,7 @@ void TrajectoryCsv::close() {
   std::fclose(f_);
   f_ = nullptr;
   if (!ok) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
-  std::filesystem::rename(tmp_, path_);
+  move_file_into_place(tmp_, path_, "the trajectory");
 }
 
 }  // namespace ballbench

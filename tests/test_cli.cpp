@@ -2,6 +2,7 @@
 // non-zero exit, never a crash; the scene schema from the README runs unchanged.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "cli_runner.h"
 
@@ -213,6 +215,61 @@ radius = 0.25
   EXPECT_NE(o.out.find("box2d/tuned        ok"), std::string::npos) << o.out;
 }
 
+TEST(Cli, SettingsOfEnginesNotRunAreCheckedToo) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set box2d.bogus=1"), "settings.box2d.bogus");
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set xyz.a=1"), "--set xyz.KEY: unknown engine");
+  const std::string scene = write_scene("ballbench_bad_setting.toml", std::string(kSchemaExample) + "[settings.ode]\nbogus = 1\n");
+  expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), "settings.ode.bogus");
+}
+
+// Outputs are checked before the first run, and a FIFO or a device is written into, not replaced.
+TEST(Cli, OutputsAreCheckedBeforeRunningAndNeverClobberWhatTheyShouldNot) {
+  const std::string scene = write_scene("ballbench_outputs.toml", kSchemaExample);
+  const std::string before = slurp(scene);
+  expect_one_line_error(cli("run --quiet --scene " + scene + " --engine home --steps 2 --json " + scene), "scene file");
+  EXPECT_EQ(slurp(scene), before);
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string same = (dir / "ballbench_same.out").string();
+  expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json " + same + " --trajectory " + same),
+                        "both name");
+  expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json /proc/no/such/x.json"),
+                        "cannot write the results there");
+  expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json " + dir.string()), "it is a folder");
+  const Outcome null_out = cli("run --quiet --scene seed-box --engine home --steps 2 --json /dev/null --trajectory /dev/null");
+  EXPECT_EQ(null_out.status, 0) << null_out.err;
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  const std::string fifo = (dir / ("ballbench_fifo." + std::to_string(::getpid()))).string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::string read_back;
+  std::thread reader([&] { read_back = slurp(fifo); });
+  const Outcome o = cli("run --quiet --scene seed-box --engine home --steps 2 --json " + fifo);
+  reader.join();
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_NE(read_back.find("\"checksum\""), std::string::npos) << read_back;
+  std::filesystem::remove(fifo);
+}
+
+TEST(Cli, SceneNamesCannotLeaveTheWorkingFolder) {
+  const std::string scene = write_scene("ballbench_dotdot.toml", std::string("name = \"../escape\"\n") + (kSchemaExample + 18));
+  expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), "name: '../escape' cannot name a file");
+}
+
+TEST(Cli, LatticeColumnsMustBePositive) {
+  const std::string scene = write_scene("ballbench_columns.toml", R"(dt = 0.01
+duration = 0.1
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[lattice]
+count = 4
+radius = 0.25
+spacing = 0.6
+columns = 0
+)");
+  expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), "columns: must be at least 1");
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");
@@ -224,7 +281,7 @@ TEST(Cli, FreshContradictsRenderOnly) {
 
 TEST(Cli, UnwritableTrajectory) {
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 1 --trajectory /nonexistent/dir/t.csv"),
-                        "--trajectory /nonexistent/dir/t.csv: cannot open for writing");
+                        "--trajectory /nonexistent/dir/t.csv: cannot write the trajectory there");
 }
 
 // With isolation (the default) and without, `run` prints the same numbers and the JSON carries

@@ -11,13 +11,13 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "validators.h"
 #include "input_error.h"
 #include "json_value.h"
 #include "machine_info.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
+#include "validators.h"
 
 namespace ballbench::cli {
 namespace {

@@ -1,17 +1,20 @@
 // `ballbench run`: engines on one scene, a table on stdout, optional JSON and trajectory CSV.
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <tuple>
 
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "validators.h"
+#include "data_file.h"
 #include "input_error.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
+#include "validators.h"
 
 namespace ballbench::cli {
 namespace {
@@ -27,19 +30,70 @@ struct RunArgs {
   Isolation isolation;
 };
 
-// A [settings.NAME] table naming no engine would be silently ignored: a typo must be an error.
-void check_scene_settings(const Scene& scene) {
+// Every engine's settings, from the scene's [settings.NAME] tables and from --set, are checked
+// before anything runs, for the engines selected and the rest alike: a typo is an error even for an
+// engine left out of this run, and it is found before the first run rather than after. Each named
+// engine is built on a one-ball copy of the scene, which reads (so checks) its settings as a run would.
+void check_settings(const Scene& scene, const nlohmann::json& overrides) {
   std::vector<std::string> names;
   for (const auto& e : engine_registry()) names.push_back(e.info.name);
-  for (const auto& [name, table] : scene.engine_settings.items())
-    if (std::find(names.begin(), names.end(), name) == names.end())
-      throw InputError(fmt::format("{}: settings.{}: unknown engine '{}'{} (known: {})", scene.source, name, name,
-                                   did_you_mean(name, names), fmt::join(names, ", ")));
+  std::vector<const EngineEntry*> named;
+  const auto known = [&](const std::string& name, const std::string& where) {
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it == names.end())
+      throw InputError(fmt::format("{}: unknown engine '{}'{} (known: {})", where, name, did_you_mean(name, names),
+                                   fmt::join(names, ", ")));
+    const EngineEntry* e = &find_engine(name);
+    if (std::find(named.begin(), named.end(), e) == named.end()) named.push_back(e);
+  };
+  for (const auto& [name, table] : scene.engine_settings.items()) known(name, fmt::format("{}: settings.{}", scene.source, name));
+  for (const auto& [name, table] : overrides.items()) known(name, fmt::format("--set {}.KEY", name));
+  Scene probe = scene;
+  const int keep = std::min(scene.n(), 1);
+  probe.radius.conservativeResize(keep), probe.mass.conservativeResize(keep);
+  probe.initial.pos.conservativeResize(keep, 2), probe.initial.vel.conservativeResize(keep, 2);
+  for (const EngineEntry* e : named) {
+    try {
+      e->create(probe, e->info.profiles.front(), merged_settings(scene, e->info.name, overrides.value(e->info.name, nlohmann::json::object())));
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception&) {
+      // Not a settings problem: the run itself reports it.
+    }
+  }
+}
+
+// The output files are checked before anything runs (a run may take hours): writable, not the
+// scene file just read, and not both the same regular file (one would overwrite the other).
+void check_outputs(const Scene& scene, const RunArgs& a) {
+  namespace fs = std::filesystem;
+  const auto same = [](const std::string& x, const std::string& y) {
+    std::error_code ec, ec2;
+    const fs::path cx = fs::weakly_canonical(x, ec), cy = fs::weakly_canonical(y, ec2);
+    return !ec && !ec2 && cx == cy;
+  };
+  const auto regular_or_new = [](const std::string& p) {
+    std::error_code ec;
+    return !fs::exists(p, ec) || fs::is_regular_file(p, ec);
+  };
+  if (!a.json.empty() && !a.trajectory.empty() && same(a.json, a.trajectory) && regular_or_new(a.json))
+    throw InputError(fmt::format("--json and --trajectory: both name {} (one would overwrite the other)", a.json));
+  // The results file's folders are created (as its writer does); the trajectory's are not.
+  for (const auto& [flag, path, what, parents] :
+       {std::tuple{"--json", a.json, "the results", true}, {"--trajectory", a.trajectory, "the trajectory", false}}) {
+    if (path.empty()) continue;
+    if (same(path, scene.source))
+      throw InputError(fmt::format("{} {}: that is the scene file being run (it would be overwritten)", flag, path));
+    try {
+      check_writable(path, what, parents);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{} {}", flag, e.what()));
+    }
+  }
 }
 
 void run(const RunArgs& a) {
   Scene scene = load_scene(a.scene);
-  check_scene_settings(scene);
   const auto engines = parse_engine_list(a.engines);
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;
@@ -51,7 +105,8 @@ void run(const RunArgs& a) {
   RunOptions options;
   options.steps = a.steps ? *a.steps : -1;
   for (const auto& s : a.sets) add_setting(options.overrides, s);
-  for (const auto& [name, v] : options.overrides.items()) find_engine(name);  // a typo in --set
+  check_settings(scene, options.overrides);
+  check_outputs(scene, a);
   if (!a.no_reference) options.reference = reference_engine();
   options.metrics.sample_every = a.sample_every;
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);

@@ -4,10 +4,10 @@
 #include <memory>
 
 #include "commands.h"
-#include "validators.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "stability_frontier.h"
+#include "validators.h"
 
 namespace ballbench::cli {
 namespace {

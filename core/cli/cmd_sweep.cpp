@@ -7,11 +7,11 @@
 #include <fmt/format.h>
 
 #include "commands.h"
-#include "validators.h"
 #include "input_error.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "sweep.h"
+#include "validators.h"
 
 namespace ballbench::cli {
 namespace {

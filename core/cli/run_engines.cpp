@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "data_file.h"
 #include "input_error.h"
 #include "isolated_run.h"
 #include "machine_info.h"
@@ -55,7 +56,7 @@ class TrajectoryParts {
     if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
   }
 
-  void finish() { std::filesystem::rename(joined_, path_); }
+  void finish() { move_file_into_place(joined_, path_, "the trajectory"); }
 
  private:
   std::string part(int k) const { return fmt::format("{}.part{}", path_, k); }
