@@ -270,6 +270,26 @@ columns = 0
   expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), "columns: must be at least 1");
 }
 
+TEST(Cli, ABallThatLeavesTheBoxEndsTheRun) {
+  // Under 1e9 m/s^2 the thesis's algorithm drops every ball through the floor in one step; the
+  // energy check alone (100 x the start) did not see it, and the run said ok.
+  const std::string scene = write_scene("ballbench_g1e9.toml", R"(dt = 0.01
+duration = 0.5
+gravity = [0.0, -1e9]
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [0.0, 0.0]
+radius = 0.25
+)");
+  const Outcome o = cli("run --quiet --no-reference --scene " + scene + " --engine home-seed,home");
+  EXPECT_NE(o.out.find("home-seed          diverged"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("a ball left the container (beyond a wall by more than its diameter) at step 1"), std::string::npos)
+      << o.out;
+  EXPECT_NE(o.out.find("home               ok"), std::string::npos) << o.out;
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

@@ -78,6 +78,7 @@ void MetricsAccumulator::observe(const State& s) {
 
 bool MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
   const StepTunnelling t = tunnelling_.step(prev, cur);
+  left_container_ = !t.contained;
   m_.tunnelling_wall += t.wall;
   m_.tunnelling_pair += t.pair;
   return t.finite;

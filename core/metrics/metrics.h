@@ -65,6 +65,9 @@ class MetricsAccumulator {
   // and nothing counted, when a position or velocity of `cur` is not finite (checked in the same
   // sweep over the states).
   bool observe_motion(const State& prev, const State& cur);
+  // The last observe_motion found a centre beyond the box by more than the largest diameter: a
+  // ball has left the container (it fell through a wall, or the scene blew it away).
+  bool left_container() const { return left_container_; }
   // The energy of the last sample exceeded the divergence bound.
   bool energy_blew_up() const;
   const MetricsSummary& summary() const { return m_; }
@@ -73,6 +76,7 @@ class MetricsAccumulator {
   const Scene& scene_;
   MetricsConfig cfg_;
   MetricsSummary m_;
+  bool left_container_ = false;
   StickingTracker sticking_;
   OverlapScratch overlap_scratch_;
   TunnellingCheck tunnelling_;

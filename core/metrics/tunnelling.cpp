@@ -91,8 +91,9 @@ StepTunnelling TunnellingCheck::step(const State& prev, const State& cur) {
   if (static_cast<int>(rec_.size()) < 4 * n + 4) rec_.resize(4 * n + 4);
   if (static_cast<int>(is_escaped_.size()) < n) is_escaped_.assign(n, 0);
   const Sweep sw = sweep(prev, cur, listed);
-  if (!sw.finite) return {false, 0, 0};
+  if (!sw.finite) return {false, sw.contained, 0, 0};
   StepTunnelling out;
+  out.contained = sw.contained;
   out.wall = sw.wall;
   if (n < 2 || never_ || sw.step2_max < mover2_) return out;  // no step long enough for a pass-through
   if (!listed || static_cast<double>(escaped_.size()) > rebuild_share_ * n) {
@@ -123,6 +124,7 @@ TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cu
     const double *vx = cur.vel.col(0).data(), *vy = cur.vel.col(1).data();
     const bool box = box_.kind == ContainerKind::Box;
     const double x0 = box_.min.x(), y0 = box_.min.y(), x1 = box_.max.x(), y1 = box_.max.y();
+    const double far = 2.0 * r_max_;  // beyond the box by more than this: the ball has left it
     const double *rx = ref_.col(0).data(), *ry = ref_.col(1).data();
     const double a2 = a_ * a_;
     Part& part = parts_[p];
@@ -130,6 +132,7 @@ TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cu
     // integer AND, one add, one max), since a chain of four dependent adds per ball (the
     // finiteness sum this sweep had) set its pace.
     int finite = 1;
+    int outside = 0;
     int wall = 0;
     double m2max = 0, m2sum = 0;
     part.escaped.clear();
@@ -141,6 +144,7 @@ TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cu
       const bool in_before = !(ax < x0 || ay < y0 || ax > x1 || ay > y1);
       const bool out_after = bx < x0 || by < y0 || bx > x1 || by > y1;
       wall += box && in_before && out_after;
+      outside |= box && (bx < x0 - far || by < y0 - far || bx > x1 + far || by > y1 + far);
       const double dx = bx - ax, dy = by - ay, m2 = dx * dx + dy * dy;
       m2max = std::max(m2max, m2);
       m2sum += m2;
@@ -148,12 +152,13 @@ TunnellingCheck::Sweep TunnellingCheck::sweep(const State& prev, const State& cu
       r[0] = ax, r[1] = ay, r[2] = dx, r[3] = dy;
       if (contained && leaves_allowance(ax, ay, bx, by, rx[i], ry[i], a2)) part.escaped.push_back(static_cast<int>(i));
     }
-    part.sweep = {finite != 0, wall, m2max, m2sum};
+    part.sweep = {finite != 0, outside == 0, wall, m2max, m2sum};
   });
   gather_escaped();
   Sweep all;  // in part order: the same sums for a given number of parts
   for (const Part& part : parts_) {
     all.finite = all.finite && part.sweep.finite;
+    all.contained = all.contained && part.sweep.contained;
     all.wall += part.sweep.wall;
     all.step2_max = std::max(all.step2_max, part.sweep.step2_max);
     all.step2_sum += part.sweep.step2_sum;

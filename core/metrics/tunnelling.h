@@ -43,6 +43,7 @@ bool passes_through(const State& prev, const State& cur, int i, int j, double rs
 // of `cur` is not finite.
 struct StepTunnelling {
   bool finite = true;
+  bool contained = true;  // no centre beyond the box by more than the largest diameter
   int wall = 0, pair = 0;
 };
 
@@ -95,6 +96,7 @@ class TunnellingCheck {
  private:
   struct Sweep {
     bool finite = true;
+    bool contained = true;
     int wall = 0;
     double step2_max = 0;  // the longest step of a ball, squared
     double step2_sum = 0;  // the sum of every ball's step squared
