@@ -157,11 +157,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       r.error = fmt::format("non-finite position or velocity at step {}", k);
       break;
     }
-    if (metrics.left_container()) {  // a ball out of the box: no figure of this run means anything from here
+    // A ball out of the box: no figure of the run means anything from here; like a non-finite
+    // state, the run ends with the state before.
+    if (metrics.left_container()) {
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
       r.error = fmt::format("a ball left the container (beyond a wall by more than its diameter) at step {}", k);
-      std::swap(state, next);
-      r.steps_done = k;
       break;
     }
     std::swap(state, next);

@@ -288,6 +288,9 @@ radius = 0.25
   EXPECT_NE(o.out.find("a ball left the container (beyond a wall by more than its diameter) at step 1"), std::string::npos)
       << o.out;
   EXPECT_NE(o.out.find("home               ok"), std::string::npos) << o.out;
+  EXPECT_EQ(o.status, 1);  // a row that did not run to a result
+  const Outcome ok = cli("run --quiet --no-reference --scene " + scene + " --engine home");
+  EXPECT_EQ(ok.status, 0) << ok.out;
 }
 
 TEST(Cli, FreshContradictsRenderOnly) {

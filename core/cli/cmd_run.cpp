@@ -112,6 +112,10 @@ void run(const RunArgs& a) {
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
+  // Exit 1 when a row did not run to a result: failed, diverged, crashed or timed out. A row the
+  // engine cannot run (unsupported) says so with its reason and is not a failure of the command.
+  if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status != "ok" && r.status != "unsupported"; }))
+    throw CheckFailed{1};
 }
 
 }  // namespace
