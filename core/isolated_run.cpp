@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "trajectory_csv.h"
 
 // The child talks to the parent through a pipe in lines of text:
@@ -32,6 +33,8 @@ namespace ballbench {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// Seconds an interrupted child has to finish its step and send its result before it is killed.
+constexpr int kInterruptGrace = 10;
 
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
@@ -77,6 +80,7 @@ void send(int fd, const std::string& text) {
 // What the parent saw of the child.
 struct ChildOutcome {
   bool timed_out = false;
+  bool interrupted = false;  // this process was asked to stop while the child ran
   bool reaped = false;
   int wait_status = 0;
   long last_done = 0;      // the last step the child reported done
@@ -109,9 +113,19 @@ class ChildWatcher {
   }
   bool past_deadline() const { return Clock::now() >= deadline_; }
 
+  // Asked to stop (interrupt.h): the child is asked too, once (it may have the terminal's signal
+  // already; it ends at a step boundary and sends its result), and given a few seconds for it.
+  void forward_interrupt() {
+    if (out_.interrupted || !interrupt_signal()) return;
+    out_.interrupted = true;
+    ::kill(pid_, SIGINT);
+    deadline_ = std::min(deadline_, Clock::now() + std::chrono::seconds(kInterruptGrace));
+  }
+
   void read_until_eof() {
     char buf[1 << 16];
     for (;;) {
+      forward_interrupt();
       if (past_deadline()) {
         out_.timed_out = true;
         return;
@@ -150,6 +164,7 @@ class ChildWatcher {
   // After end of file the child is exiting; give it until the deadline.
   void reap_before_deadline() {
     for (;;) {
+      forward_interrupt();
       const pid_t w = ::waitpid(pid_, &out_.wait_status, WNOHANG);
       if (w == pid_) {
         out_.reaped = true;
@@ -174,6 +189,12 @@ class ChildWatcher {
 
 Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
+  // Interrupted: the child's own result (status "interrupted", its metrics so far) if it sent one.
+  if (c.interrupted && !(c.kind == "result" && WIFEXITED(c.wait_status) && WEXITSTATUS(c.wait_status) == 0)) {
+    r.status = "interrupted";
+    r.error = fmt::format("interrupted by {}{}; the engine's process sent no result", interrupt_name(), after);
+    return r;
+  }
   if (c.timed_out) {
     r.status = "timed out";
     r.error = fmt::format("no result within the time limit of {} s{}: killed", timeout_s, after);
@@ -242,6 +263,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     return r;
   }
   if (pid == 0) {
+    install_interrupt_handlers(false);
     ::close(fds[0]);
     child_main(fds[1], scene, entry, options, isolation);
   }

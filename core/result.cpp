@@ -54,7 +54,7 @@ nlohmann::json to_json(const Result& r) {
   j["error"] = r.error;
   j["diverged"] = r.diverged;
   j["diverged_step"] = r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr);
-  j["wall_s"] = r.wall_s;
+  j["engine_s"] = r.engine_s;
   j["ns_per_step"] = r.ns_per_step;
   j["ns_per_ball_step"] = r.ns_per_ball_step;
   j["harness_s"] = r.harness_s;
@@ -117,7 +117,8 @@ Result result_from_json(const nlohmann::json& j) {
   r.error = j.value("error", "");
   r.diverged = j.at("diverged");
   r.diverged_step = j.at("diverged_step").is_null() ? -1 : j.at("diverged_step").get<long>();
-  r.wall_s = j.at("wall_s");
+  // Results files written before the field was named for what it holds call it "wall_s".
+  r.engine_s = j.contains("engine_s") ? j.at("engine_s").get<double>() : j.at("wall_s").get<double>();
   r.ns_per_step = j.at("ns_per_step");
   r.ns_per_ball_step = j.at("ns_per_ball_step");
   r.harness_s = j.value("harness_s", 0.0);

@@ -30,7 +30,7 @@ struct Result {
   std::string error;
   bool diverged = false;
   long diverged_step = -1;
-  double wall_s = 0;            // engine step time summed over the run (s)
+  double engine_s = 0;          // engine step time summed over the run (s); JSON "engine_s"
   double ns_per_step = 0;
   double ns_per_ball_step = 0;
   double harness_s = 0;         // reading states, metrics and trajectory output (s)

@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "metrics/speed_distribution.h"
 #include "trajectory_csv.h"
 
@@ -138,6 +139,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   const long report_every = std::max(1L, r.steps / 100);
   long sampled = 0;  // the last step the sampled metrics saw
   for (long k = 1; k <= r.steps; ++k) {
+    if (interrupt_signal()) {  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
+      r.status = "interrupted";
+      r.error = fmt::format("interrupted by {} after step {}", interrupt_name(), k - 1);
+      break;
+    }
     const auto t0 = Clock::now();
     try {
       engine->step(scene.dt);
@@ -217,7 +223,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   if (scene.n() <= kMaxFinalPositions)
     for (int b = 0; b < scene.n(); ++b) r.series.final_pos.push_back({state.pos(b, 0), state.pos(b, 1)});
   r.checksum_final = checksum_hex(final_sum), r.checksum_trajectory = checksum_hex(trajectory_sum);
-  r.wall_s = engine_s;
+  r.engine_s = engine_s;
   r.harness_s = std::max(0.0, seconds_since(harness_start) - engine_s);
   const long stepped = std::max(1L, r.steps_done);
   r.ns_per_step = engine_s * 1e9 / stepped;

@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
@@ -93,6 +94,7 @@ void check_outputs(const Scene& scene, const RunArgs& a) {
 }
 
 void run(const RunArgs& a) {
+  install_interrupt_handlers();
   Scene scene = load_scene(a.scene);
   const auto engines = parse_engine_list(a.engines);
   if (a.dt) scene.dt = *a.dt;
@@ -112,6 +114,11 @@ void run(const RunArgs& a) {
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
+  if (const int sig = interrupt_signal()) {
+    fmt::print(stderr, "ballbench: interrupted by {}: {} row(s) written{}, the run in progress marked interrupted\n",
+               interrupt_name(), results.size(), a.json.empty() ? "" : fmt::format(" to the table and {}", a.json));
+    throw CheckFailed{128 + sig};
+  }
   // Exit 1 when a row did not run to a result: failed, diverged, crashed or timed out. A row the
   // engine cannot run (unsupported) says so with its reason and is not a failure of the command.
   if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status != "ok" && r.status != "unsupported"; }))

@@ -10,6 +10,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "isolated_run.h"
 #include "machine_info.h"
 #include "progress.h"
@@ -107,13 +108,13 @@ void add_setting(nlohmann::json& overrides, const std::string& item) {
 }
 
 void print_table(const std::vector<Result>& results) {
-  fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>12}\n", "engine",
+  fmt::print("{:<18} {:<11} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>12}\n", "engine",
              "status", "n", "steps", "E drift", "P drift", "tun.wall", "tun.pair", "stk.wall", "stk.pair", "pen.max",
              "pos.err", "horizon", "ns/ball-step");
   for (const auto& r : results) {
     const auto& m = r.metrics;
     const auto& e = r.reference;
-    fmt::print("{:<18} {:<10} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>10} {:>9} {:>12.1f}\n",
+    fmt::print("{:<18} {:<11} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>10} {:>9} {:>12.1f}\n",
                run_label(r), r.status, r.n, r.steps_done, opt_drift(r), m.momentum.max_abs_drift, m.tunnelling_wall,
                m.tunnelling_pair, m.sticking_wall, m.sticking_pair, m.penetration_max,
                e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
@@ -161,6 +162,7 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
   std::vector<Result> results;
   for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
+      if (interrupt_signal()) break;  // asked to stop: the rows so far are the result
       RunOptions options = base;
       Progress progress(fmt::format("{} ({}) on {}", e->info.name, p, scene.name));
       if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };

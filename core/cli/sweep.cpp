@@ -104,7 +104,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       const Result t = run(s, *item.engine, options);
       if (t.status != "ok") break;
       p.ns_per_ball_step.push_back(t.ns_per_ball_step);
-      p.engine_s.push_back(t.wall_s);
+      p.engine_s.push_back(t.engine_s);
     }
     out.points.push_back(std::move(p));
     if (!o.quiet) progress.update(double(k + 1) / plan.size());

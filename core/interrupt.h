@@ -1,0 +1,21 @@
+#pragma once
+// SIGINT and SIGTERM as a request to stop, not a kill: a command that installs the handlers checks
+// interrupt_signal() between steps and between runs, ends what it is doing, writes what it has
+// computed (its rows so far, the interrupted one marked `interrupted`) and removes its temporary
+// files. Child processes forked for isolated runs inherit the handlers, so an engine's run ends at
+// a step boundary and still reports its metrics.
+namespace ballbench {
+
+// Installs the handlers (sigaction, no SA_RESTART: a blocking poll or wait returns with EINTR).
+// `second_kills`: a second signal ends the process at once (its default action), for a user who
+// means it; an isolated run's child sets it false, as it may get the terminal's signal and the
+// one its parent forwards.
+void install_interrupt_handlers(bool second_kills = true);
+
+// The signal that asked to stop (SIGINT or SIGTERM), or 0.
+int interrupt_signal();
+
+// "SIGINT" or "SIGTERM" for the signal that asked to stop.
+const char* interrupt_name();
+
+}  // namespace ballbench
