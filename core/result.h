@@ -56,7 +56,7 @@ struct Result {
   } series;
   MetricsConfig metrics_config;
   nlohmann::json settings = nlohmann::json::object();  // the engine's effective settings
-  // FNV-1a checksums (16 hex digits; state_checksum and chain_checksum in runner.h) of the last state
+  // XXH3 checksums (16 hex digits; state_checksum and chain_checksum in runner.h) of the last state
   // the metrics saw and of every such state, step 0 to steps_done in order: equal checksums mean
   // bit-identical runs. JSON: "checksum": {"final": ..., "trajectory": ...}.
   // Empty when no state was read (unsupported, failed to build, crashed, timed out).

@@ -33,14 +33,14 @@ struct RunOptions {
 // InputError for bad settings.
 Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options);
 
-// FNV-1a, 64-bit, over the bytes of the doubles x, y, vx, vy of every ball in scene order, as they
-// lie in memory (IEEE-754, little-endian on the machines we build for), continuing from `h`. The
-// time is left out: it follows from the step count. Two states hash alike only if bit-identical
-// (up to a 2^-64 chance).
-inline constexpr uint64_t kFnvBasis = 14695981039346656037ull;
-uint64_t state_checksum(const State& s, uint64_t h = kFnvBasis);
+// XXH3-64 (xxHash) over the bytes of the doubles of the state in scene order, as they lie in memory
+// (IEEE-754, little-endian on the machines we build for): the x column, the y column, then vx and
+// vy, seeded with `seed`. The time is left out: it follows from the step count. Two states hash
+// alike only if bit-identical (up to a 2^-64 chance), whatever precision the engine stepped in.
+inline constexpr uint64_t kChecksumSeed = 0;
+uint64_t state_checksum(const State& s, uint64_t seed = kChecksumSeed);
 
-// The trajectory checksum: FNV-1a over the 8 bytes of each state's checksum, in step order.
+// The trajectory checksum: each state's checksum hashed onto the trajectory's so far, in step order.
 uint64_t chain_checksum(uint64_t trajectory, uint64_t state);
 
 // 16 lower-case hex digits.

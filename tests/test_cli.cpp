@@ -325,6 +325,15 @@ TEST(Cli, AnInterruptKeepsTheRowsDoneAndLeavesNothingBehind) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(Cli, AnOversizedTrajectoryIsRefusedWithItsEstimate) {
+  // 9 runs x 3 000 001 states x 20 balls, ~59 GB at 110 bytes a row: refused under a 1 GB limit.
+  const std::string csv = (std::filesystem::temp_directory_path() / "ballbench_big.csv").string();
+  expect_one_line_error(cli("run --scene seed-box --engine all --profile all --steps 3000000 --trajectory " + csv +
+                            " --trajectory-limit-gb 1"),
+                        "above --trajectory-limit-gb 1");
+  EXPECT_FALSE(std::filesystem::exists(csv));
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

@@ -104,6 +104,25 @@ TEST(Checksum, SeesEveryBitOfEveryNumber) {
   EXPECT_EQ(checksum_hex(0x1234), "0000000000001234");
 }
 
+TEST(Checksum, TellsFloat32StatesApartInEveryBit) {
+  // A float engine's state read as doubles has 29 zero mantissa bits per value. Two such states
+  // one float ulp apart must differ in the low bits of their checksums too, not only the high ones
+  // (each bit of the checksum flips for about half of the single-value changes).
+  State s;
+  s.resize(50);
+  for (int i = 0; i < 50; ++i) s.pos(i, 0) = 0.1f * i, s.pos(i, 1) = -0.3f * i, s.vel(i, 0) = 1.5f, s.vel(i, 1) = 0.25f * i;
+  const uint64_t base = state_checksum(s);
+  uint64_t flipped = 0;  // bits of the checksum that some one-ulp change flipped
+  for (int i = 0; i < 50; ++i) {
+    State t = s;
+    t.pos(i, 0) = std::nextafter(static_cast<float>(t.pos(i, 0)), 1e9f);
+    const uint64_t h = state_checksum(t);
+    EXPECT_NE(h, base);
+    flipped |= h ^ base;
+  }
+  EXPECT_EQ(flipped & ((1ull << 29) - 1), (1ull << 29) - 1);  // every low bit moved for some change
+}
+
 TEST(Checksum, IsInTheResultJson) {
   const Result a = run(load_scene("seed-box"), "home", 10);
   const nlohmann::json j = to_json(a);

@@ -28,6 +28,7 @@ struct RunArgs {
   bool quiet = false;
   bool no_reference = false;
   int sample_every = 1;
+  double trajectory_limit_gb = 10;
   Isolation isolation;
 };
 
@@ -93,6 +94,21 @@ void check_outputs(const Scene& scene, const RunArgs& a) {
   }
 }
 
+// A trajectory holds one CSV row per ball per step per run: estimated before anything runs and
+// refused beyond --trajectory-limit-gb, with the estimate (one command once asked for ~0.7 TB).
+void check_trajectory_size(const Scene& scene, const std::vector<const EngineEntry*>& engines, const RunArgs& a) {
+  if (a.trajectory.empty()) return;
+  constexpr double kBytesPerRow = 110;  // measured: 500-ball pile, home-seed and home
+  size_t runs = 0;
+  for (const EngineEntry* e : engines) runs += profiles_for(*e, a.profile).size();
+  const double steps = static_cast<double>(a.steps ? *a.steps : scene.steps());
+  const double rows = (steps + 1) * scene.n() * static_cast<double>(runs), gb = rows * kBytesPerRow / 1e9;
+  if (gb > a.trajectory_limit_gb)
+    throw InputError(fmt::format("--trajectory {}: about {:.3g} GB ({:.3g} rows: {} runs x {} steps x {} balls), above "
+                                 "--trajectory-limit-gb {} (raise it, or write fewer steps)",
+                                 a.trajectory, gb, rows, runs, steps, scene.n(), a.trajectory_limit_gb));
+}
+
 void run(const RunArgs& a) {
   install_interrupt_handlers();
   Scene scene = load_scene(a.scene);
@@ -109,6 +125,7 @@ void run(const RunArgs& a) {
   for (const auto& s : a.sets) add_setting(options.overrides, s);
   check_settings(scene, options.overrides);
   check_outputs(scene, a);
+  check_trajectory_size(scene, engines, a);
   if (!a.no_reference) options.reference = reference_engine();
   options.metrics.sample_every = a.sample_every;
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
@@ -139,6 +156,9 @@ void add_run(CLI::App& app) {
       ->excludes(steps);
   cmd->add_option("--json", a->json, "write one JSON object per engine run (an array) to FILE");
   cmd->add_option("--trajectory", a->trajectory, "write every ball's state at every step as CSV to FILE");
+  cmd->add_option("--trajectory-limit-gb", a->trajectory_limit_gb,
+                  "refuse a --trajectory estimated larger than this many GB (default 10)")
+      ->check(kPositiveNumber);
   cmd->add_option("--profile", a->profile,
                   "settings profile (see `ballbench list`): a name, or all; engines without it run their default");
   cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable)");
