@@ -117,4 +117,27 @@ TEST(Regress, ABaselineThatIsNotOneIsOneLine) {
   EXPECT_NE(o.err.find("not a regress baseline"), std::string::npos) << o.err;
 }
 
+// A baseline the comparison would read wrongly is refused before anything runs: a metric the suite
+// does not compute (never compared), a run listed twice (compared once).
+TEST(Regress, ABaselineWithAnUncomputedMetricOrARunTwiceIsRefused) {
+  const auto dir = std::filesystem::temp_directory_path();
+  nlohmann::json unknown = fresh_baseline();
+  unknown["runs"][0]["metrics"]["energy.finale"] = 1.0;
+  const std::string p1 = (dir / "bb_baseline_unknown.json").string();
+  std::ofstream(p1) << unknown.dump();
+  const Outcome o1 = regress("--baseline " + p1);
+  EXPECT_EQ(o1.status, 2);
+  EXPECT_NE(o1.err.find("metric 'energy.finale' is not one the suite computes"), std::string::npos) << o1.err;
+  EXPECT_NE(o1.err.find("energy.final"), std::string::npos) << o1.err;  // the suggestion
+  EXPECT_EQ(o1.err.find("regress: ran"), std::string::npos) << "ran before refusing: " << o1.err;
+  nlohmann::json twice = fresh_baseline();
+  twice["runs"].push_back(twice["runs"][0]);
+  const std::string p2 = (dir / "bb_baseline_twice.json").string();
+  std::ofstream(p2) << twice.dump();
+  const Outcome o2 = regress("--baseline " + p2);
+  EXPECT_EQ(o2.status, 2);
+  EXPECT_NE(o2.err.find("is listed twice"), std::string::npos) << o2.err;
+  std::filesystem::remove(p1), std::filesystem::remove(p2);
+}
+
 }  // namespace

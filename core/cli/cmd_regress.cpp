@@ -162,6 +162,35 @@ void write_json_file(const std::string& path, const nlohmann::json& j) {
   std::filesystem::rename(tmp, path);
 }
 
+// A baseline names each (scene, engine) run once and only metrics the suite computes (a metric no
+// run computes would never be compared, and a run listed twice would be compared once): checked
+// before anything runs, each problem one line naming the file.
+void check_baseline(const nlohmann::json& baseline, const std::string& path) {
+  const nlohmann::json known = default_tolerances();
+  std::vector<std::string> names;
+  for (const auto& [k, v] : known.items()) names.push_back(k);
+  const auto check_metric = [&](const std::string& key, const std::string& where) {
+    if (!known.contains(key))
+      throw InputError(fmt::format("{}: {}: metric '{}' is not one the suite computes{} (known: {})", path, where, key,
+                                   did_you_mean(key, names), fmt::join(names, ", ")));
+  };
+  if (baseline.contains("tolerances")) {
+    if (!baseline["tolerances"].is_object()) throw InputError(fmt::format("{}: tolerances: expected an object", path));
+    for (const auto& [key, v] : baseline["tolerances"].items()) check_metric(key, "tolerances");
+  }
+  std::vector<std::string> seen;
+  for (const auto& run : baseline["runs"]) {
+    if (!run.is_object() || !run.contains("scene") || !run.contains("engine"))
+      throw InputError(fmt::format("{}: runs: every run needs a scene and an engine", path));
+    const std::string who = fmt::format("{} {}", json_text(run["scene"]), json_text(run["engine"]));
+    if (std::find(seen.begin(), seen.end(), who) != seen.end())
+      throw InputError(fmt::format("{}: runs: {} is listed twice", path, who));
+    seen.push_back(who);
+    if (run.contains("metrics") && run["metrics"].is_object())
+      for (const auto& [key, v] : run["metrics"].items()) check_metric(key, fmt::format("runs: {}", who));
+  }
+}
+
 struct RegressArgs {
   std::string baseline = std::string(BALLBENCH_REGRESS_DIR) + "/baseline.json";
   bool update = false;
@@ -184,6 +213,7 @@ void regress(const RegressArgs& a) {
     baseline = read_json_file(a.baseline);
     if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
       throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
+    check_baseline(baseline, a.baseline);
   }
 
   std::vector<nlohmann::json> runs;
