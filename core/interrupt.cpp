@@ -1,20 +1,36 @@
 #include "interrupt.h"
 
 #include <signal.h>
+#include <time.h>
 
 namespace ballbench {
 namespace {
 
 volatile sig_atomic_t g_signal = 0;
 volatile sig_atomic_t g_second_kills = 1;
+timespec g_first{};  // when the first signal came
 
-// A second signal means stop now: the default action (the process ends by that signal).
+// A second signal this soon after the first is the same request arriving twice (a signal sent to
+// the process and to its process group, as `timeout` and shells do), not a user insisting.
+constexpr double kSameRequestS = 0.5;
+
+double seconds_since(const timespec& t) {
+  timespec now{};
+  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return static_cast<double>(now.tv_sec - t.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec - t.tv_nsec);
+}
+
+// A second signal (a while after the first) means stop now: the default action, the process ends
+// by that signal.
 void on_signal(int sig) {
-  if (g_signal != 0 && g_second_kills) {
-    signal(sig, SIG_DFL);
-    raise(sig);
+  if (g_signal != 0) {
+    if (g_second_kills && seconds_since(g_first) > kSameRequestS) {
+      signal(sig, SIG_DFL);
+      raise(sig);
+    }
     return;
   }
+  clock_gettime(CLOCK_MONOTONIC, &g_first);
   g_signal = sig;
 }
 

@@ -7,8 +7,8 @@
 namespace ballbench {
 
 // Installs the handlers (sigaction, no SA_RESTART: a blocking poll or wait returns with EINTR).
-// `second_kills`: a second signal ends the process at once (its default action), for a user who
-// means it; an isolated run's child sets it false, as it may get the terminal's signal and the
+// `second_kills`: a second signal, more than half a second after the first, ends the process at
+// once (its default action), for a user who means it; an isolated run's child sets it false, as it may get the terminal's signal and the
 // one its parent forwards.
 void install_interrupt_handlers(bool second_kills = true);
 

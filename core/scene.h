@@ -1,5 +1,6 @@
 #pragma once
 // A validated, immutable description of one ball scene: what every engine is asked to simulate.
+#include <map>
 #include <string>
 
 #include <Eigen/Core>
@@ -42,6 +43,7 @@ struct Scene {
   Eigen::VectorXd mass;        // (n, kg)
   State initial;               // t = 0
   nlohmann::json engine_settings = nlohmann::json::object();  // [settings.<engine>] tables
+  std::map<std::string, int> setting_lines;  // "ENGINE.KEY" -> its line in the scene file, for messages
 
   int n() const { return static_cast<int>(radius.size()); }
   long steps() const;          // duration / dt, rounded to the nearest whole step

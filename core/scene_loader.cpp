@@ -437,6 +437,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source) 
         else if (v.is_floating_point()) obj[key] = v.as_floating_point()->get();
         else if (v.is_string()) obj[key] = v.as_string()->get();
         else top.fail(&v, "settings." + std::string(engine.str()) + "." + key, "expected a number, string or boolean");
+        s.setting_lines[std::string(engine.str()) + "." + key] = static_cast<int>(v.source().begin.line);
       }
       s.engine_settings[std::string(engine.str())] = obj;
     }

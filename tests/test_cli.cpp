@@ -218,8 +218,11 @@ radius = 0.25
 TEST(Cli, SettingsOfEnginesNotRunAreCheckedToo) {
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set box2d.bogus=1"), "settings.box2d.bogus");
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set xyz.a=1"), "--set xyz.KEY: unknown engine");
+  // A misspelling in the scene file is named by FILE:LINE (the schema example has 24 lines).
   const std::string scene = write_scene("ballbench_bad_setting.toml", std::string(kSchemaExample) + "[settings.ode]\nbogus = 1\n");
-  expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), "settings.ode.bogus");
+  expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), scene + ":26: settings.ode.bogus");
+  const std::string value = write_scene("ballbench_bad_value.toml", std::string(kSchemaExample) + "[settings.home]\nsubsteps = 0\n");
+  expect_one_line_error(cli("run --scene " + value + " --engine home --steps 2"), value + ":26: settings.home.substeps");
 }
 
 // Outputs are checked before the first run, and a FIFO or a device is written into, not replaced.

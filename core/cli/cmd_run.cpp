@@ -54,6 +54,25 @@ void check_settings(const Scene& scene, const nlohmann::json& overrides) {
   const int keep = std::min(scene.n(), 1);
   probe.radius.conservativeResize(keep), probe.mass.conservativeResize(keep);
   probe.initial.pos.conservativeResize(keep, 2), probe.initial.vel.conservativeResize(keep, 2);
+  // The scene's own tables first, so that a problem there is named by its FILE:LINE. Every
+  // settings error reads "settings.ENGINE.KEY: why" (SettingsReader and the engines' own checks).
+  for (const EngineEntry* e : named) {
+    const std::string& name = e->info.name;
+    if (!scene.engine_settings.contains(name)) continue;
+    try {
+      e->create(probe, e->info.profiles.front(), merged_settings(scene, name, nlohmann::json::object()));
+    } catch (const InputError& err) {
+      const std::string text = err.what(), prefix = "settings." + name + ".";
+      const size_t colon = text.find(':');
+      if (text.rfind(prefix, 0) == 0 && colon != std::string::npos) {
+        const auto line = scene.setting_lines.find(name + "." + text.substr(prefix.size(), colon - prefix.size()));
+        if (line != scene.setting_lines.end()) throw InputError(fmt::format("{}:{}: {}", scene.source, line->second, text));
+      }
+      throw InputError(fmt::format("{}: {}", scene.source, text));
+    } catch (const std::exception&) {
+      // Not a settings problem: the run itself reports it.
+    }
+  }
   for (const EngineEntry* e : named) {
     try {
       e->create(probe, e->info.profiles.front(), merged_settings(scene, e->info.name, overrides.value(e->info.name, nlohmann::json::object())));
