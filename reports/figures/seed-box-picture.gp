@@ -7,7 +7,7 @@ unset object
 set object 1 rect from -5,-5 to 5,5 fs empty border rgb 'red' lw 2
 set xrange [-6:6]
 set yrange [-6:6]
-set title 'home-seed at t = 30 s'
+set title 'home-seed at t = 1.1 s'
 plot 'seed-box-picture-home-seed-balls.dat' using 1:2:3 with circles fs transparent solid 0.5 lc rgb '#3060c0', 'seed-box-picture-home-seed-tracks.dat' index 0:3 using 1:2 with lines lw 1, 'seed-box-picture-home-seed-com.dat' using 1:2 with lines lw 2 lc rgb '#ff80c0'
 unset object
 set object 1 rect from -5,-5 to 5,5 fs empty border rgb 'red' lw 2
