@@ -54,33 +54,32 @@ void check_settings(const Scene& scene, const nlohmann::json& overrides) {
   const int keep = std::min(scene.n(), 1);
   probe.radius.conservativeResize(keep), probe.mass.conservativeResize(keep);
   probe.initial.pos.conservativeResize(keep, 2), probe.initial.vel.conservativeResize(keep, 2);
-  // The scene's own tables first, so that a problem there is named by its FILE:LINE. Every
-  // settings error reads "settings.ENGINE.KEY: why" (SettingsReader and the engines' own checks).
+  // Builds the engine with these settings; a settings error goes to `named_by` (which throws),
+  // anything else is not a settings problem and is left for the run itself to report.
+  const auto build = [&](const EngineEntry& e, const nlohmann::json& settings, const auto& named_by) {
+    try {
+      e.create(probe, e.info.profiles.front(), settings);
+    } catch (const InputError& err) {
+      named_by(std::string(err.what()));
+    } catch (const std::exception&) {
+    }
+  };
   for (const EngineEntry* e : named) {
     const std::string& name = e->info.name;
-    if (!scene.engine_settings.contains(name)) continue;
-    try {
-      e->create(probe, e->info.profiles.front(), merged_settings(scene, name, nlohmann::json::object()));
-    } catch (const InputError& err) {
-      const std::string text = err.what(), prefix = "settings." + name + ".";
-      const size_t colon = text.find(':');
-      if (text.rfind(prefix, 0) == 0 && colon != std::string::npos) {
-        const auto line = scene.setting_lines.find(name + "." + text.substr(prefix.size(), colon - prefix.size()));
-        if (line != scene.setting_lines.end()) throw InputError(fmt::format("{}:{}: {}", scene.source, line->second, text));
-      }
-      throw InputError(fmt::format("{}: {}", scene.source, text));
-    } catch (const std::exception&) {
-      // Not a settings problem: the run itself reports it.
-    }
-  }
-  for (const EngineEntry* e : named) {
-    try {
-      e->create(probe, e->info.profiles.front(), merged_settings(scene, e->info.name, overrides.value(e->info.name, nlohmann::json::object())));
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception&) {
-      // Not a settings problem: the run itself reports it.
-    }
+    // The scene's own table first, so that a problem there is named by its FILE:LINE. Every
+    // settings error reads "settings.ENGINE.KEY: why" (SettingsReader and the engines' own checks).
+    if (scene.engine_settings.contains(name))
+      build(*e, merged_settings(scene, name, nlohmann::json::object()), [&](const std::string& text) {
+        const std::string prefix = "settings." + name + ".";
+        const size_t colon = text.find(':');
+        if (text.rfind(prefix, 0) == 0 && colon != std::string::npos) {
+          const auto line = scene.setting_lines.find(name + "." + text.substr(prefix.size(), colon - prefix.size()));
+          if (line != scene.setting_lines.end()) throw InputError(fmt::format("{}:{}: {}", scene.source, line->second, text));
+        }
+        throw InputError(fmt::format("{}: {}", scene.source, text));
+      });
+    build(*e, merged_settings(scene, name, overrides.value(name, nlohmann::json::object())),
+          [](const std::string& text) { throw InputError(text); });
   }
 }
 
@@ -114,7 +113,7 @@ void check_outputs(const Scene& scene, const RunArgs& a) {
 }
 
 // A trajectory holds one CSV row per ball per step per run: estimated before anything runs and
-// refused beyond --trajectory-limit-gb, with the estimate (one command once asked for ~0.7 TB).
+// refused beyond --trajectory-limit-gb, with the estimate, instead of filling the disk.
 void check_trajectory_size(const Scene& scene, const std::vector<const EngineEntry*>& engines, const RunArgs& a) {
   if (a.trajectory.empty()) return;
   constexpr double kBytesPerRow = 110;  // measured: 500-ball pile, home-seed and home
