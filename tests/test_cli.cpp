@@ -337,6 +337,15 @@ TEST(Cli, AnOversizedTrajectoryIsRefusedWithItsEstimate) {
   EXPECT_FALSE(std::filesystem::exists(csv));
 }
 
+TEST(Cli, AReportFolderThatCannotBeWrittenIsOneLineBeforeAnyRun) {
+  // A regular file where the folder should be (root writes into read-only folders, so this is the
+  // case a test can make fail for every user).
+  const std::string file = write_scene("ballbench_not_a_folder", "x");
+  const Outcome o = cli("report --out " + file + "/out --no-bench");
+  expect_one_line_error(o, "cannot write the report's files there");
+  EXPECT_EQ(o.err.find("ran "), std::string::npos) << o.err;
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

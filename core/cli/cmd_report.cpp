@@ -161,6 +161,10 @@ void report(const ReportArgs& a) {
   if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
     throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
   const std::string results_dir = a.out + "/results";
+  // Every place the report writes is checked before anything runs (a report takes minutes): an
+  // --out that cannot hold them is one line, not an error from deep inside after the runs.
+  for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
+    check_writable(p, "the report's files", true);
   const Suite suite = a.full ? full_suite() : quick_suite();
   if (a.fresh) {
     // What an earlier report left (a --full one has more parts) must not reach this one.
