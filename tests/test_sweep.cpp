@@ -123,6 +123,16 @@ TEST_F(SweepCli, BadInputIsOneLineAndStatus2) {
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << args << ": " << o.err;
     EXPECT_FALSE(fs::exists(dir_ / "x.json")) << args;
   }
+  // Outputs are checked before the sweep runs.
+  const std::string same = (dir_ / "same.out").string();
+  for (const std::string& args : {std::string("--json /proc/no/such/s.json"), "--json " + same + " --csv " + same}) {
+    const auto o = run_cli("sweep --scene seed-box --engine home --horizon 0.2 --quiet " + args);
+    EXPECT_EQ(o.status, 2) << args << ": " << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << args << ": " << o.err;
+  }
+  const auto stress = run_cli("stress --scene seed-box --engine home --levels 1 --steps 10 --json /proc/no/such/f.json");
+  EXPECT_EQ(stress.status, 2) << stress.err;
+  EXPECT_NE(stress.err.find("cannot write the frontiers there"), std::string::npos) << stress.err;
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands.h"
+#include "data_file.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "stability_frontier.h"
@@ -26,6 +27,7 @@ void stress(StressArgs& a) {
   if (!a.knobs.empty()) a.options.knobs = a.knobs;
   a.options.reference = reference_engine();
   a.options.isolation.enabled = !a.no_isolation;
+  if (!a.json.empty()) check_writable(a.json, "the frontiers", true);  // before the runs, which take minutes
   const FrontierResult f = run_frontier(base, engines, a.options, run_context());
   print_frontier(f);
   if (!a.json.empty()) write_frontier_file(a.json, f);

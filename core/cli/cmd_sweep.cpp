@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "data_file.h"
 #include "input_error.h"
 #include "registry.h"
 #include "scene_loader.h"
@@ -33,6 +34,10 @@ void sweep(SweepArgs& a) {
   if (a.json.empty()) a.json = fmt::format("sweep-{}.json", scene.name);
   if (a.csv.empty()) a.csv = a.json.size() > 5 && a.json.ends_with(".json") ? a.json.substr(0, a.json.size() - 5) + ".csv"
                                                                             : a.json + ".csv";
+  // Checked before the sweep (it takes minutes), as `run` checks its outputs.
+  if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
+  check_writable(a.json, "the sweep's results", true);
+  check_writable(a.csv, "the sweep's CSV", true);
   const SweepResult s = run_sweep(scene, engines, a.options, run_context());
   write_sweep_files(s, a.json, a.csv);
   print_pareto(s);
