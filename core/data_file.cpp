@@ -29,6 +29,8 @@ void fail_if_folder(const std::string& path, const std::string& what) {
 
 void write_file_atomically(const std::string& path, const std::string& text, const std::string& what) {
   fail_if_folder(path, what);
+  // A FIFO or a device is written directly, with no temporary file beside it (a user may not
+  // write into /dev), rather than through move_file_into_place's copy.
   const bool in_place = special_target(path);
   const std::filesystem::path target(path);
   std::error_code ec;

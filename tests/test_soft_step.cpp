@@ -103,7 +103,8 @@ seed = 11
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
   EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
-  EXPECT_LT(*r.jitter, 0.02);
+  ASSERT_TRUE(r.jitter.has_value());
+  EXPECT_LT(*r.jitter, 0.02);  // the pile scene's bound: this pile is shallower, so it rests as well or better
 }
 
 TEST(HomeSoft, SeedBowlEndsNearExactsEnergy) {
