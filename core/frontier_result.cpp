@@ -20,7 +20,7 @@ nlohmann::json to_json(const FrontierResult& f) {
                     {"levels_passed", r.levels_passed},
                     {"failed_next", r.failed_next}});
   return {{"scene", f.scene}, {"n", f.n}, {"steps", f.steps}, {"levels", f.levels},
-          {"energy_tolerance", f.energy_tolerance}, {"context", f.context}, {"rows", rows}};
+          {"energy_tolerance", f.energy_tolerance}, {"context", f.context}, {"interrupted", f.interrupted}, {"rows", rows}};
 }
 
 FrontierResult frontier_from_json(const nlohmann::json& j) {
@@ -31,6 +31,7 @@ FrontierResult frontier_from_json(const nlohmann::json& j) {
   f.levels = j.at("levels").get<int>();
   f.energy_tolerance = j.at("energy_tolerance").get<double>();
   f.context = j.value("context", nlohmann::json::object());
+  f.interrupted = j.value("interrupted", "");
   for (const auto& q : j.at("rows"))
     f.rows.push_back({q.at("engine").get<std::string>(), q.at("profile").get<std::string>(),
                       q.at("knob").get<std::string>(), q.at("base").get<double>(), q.at("factor").get<double>(),

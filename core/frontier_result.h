@@ -24,6 +24,7 @@ struct FrontierResult {
   int levels = 0;           // doublings tried per knob
   double energy_tolerance = 0;
   nlohmann::json context;   // machine, compiler, command, date
+  std::string interrupted;  // "SIGINT"/"SIGTERM" if stress was stopped: its rows are those run so far
   std::vector<FrontierRow> rows;
 };
 

@@ -4,6 +4,8 @@
 // computed (its rows so far, the interrupted one marked `interrupted`) and removes its temporary
 // files. Child processes forked for isolated runs inherit the handlers, so an engine's run ends at
 // a step boundary and still reports its metrics.
+#include <string>
+
 namespace ballbench {
 
 // Installs the handlers (sigaction, no SA_RESTART: a blocking poll or wait returns with EINTR).
@@ -17,5 +19,11 @@ int interrupt_signal();
 
 // "SIGINT" or "SIGTERM" for the signal that asked to stop.
 const char* interrupt_name();
+
+// Thrown by work that has nothing to keep when asked to stop (placing a scene's balls before any
+// run): main says so in one line and exits with 128 + the signal.
+struct Interrupted {
+  std::string during;  // "placing 50000000 balls", for the message
+};
 
 }  // namespace ballbench

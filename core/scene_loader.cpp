@@ -16,6 +16,8 @@
 #include <toml++/toml.h>
 
 #include "input_error.h"
+#include "interrupt.h"
+#include "progress.h"
 #include "overlap.h"
 
 namespace ballbench {
@@ -284,7 +286,12 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   for (const auto& p : balls.pos) placed.insert(p);
   constexpr int kAttempts = 1000;  // per ball; a region this full is effectively packed
   const size_t first = balls.pos.size();
+  Progress progress(fmt::format("placing {} balls ({} in {})", count, prefix, source));
   for (int64_t k = 0; k < count; ++k) {
+    if ((k & 0xffff) == 0) {
+      if (interrupt_signal()) throw Interrupted{fmt::format("placing {} balls", count)};
+      progress.update(double(k) / count);
+    }
     Eigen::Vector2d p;
     int attempt = 0;
     do {

@@ -66,7 +66,7 @@ nlohmann::json to_json(const SweepResult& s) {
                       {"sticking", p.sticking},
                       {"pareto", p.pareto}});
   return {{"scene", s.scene},   {"n", s.n},           {"horizon", s.horizon}, {"reference", s.reference},
-          {"repeats", s.repeats}, {"context", s.context}, {"points", points}};
+          {"repeats", s.repeats}, {"context", s.context}, {"interrupted", s.interrupted}, {"points", points}};
 }
 
 SweepResult sweep_from_json(const nlohmann::json& j) {
@@ -77,6 +77,7 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
   s.reference = j.at("reference").get<std::string>();
   s.repeats = j.at("repeats").get<int>();
   s.context = j.value("context", nlohmann::json::object());
+  s.interrupted = j.value("interrupted", "");
   for (const auto& q : j.at("points")) {
     SweepPoint p;
     p.engine = q.at("engine").get<std::string>();

@@ -37,6 +37,7 @@ struct SweepResult {
   std::string reference;     // engine the error is measured against
   int repeats = 0;           // timing runs per point
   nlohmann::json context;    // machine, compiler, command, date
+  std::string interrupted;   // "SIGINT"/"SIGTERM" if the sweep was stopped: its points are those run so far
   std::vector<SweepPoint> points;
 };
 

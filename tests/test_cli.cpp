@@ -328,6 +328,44 @@ TEST(Cli, AnInterruptKeepsTheRowsDoneAndLeavesNothingBehind) {
   std::filesystem::remove_all(dir);
 }
 
+// The same for the commands that make many runs: sweep, stress and report write what they finished
+// and the run in progress, marked, say so in one line, exit 128 + the signal, and a report does not
+// render REPORT.md from a part that was cut short.
+TEST(Cli, SweepStressAndReportKeepWhatTheyFinishedWhenInterrupted) {
+  const auto dir = std::filesystem::temp_directory_path() / ("ballbench_interrupt_many." + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string d = dir.string();
+  struct Case {
+    std::string args, written;
+  };
+  // home's event path on the pile takes minutes a run, so the signal lands in a run.
+  const std::vector<Case> cases = {
+      {"sweep --quiet --scene pile --engine home --no-knobs --horizon 4 --repeats 1 --json " + d + "/s.json", d + "/s.json"},
+      {"stress --quiet --scene pile --engine home --knobs dt --json " + d + "/f.json", d + "/f.json"},
+      {"report --no-bench --out " + d + "/report", d + "/report/results"},
+  };
+  for (const Case& c : cases) {
+    const std::string err = d + "/err";
+    const std::string cmd = std::string("timeout --preserve-status -s INT 6 ") + BALLBENCH_CLI + " " + c.args +
+                            " >/dev/null 2>" + err;
+    const int rc = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(rc)) << c.args;
+    EXPECT_EQ(WEXITSTATUS(rc), 130) << c.args << ": " << slurp(err);
+    const std::string e = slurp(err);
+    EXPECT_NE(e.find("ballbench: interrupted by SIGINT: "), std::string::npos) << c.args << ": " << e;
+    std::string written;
+    if (std::filesystem::is_directory(c.written)) {
+      for (const auto& f : std::filesystem::directory_iterator(c.written)) written += slurp(f.path().string());
+      EXPECT_FALSE(std::filesystem::exists(d + "/report/REPORT.md"));
+    } else {
+      written = slurp(c.written);
+    }
+    EXPECT_NE(written.find("interrupted"), std::string::npos) << c.args << ": " << written.substr(0, 300);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, AnOversizedTrajectoryIsRefusedWithItsEstimate) {
   // 9 runs x 3 000 001 states x 20 balls, ~59 GB at 110 bytes a row: refused under a 1 GB limit.
   const std::string csv = (std::filesystem::temp_directory_path() / "ballbench_big.csv").string();

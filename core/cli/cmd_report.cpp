@@ -1,9 +1,11 @@
 // `ballbench report`: run the standard comparison (scene tables, work-precision sweeps, stability
 // frontiers, the step and harness benchmarks), write the results and render REPORT.md with its
 // figures.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -18,6 +20,7 @@
 #include "figures.h"
 #include "bench_results.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "registry.h"
 #include "report_writer.h"
 #include "run_engines.h"
@@ -101,6 +104,7 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
   for (const auto* e : engines)
     for (const auto& p : profiles_for(*e, "all")) want.push_back(e->info.name + "/" + p);
   for (const auto& r : found) {
+    if (r.status == "interrupted") return false;  // a report stopped in this part
     if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n()) return false;
     have.push_back(r.engine + "/" + r.profile);
   }
@@ -108,6 +112,16 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
   return want == have;
 }
 
+// A sweep or frontier file left by an earlier report that reads back and ran to its end.
+template <class Read>
+bool uninterrupted(const std::string& path, Read read) {
+  if (!fs::exists(path)) return false;
+  try {
+    return read(path).interrupted.empty();
+  } catch (const InputError&) {
+    return false;
+  }
+}
 
 // A benchmark binary built beside this executable (build/<preset>/bench/ next to core/cli/).
 std::string default_bench_binary(const std::string& name) {
@@ -139,6 +153,14 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
         fmt::format("'{}' --benchmark_filter='{}' {} --benchmark_out='{}' --benchmark_out_format=json 1>&2", bin, filter,
                     min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", tmp);
     const int rc = std::system(cmd.c_str());
+    // std::system ignores SIGINT while it waits; a benchmark ended by the terminal's SIGINT (or a
+    // SIGTERM) is this report's interrupt too, raised here so that interrupt.h sees it.
+    const int sig = WIFSIGNALED(rc) ? WTERMSIG(rc) : WIFEXITED(rc) && WEXITSTATUS(rc) > 128 ? WEXITSTATUS(rc) - 128 : 0;
+    if (sig == SIGINT || sig == SIGTERM || interrupt_signal()) {
+      fs::remove(tmp);
+      if (!interrupt_signal()) std::raise(sig);
+      return;
+    }
     std::string why = rc != 0 ? fmt::format("it failed (status {})", rc) : "";
     if (why.empty()) try {
         if (!found(read_bench_file(tmp))) why = "no benchmark matched " + filter;
@@ -173,6 +195,14 @@ void report(const ReportArgs& a) {
       for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file()) fs::remove(e.path(), ec);
   }
+  install_interrupt_handlers();
+  // Asked to stop: the part in progress is written (marked) and every finished part kept; a report
+  // run again resumes from them. REPORT.md is only rendered from a report that ran to its end.
+  auto stop_if_interrupted = [&] {
+    exit_if_interrupted(fmt::format("the parts finished are in {} (a report run again resumes from them); {}/REPORT.md "
+                                    "not rewritten",
+                                    results_dir, a.out));
+  };
   if (!a.render_only) {
     fs::create_directories(results_dir);
     const auto engines = parse_engine_list("all");
@@ -191,22 +221,24 @@ void report(const ReportArgs& a) {
       RunOptions options;
       options.reference = reference_engine();  // error against `exact` in every row
       write_results_file(path, run_all(scene, engines, "all", options, false, isolation));
+      stop_if_interrupted();
       fmt::print(stderr, "ran {}\n", name);
     }
     for (const std::string& name : suite.sweep_scenes) {
       const std::string path = fmt::format("{}/sweep-{}.json", results_dir, name);
-      if (reuse(path, fs::exists(path))) continue;
+      if (reuse(path, uninterrupted(path, read_sweep_file))) continue;
       SweepOptions o;
       o.repeats = 5;
       o.reference = reference_engine();
       o.isolation = isolation;
       write_sweep_files(run_sweep(load_scene(name), engines, o, run_context()), path,
                         fmt::format("{}/sweep-{}.csv", results_dir, name));
+      stop_if_interrupted();
       fmt::print(stderr, "swept {}\n", name);
     }
     for (const std::string& name : suite.stress_scenes) {
       const std::string path = fmt::format("{}/stress-{}.json", results_dir, name);
-      if (reuse(path, fs::exists(path))) continue;
+      if (reuse(path, uninterrupted(path, read_frontier_file))) continue;
       const Scene scene = load_scene(name);
       StressOptions o;
       o.profile = "all";
@@ -215,6 +247,7 @@ void report(const ReportArgs& a) {
       o.isolation = isolation;
       if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
       write_frontier_file(path, run_frontier(scene, engines, o, run_context()));
+      stop_if_interrupted();
       fmt::print(stderr, "stressed {}\n", name);
     }
     const std::string bench_path = results_dir + "/bench.json", harness_path = results_dir + "/harness.json";
@@ -225,11 +258,13 @@ void report(const ReportArgs& a) {
       if (!reuse(bench_path, fs::exists(bench_path)))
         run_bench(bin, suite.bench_filters, suite.bench_min_time, bench_path, "scaling",
                   [](const BenchResults& b) { return !b.rows.empty(); });
+      stop_if_interrupted();
       // The harness benchmark beside the step benchmark.
       if (!reuse(harness_path, fs::exists(harness_path)))
         run_bench((fs::path(bin).parent_path() / "ballbench_harness_benchmark").string(), {suite.harness_filter},
                   std::nullopt, harness_path, "harness overhead",
                   [](const BenchResults& b) { return !b.harness.empty(); });
+      stop_if_interrupted();
     }
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";

@@ -12,6 +12,7 @@
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
+#include "progress.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
@@ -129,6 +130,7 @@ void check_trajectory_size(const Scene& scene, const std::vector<const EngineEnt
 
 void run(const RunArgs& a) {
   install_interrupt_handlers();
+  Progress::quiet = a.quiet;
   Scene scene = load_scene(a.scene);
   const auto engines = parse_engine_list(a.engines);
   if (a.dt) scene.dt = *a.dt;
@@ -149,11 +151,8 @@ void run(const RunArgs& a) {
   const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
-  if (const int sig = interrupt_signal()) {
-    fmt::print(stderr, "ballbench: interrupted by {}: {} row(s) written{}, the run in progress marked interrupted\n",
-               interrupt_name(), results.size(), a.json.empty() ? "" : fmt::format(" to the table and {}", a.json));
-    throw CheckFailed{128 + sig};
-  }
+  exit_if_interrupted(fmt::format("{} row(s) written{}, the run in progress marked interrupted", results.size(),
+                                  a.json.empty() ? "" : fmt::format(" to the table and {}", a.json)));
   // Exit 1 when a row did not run to a result: failed, diverged, crashed or timed out. A row the
   // engine cannot run (unsupported) says so with its reason and is not a failure of the command.
   if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status != "ok" && r.status != "unsupported"; }))

@@ -3,8 +3,12 @@
 // value that still passed, and why the next one failed.
 #include <memory>
 
+#include <fmt/format.h>
+
 #include "commands.h"
 #include "data_file.h"
+#include "interrupt.h"
+#include "progress.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "stability_frontier.h"
@@ -21,6 +25,7 @@ struct StressArgs {
 };
 
 void stress(StressArgs& a) {
+  Progress::quiet = a.options.quiet;
   const Scene base = load_scene(a.scene);
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
@@ -28,9 +33,12 @@ void stress(StressArgs& a) {
   a.options.reference = reference_engine();
   a.options.isolation.enabled = !a.no_isolation;
   if (!a.json.empty()) check_writable(a.json, "the frontiers", true);  // before the runs, which take minutes
+  install_interrupt_handlers();
   const FrontierResult f = run_frontier(base, engines, a.options, run_context());
   print_frontier(f);
   if (!a.json.empty()) write_frontier_file(a.json, f);
+  exit_if_interrupted(fmt::format("{} frontier(s) printed{}, the one in progress failed as interrupted", f.rows.size(),
+                                  a.json.empty() ? "" : " and written to " + a.json));
 }
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
+#include "progress.h"
 #include "registry.h"
 #include "scene_loader.h"
 #include "sweep.h"
@@ -25,6 +27,7 @@ struct SweepArgs {
 };
 
 void sweep(SweepArgs& a) {
+  Progress::quiet = a.options.quiet;
   const Scene scene = load_scene(a.scene);
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
@@ -38,10 +41,13 @@ void sweep(SweepArgs& a) {
   if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
   check_writable(a.json, "the sweep's results", true);
   check_writable(a.csv, "the sweep's CSV", true);
+  install_interrupt_handlers();
   const SweepResult s = run_sweep(scene, engines, a.options, run_context());
   write_sweep_files(s, a.json, a.csv);
   print_pareto(s);
   fmt::print("wrote {} and {}\n", a.json, a.csv);
+  exit_if_interrupted(fmt::format("{} point(s) written to {} and {}, the point in progress marked interrupted",
+                                  s.points.size(), a.json, a.csv));
 }
 
 }  // namespace

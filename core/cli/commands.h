@@ -2,6 +2,8 @@
 // The subcommands of `ballbench`, one file each (cmd_*.cpp). Each adds itself to the app with a
 // callback that runs when it is chosen; errors are thrown (InputError for the user's) and turned
 // into one line by main.cpp.
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace ballbench::cli {
@@ -18,5 +20,10 @@ void add_sweep(CLI::App& app);
 struct CheckFailed {
   int status = 1;
 };
+
+// After a command has written what it computed: if SIGINT or SIGTERM asked it to stop
+// (interrupt.h), says so in one line with `kept` (what was written, and where) and ends the
+// command with 128 + the signal's number, as a shell reports a process ended by it.
+void exit_if_interrupted(const std::string& kept);
 
 }  // namespace ballbench::cli

@@ -4,10 +4,23 @@
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
+#include <fmt/format.h>
 
 #include "commands.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "run_engines.h"
+
+namespace ballbench::cli {
+
+void exit_if_interrupted(const std::string& kept) {
+  const int sig = interrupt_signal();
+  if (!sig) return;
+  fmt::print(stderr, "ballbench: interrupted by {}: {}\n", interrupt_name(), kept);
+  throw CheckFailed{128 + sig};
+}
+
+}  // namespace ballbench::cli
 
 int main(int argc, char** argv) {
   CLI::App app{"ballbench: compare 2D ball physics engines on identical scenes"};
@@ -30,6 +43,10 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const ballbench::cli::CheckFailed& e) {
     return e.status;
+  } catch (const ballbench::Interrupted& e) {
+    std::fprintf(stderr, "ballbench: interrupted by %s while %s: nothing was run\n", ballbench::interrupt_name(),
+                 e.during.c_str());
+    return 128 + ballbench::interrupt_signal();
   } catch (const ballbench::InputError& e) {
     std::fprintf(stderr, "ballbench: error: %s\n", e.what());
     return 2;

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "isolated_run.h"
 #include "progress.h"
 
@@ -87,6 +88,10 @@ FrontierResult run_frontier(const Scene& base, const std::vector<const EngineEnt
           row.factor = factor, row.levels_passed = level + 1;
         }
         out.rows.push_back(std::move(row));
+        if (interrupt_signal()) {  // the frontier in progress is kept, its last run failed as interrupted
+          out.interrupted = interrupt_name();
+          return out;
+        }
         if (!o.quiet) progress.update(double(++done) / total);
       }
   return out;

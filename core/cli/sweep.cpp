@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "isolated_run.h"
 #include "json_value.h"
 #include "progress.h"
@@ -107,6 +108,10 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       p.engine_s.push_back(t.engine_s);
     }
     out.points.push_back(std::move(p));
+    if (interrupt_signal()) {  // the point in progress is kept, marked by its run's status
+      out.interrupted = interrupt_name();
+      break;
+    }
     if (!o.quiet) progress.update(double(k + 1) / plan.size());
   }
   mark_pareto(out.points);

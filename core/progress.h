@@ -1,6 +1,7 @@
 #pragma once
-// Progress on stderr for long runs: a self-updating line on a terminal, plain lines otherwise,
-// with an estimate of the time left. Silent for runs that finish within a second.
+// Progress on stderr for long work (runs, placing a large scene's balls): a self-updating line on a
+// terminal, plain lines otherwise, with an estimate of the time left. Silent for work that
+// finishes within a second, and everywhere once a command's --quiet has set `quiet`.
 #include <chrono>
 #include <string>
 
@@ -11,6 +12,8 @@ class Progress {
   explicit Progress(std::string label);
   ~Progress();
   void update(double fraction);
+
+  static inline bool quiet = false;
 
  private:
   std::string label_;

@@ -17,7 +17,7 @@ Progress::~Progress() {
 
 void Progress::update(double fraction) {
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  if (elapsed < 1.0 || fraction <= 0) return;
+  if (quiet || elapsed < 1.0 || fraction <= 0) return;
   const double left = elapsed * (1 - fraction) / fraction;
   if (tty_) {
     const int width = 30, filled = static_cast<int>(fraction * width);
