@@ -81,6 +81,8 @@ void check_writable(const std::string& path, const std::string& what, bool creat
 }
 
 nlohmann::json parse_json_file(const std::string& path, const std::string& what) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: cannot read {}: it is a folder", path, what));
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot open {}", path, what));
   nlohmann::json j = nlohmann::json::parse(in, nullptr, false);

@@ -140,6 +140,14 @@ TEST(Cli, UnknownEngineInSet) {
 
 TEST(Cli, EngineNamedTwice) { expect_one_line_error(cli("run --scene seed-box --engine home,home"), "named twice"); }
 
+// A setting or a stress knob given twice is one line, not the last one silently winning or a
+// frontier run twice.
+TEST(Cli, SettingOrKnobGivenTwice) {
+  expect_one_line_error(cli("run --scene seed-box --engine home --set home.resting=soft --set home.resting=events"),
+                        "--set home.resting: set twice");
+  expect_one_line_error(cli("stress --scene seed-box --engine home --knobs dt,dt"), "--knobs: 'dt' is named twice");
+}
+
 TEST(Cli, UnknownProfile) {
   expect_one_line_error(cli("run --scene seed-box --engine home --profile tunde"), "no selected engine has a profile 'tunde'");
 }

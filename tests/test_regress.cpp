@@ -107,6 +107,14 @@ TEST(Regress, AMissingBaselineIsOneLine) {
   EXPECT_EQ(o.status, 2);
   EXPECT_NE(o.err.find("/nonexistent/baseline.json: cannot read the baseline"), std::string::npos) << o.err;
   EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << o.err;
+  // A folder, and an --update that could not be written, are one line before anything runs.
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  for (const std::string& args : {"--baseline " + folder, std::string("--update --baseline /proc/bb_baseline.json")}) {
+    const Outcome bad = regress(args);
+    EXPECT_EQ(bad.status, 2) << args << ": " << bad.err;
+    EXPECT_EQ(bad.err.find('\n'), bad.err.size() - 1) << args << ": " << bad.err;
+    EXPECT_EQ(bad.err.find("regress: ran"), std::string::npos) << args << ": " << bad.err;
+  }
 }
 
 TEST(Regress, ABaselineThatIsNotOneIsOneLine) {

@@ -5,12 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "data_file.h"
 #include "input_error.h"
 #include "json_value.h"
 #include "machine_info.h"
@@ -142,24 +142,11 @@ void compare(const nlohmann::json& base, const nlohmann::json& now, const nlohma
     if (!ns.contains(key)) differs("settings." + key, b, nlohmann::json(), "");
 }
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(fmt::format("{}: cannot read the baseline (create it with ballbench regress --update)", path));
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a regress baseline: {}", path, e.what()));
-  }
-}
-
-void write_json_file(const std::string& path, const nlohmann::json& j) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(2) << '\n';
-    if (!out) throw InputError(fmt::format("{}: cannot write the baseline", path));
-  }
-  std::filesystem::rename(tmp, path);
+nlohmann::json read_baseline_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(fmt::format("{}: cannot read the baseline: no such file (create it with ballbench regress --update)", path));
+  return parse_json_file(path, "the regress baseline");
 }
 
 // A baseline names each (scene, engine) run once and only metrics the suite computes (a metric no
@@ -210,10 +197,12 @@ void regress(const RegressArgs& a) {
   // Read before running, so a missing or broken baseline is reported at once.
   nlohmann::json baseline;
   if (!a.update) {
-    baseline = read_json_file(a.baseline);
+    baseline = read_baseline_file(a.baseline);
     if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
       throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
     check_baseline(baseline, a.baseline);
+  } else {
+    check_writable(a.baseline, "the baseline", true);
   }
 
   std::vector<nlohmann::json> runs;
@@ -228,14 +217,15 @@ void regress(const RegressArgs& a) {
   if (a.update) {
     nlohmann::json tolerances = default_tolerances();
     if (std::filesystem::exists(a.baseline)) {
-      const nlohmann::json old = read_json_file(a.baseline);
+      const nlohmann::json old = read_baseline_file(a.baseline);
       if (old.contains("tolerances")) tolerances = old["tolerances"];
     }
     const MachineInfo m = machine_info();
-    write_json_file(a.baseline, {{"about", kAbout},
+    write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},
                                  {"generated_with", fmt::format("{}, {} build", m.compiler, m.build_type)},
                                  {"tolerances", tolerances},
-                                 {"runs", runs}});
+                                 {"runs", runs}}.dump(2) + "\n",
+                          "the baseline");
     fmt::print("regress: wrote {} ({} runs)\n", a.baseline, runs.size());
     return;
   }

@@ -104,7 +104,9 @@ void add_setting(nlohmann::json& overrides, const std::string& item) {
   const std::string value = item.substr(eq + 1);
   nlohmann::json parsed = nlohmann::json::parse(value, nullptr, false);
   if (parsed.is_discarded() || parsed.is_object() || parsed.is_array()) parsed = value;
-  overrides[item.substr(0, dot)][item.substr(dot + 1, eq - dot - 1)] = parsed;
+  nlohmann::json& slot = overrides[item.substr(0, dot)][item.substr(dot + 1, eq - dot - 1)];
+  if (!slot.is_null()) throw InputError(fmt::format("--set {}: set twice (give each setting once)", item.substr(0, eq)));
+  slot = parsed;
 }
 
 void print_table(const std::vector<Result>& results) {

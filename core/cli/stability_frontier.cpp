@@ -54,6 +54,7 @@ void check_stress_knobs(const Scene& base, const std::vector<std::string>& knobs
     if (std::find(kStressKnobs.begin(), kStressKnobs.end(), k) == kStressKnobs.end())
       throw InputError(fmt::format("--knobs: unknown knob '{}'{} (known: {})", k, did_you_mean(k, kStressKnobs),
                                    fmt::join(kStressKnobs, ", ")));
+    if (std::count(knobs.begin(), knobs.end(), k) > 1) throw InputError(fmt::format("--knobs: '{}' is named twice", k));
     if (k == "count" && base.container.kind != ContainerKind::Box)
       throw InputError("--knobs: count tiles the scene's box, and this scene has none");
   }
