@@ -15,8 +15,9 @@
 // pour's first second, 100 steps from rest (no warm-up, exactly 100 timed steps), where the step
 // benchmark's window is a few steps after 5 of warm-up, while the balls are still falling freely.
 //
-// settled/ENGINE/PROFILE/N times a pile at rest (settled_pile.h) from its saved state, and
-// settled/home/soft/N the same with home's soft resting path.
+// settled/ENGINE/PROFILE/N times a pile at rest (settled_pile.h) from its saved state; the
+// variants settled/home/soft, settled/home/soft-sleep and settled/box2d/stock-sleep say their
+// settings in the profile's place.
 //
 // Read the ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
@@ -137,13 +138,26 @@ void register_benchmarks() {
             ->Unit(benchmark::kMicrosecond)
             ->UseRealTime()
             ->MinTime(0.2);
-  for (int n = 100; n <= 1'000'000; n *= 10)
-    benchmark::RegisterBenchmark(fmt::format("settled/home/soft/{}", n).c_str(), step_benchmark, &find_engine("home"),
-                                 std::string("default"), shared_settled_pile, n, 5,
-                                 nlohmann::json{{"resting", "soft"}})
-        ->Unit(benchmark::kMicrosecond)
-        ->UseRealTime()
-        ->MinTime(0.2);
+  // Variants with their settings in the name's profile place: home's soft path, and sleeping, which
+  // every engine has off unless asked (each adapter's README), for home and for Box2D, whose default
+  // it is.
+  struct Variant {
+    const char *engine, *label, *profile;
+    nlohmann::json settings;
+    int max_n;
+  };
+  const Variant variants[] = {
+      {"home", "soft", "default", {{"resting", "soft"}}, 1'000'000},
+      {"home", "soft-sleep", "default", {{"resting", "soft"}, {"sleep_speed", 0.05}}, 1'000'000},
+      {"box2d", "stock-sleep", "stock", {{"allow_sleep", true}}, 10'000},
+  };
+  for (const Variant& v : variants)
+    for (int n = 100; n <= v.max_n; n *= 10)
+      benchmark::RegisterBenchmark(fmt::format("settled/{}/{}/{}", v.engine, v.label, n).c_str(), step_benchmark,
+                                   &find_engine(v.engine), std::string(v.profile), shared_settled_pile, n, 5, v.settings)
+          ->Unit(benchmark::kMicrosecond)
+          ->UseRealTime()
+          ->MinTime(0.2);
   constexpr int kPourSteps = 100;  // one second of the scaled bowl (dt 0.01)
   benchmark::RegisterBenchmark("pour/home/default/bowl/1000000", step_benchmark, &find_engine("home"),
                                std::string("default"), bowl_scene, 1'000'000, 0, nlohmann::json::object())

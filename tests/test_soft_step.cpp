@@ -60,9 +60,10 @@ TEST(SoftStep, ImpactLeavesAtTheRestitutionSpeed) {
   EXPECT_NEAR(b.vx[0] + b.vx[1], 0.0, 1e-12);  // momentum
 }
 
-Result run_soft(Scene scene) {
+Result run_soft(Scene scene, nlohmann::json settings = nlohmann::json::object()) {
   RunOptions options;
-  options.overrides = {{"resting", "soft"}};
+  settings["resting"] = "soft";
+  options.overrides = settings;
   return run_engine(scene, find_engine("home"), options);
 }
 
@@ -107,6 +108,49 @@ seed = 11
   EXPECT_LT(*r.jitter, 0.02);  // the pile scene's bound: this pile is shallower, so it rests as well or better
 }
 
+// With sleeping, the pile ends with every ball asleep (RMS speed exactly 0), and keeps what the
+// soft path keeps without it.
+TEST(HomeSoft, ASleepingPileEndsAtRestWithoutTunnellingOrSticking) {
+  const Result r = run_soft(load_scene("pile"), {{"sleep_speed", 0.05}});
+  ASSERT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
+  EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
+  EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
+  ASSERT_TRUE(r.jitter.has_value());
+  EXPECT_EQ(*r.jitter, 0.0);
+  EXPECT_LT(r.metrics.penetration_max, 0.1);
+}
+
+// A sleeping ball wakes when another lands on it: B falls on A's shoulder a second after A fell
+// asleep on the floor, and A is pushed aside (asleep, it would hold B as a wall does and not move).
+TEST(HomeSoft, ABallLandingOnASleepingBallWakesIt) {
+  const std::string text = R"(
+dt = 0.01
+duration = 2.5
+gravity = [0.0, -9.81]
+restitution = 0.5
+[container]
+min = [-3.0, 0.0]
+max = [3.0, 12.0]
+[[ball]]
+pos = [0.0, 0.25]
+radius = 0.25
+[[ball]]
+pos = [0.2, 8.0]
+radius = 0.25
+)";
+  const Scene scene = parse_scene(text, "landing");
+  const Result sleeping = run_soft(scene, {{"sleep_speed", 0.05}});
+  ASSERT_EQ(sleeping.status, "ok") << sleeping.error;
+  EXPECT_EQ(sleeping.metrics.tunnelling_pair, 0);
+  std::unique_ptr<Engine> e = find_engine("home").create(scene, "default", {{"resting", "soft"}, {"sleep_speed", 0.05}});
+  State s;
+  for (int k = 0; k < 250; ++k) e->step(scene.dt);
+  e->read(s);
+  EXPECT_LT(s.pos(0, 0), -0.01) << "the ball below was not pushed aside: it did not wake";
+  EXPECT_GT(s.pos(1, 0), 0.21);
+}
+
 TEST(HomeSoft, SeedBowlEndsNearExactsEnergy) {
   const Scene scene = load_scene("seed-bowl");
   const Result soft = run_soft(scene);
@@ -132,6 +176,8 @@ TEST(HomeSoft, RejectsBadSettings) {
                                    {"contact_hertz", 0.0},
                                    {"damping_ratio", -1.0},
                                    {"push_speed", 0.0},
+                                   {"sleep_speed", -1.0},
+                                   {"sleep_time", 0.0},
                                    {"resting", "hard"}}) {
     EXPECT_THROW(find_engine("home").create(scene, "default", {{key, value}}), InputError) << key;
   }

@@ -153,6 +153,7 @@ class Home final : public Engine {
     if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     ball_of_.resize(n_);
     for (int i = 0; i < n_; ++i) ball_of_[i] = i;
+    if (soft_ && s.sleep_speed > 0) asleep_.assign(n_, 0), still_for_.assign(n_, 0.0);
   }
 
   void step(double dt) override {
@@ -223,7 +224,9 @@ class Home final : public Engine {
             {"substeps", s_.soft.substeps},
             {"contact_hertz", s_.soft.contact_hertz},
             {"damping_ratio", s_.soft.damping_ratio},
-            {"push_speed", s_.soft.push_speed}};
+            {"push_speed", s_.soft.push_speed},
+            {"sleep_speed", s_.sleep_speed},
+            {"sleep_time", s_.sleep_time}};
   }
 
  private:
@@ -845,6 +848,7 @@ class Home final : public Engine {
     if (r_.size()) permute(r_.data());
     if (inv_m_.size()) permute(inv_m_.data());
     permute(count_.data());
+    if (!asleep_.empty()) permute(asleep_.data()), permute(still_for_.data());
     grid_.renumbered([&](const int* new_number) {
       for (int& b : ball_of_) b = new_number[b];
       warm_entries_.clear();
@@ -903,6 +907,7 @@ class Home final : public Engine {
   // Scenes with gravity: one soft step (soft_step.h) over every contact that can touch within the
   // step, found on a grid whose cells cover the fastest ball's motion.
   void soft_path() {
+    if (sleeping_ == n_ && n_ > 0) return;  // every ball asleep: nothing can move or wake one
     const double dt = dt_, g = g_.norm();
     double speed2 = 0;
     HomeGrid::Bounds bounds;
@@ -914,10 +919,12 @@ class Home final : public Engine {
     const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
     const double margin = kSoftMargin * rmax_;
     soft_contacts_.clear();
+    const bool sleeps = !asleep_.empty();
+    // Every contact, those between sleeping balls too (one may wake); the mass is set once it is
+    // known which balls sleep (below).
     const auto add = [&](int i, int j, double nx, double ny, double gap) {
-      const double mass = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
       const double warm = warm_.find(i, j);
-      soft_contacts_.push_back({i, j, nx, ny, gap, mass, 0.0, warm > 0 ? warm : 0.0, 0.0});
+      soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm : 0.0, 0.0});
     };
     if (!sc_.no_pairs) {
       grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
@@ -946,13 +953,53 @@ class Home final : public Engine {
             add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
           }
         }
-    const SoftBodies bodies{p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data(),
-                            sc_.equal_masses ? nullptr : inv_m_.data(), inv_m0_};
+    if (sleeps) wake_touched();
+    const double* inv_m = sc_.equal_masses ? nullptr : inv_m_.data();
+    if (sleeping_ > 0) {
+      soft_inv_mass_.resize(n_);
+      for (int i = 0; i < n_; ++i) soft_inv_mass_[i] = asleep_[i] ? 0.0 : inv_mass(i);
+      inv_m = soft_inv_mass_.data();
+      std::erase_if(soft_contacts_, [&](const SoftContact& c) { return asleep_[c.i] && (c.j < 0 || asleep_[c.j]); });
+    }
+    for (SoftContact& c : soft_contacts_) {
+      const double wi = inv_m ? inv_m[c.i] : inv_m0_, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : inv_m0_;
+      c.mass = 1.0 / (wi + wj);
+    }
+    const SoftBodies bodies{p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data(), inv_m, inv_m0_};
     soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
+    if (sleeps) fall_asleep();
     warm_entries_.clear();
     for (const SoftContact& c : soft_contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
     warm_.assign(warm_entries_);
+  }
+
+  // A sleeping ball wakes when a ball that can touch it within the step moves faster than
+  // sleep_speed relative to it: one landing on it, or one it rests on moving away.
+  void wake_touched() {
+    if (sleeping_ == 0) return;
+    const double limit2 = s_.sleep_speed * s_.sleep_speed;
+    for (const SoftContact& c : soft_contacts_) {
+      if (c.j < 0 || asleep_[c.i] == asleep_[c.j]) continue;
+      const double wx = v_(c.i, 0) - v_(c.j, 0), wy = v_(c.i, 1) - v_(c.j, 1);
+      if (wx * wx + wy * wy <= limit2) continue;
+      const int b = asleep_[c.i] ? c.i : c.j;
+      asleep_[b] = 0, still_for_[b] = 0, --sleeping_;
+    }
+  }
+
+  // A ball slower than sleep_speed for sleep_time falls asleep: it stops.
+  void fall_asleep() {
+    const double limit2 = s_.sleep_speed * s_.sleep_speed;
+    for (int i = 0; i < n_; ++i) {
+      if (asleep_[i]) continue;
+      if (v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1) > limit2) {
+        still_for_[i] = 0;
+        continue;
+      }
+      still_for_[i] += dt_;
+      if (still_for_[i] >= s_.sleep_time) asleep_[i] = 1, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
+    }
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
@@ -1254,6 +1301,10 @@ class Home final : public Engine {
   std::vector<Event> queue_;      // a min-heap on t, see push_event
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
   std::vector<SoftContact> soft_contacts_;
+  std::vector<uint8_t> asleep_;     // per ball (soft path with sleeping): 1 while asleep
+  std::vector<double> still_for_;   // per ball: how long it has been slower than sleep_speed (s)
+  int sleeping_ = 0;                // balls asleep
+  std::vector<double> soft_inv_mass_;  // per ball while some sleep: 0 for a ball asleep
   SoftStepScratch soft_scratch_;
 };
 
@@ -1283,11 +1334,15 @@ EngineEntry home_engine() {
             r.get("contact_hertz", s.soft.contact_hertz);
             r.get("damping_ratio", s.soft.damping_ratio);
             r.get("push_speed", s.soft.push_speed);
+            r.get("sleep_speed", s.sleep_speed);
+            r.get("sleep_time", s.sleep_time);
             r.finish();
             if (s.soft.substeps < 1) throw InputError("settings.home.substeps: must be >= 1");
             if (!(s.soft.contact_hertz > 0)) throw InputError("settings.home.contact_hertz: must be > 0");
             if (!(s.soft.damping_ratio >= 0)) throw InputError("settings.home.damping_ratio: must be >= 0");
             if (!(s.soft.push_speed > 0)) throw InputError("settings.home.push_speed: must be > 0");
+            if (!(s.sleep_speed >= 0)) throw InputError("settings.home.sleep_speed: must be >= 0");
+            if (!(s.sleep_time > 0)) throw InputError("settings.home.sleep_time: must be > 0");
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");

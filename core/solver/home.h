@@ -46,6 +46,14 @@ struct HomeSettings {
   std::string resting = "events";
   /// The soft step's substeps, push-out stiffness, damping and speed (resting = "soft").
   SoftStepSettings soft;
+  /// Sleeping (resting = "soft"): a ball slower than sleep_speed for sleep_time stops (its velocity
+  /// set to 0) and is not stepped; it holds the balls touching it as a wall would, and wakes when
+  /// a ball that can touch it within the step moves faster than sleep_speed relative to it
+  /// (Box2D v3's b2BodyDef sleepThreshold and b2_timeToSleep, per ball). 0, the default, never
+  /// sleeps: as for every engine in the harness (each adapter's README), a slow ball is not frozen
+  /// unless a run asks for it. (m/s, s)
+  double sleep_speed = 0;
+  double sleep_time = 0.5;
 
   // Internal, not user settings (not in settings(), not readable with --set): they change how
   // fast, never what, the solver computes.

@@ -86,7 +86,12 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   double* __restrict ux = scratch.dx.data();
   double* __restrict uy = scratch.dy.data();
   for (int step = 0; step < substeps; ++step) {
-    for (int i = 0; i < n; ++i) b.vx[i] += gxh, b.vy[i] += gyh;
+    if (b.inv_mass)  // a ball of inverse mass 0 is held still (home's sleeping balls)
+      for (int i = 0; i < n; ++i) {
+        if (b.inv_mass[i] > 0) b.vx[i] += gxh, b.vy[i] += gyh;
+      }
+    else
+      for (int i = 0; i < n; ++i) b.vx[i] += gxh, b.vy[i] += gyh;
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
     for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
     for (int i = 0; i < n; ++i) {

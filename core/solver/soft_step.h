@@ -39,7 +39,8 @@ struct Restitution {
   double threshold = 1;
 };
 
-// Arrays of n balls, structure of arrays; inv_mass may be null (then every ball has inv_mass0).
+// Arrays of n balls, structure of arrays; inv_mass may be null (then every ball has inv_mass0). A
+// ball of inverse mass 0 is held still: no gravity, no impulse moves it.
 struct SoftBodies {
   double* x;
   double* y;
