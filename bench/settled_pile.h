@@ -16,7 +16,7 @@ Scene settled_pile(int n);
 const Scene& shared_settled_pile(int n);
 
 // The pile counts as settled below this RMS speed (m/s), and settling stops after this many steps.
-inline constexpr double kSettledSpeed = 1e-2;
-inline constexpr int kSettleSteps = 1500;
+inline constexpr double kSettledSpeed = 1e-3;
+inline constexpr int kSettleSteps = 5000;
 
 }  // namespace ballbench::bench

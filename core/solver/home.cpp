@@ -853,7 +853,9 @@ class Home final : public Engine {
       for (int& b : ball_of_) b = new_number[b];
       warm_entries_.clear();
       warm_.for_each([&](const WarmStart::Entry& e) {
-        warm_entries_.push_back({new_number[e.i], e.j >= 0 ? new_number[e.j] : e.j, e.impulse});
+        int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
+        if (soft_ && j >= 0 && i > j) std::swap(i, j);  // the soft path keys a pair by its lower number first
+        warm_entries_.push_back({i, j, e.impulse});
       });
     });
     warm_.assign(warm_entries_);
@@ -919,55 +921,85 @@ class Home final : public Engine {
     const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
     const double margin = kSoftMargin * rmax_;
     soft_contacts_.clear();
-    const bool sleeps = !asleep_.empty();
-    // Every contact, those between sleeping balls too (one may wake); the mass is set once it is
-    // known which balls sleep (below).
+    // The mass is set once it is known which balls sleep (below).
     const auto add = [&](int i, int j, double nx, double ny, double gap) {
       const double warm = warm_.find(i, j);
       soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm : 0.0, 0.0});
     };
+    // A pair that can touch within the step, the lower number first, so the warm start finds it
+    // whichever cell order the grid gave it this step.
+    const auto try_pair = [&](int a, int b) {
+      if (a > b) std::swap(a, b);
+      const double dx = p_(a, 0) - p_(b, 0), dy = p_(a, 1) - p_(b, 1);
+      const double wx = v_(a, 0) - v_(b, 0), wy = v_(a, 1) - v_(b, 1);
+      const double rs = radius(a) + radius(b);
+      const double lim = rs + std::sqrt(wx * wx + wy * wy) * dt * kSpeedMargin + margin;
+      const double d2 = dx * dx + dy * dy;
+      if (d2 >= lim * lim || d2 == 0) return;
+      const double d = std::sqrt(d2);
+      add(a, b, dx / d, dy / d, d - rs);
+    };
+    const auto try_walls = [&](int i) {
+      for (int axis = 0; axis < 2; ++axis) {
+        const double v = v_(i, axis), toward = std::abs(v) + g * dt;
+        for (int side = 0; side < 2; ++side) {
+          const double gap = wall_gap(i, axis, side);
+          if (gap >= toward * dt * kSpeedMargin + margin) continue;
+          const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
+          add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
+        }
+      }
+    };
+    // Two sleeping balls have no contact: neither moves (unless one wakes, below).
+    const bool sleeps = sleeping_ > 0;
     if (!sc_.no_pairs) {
       grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
       renumber_if_due();
       const int* id = grid_.id();
       grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
         const int a = id[sa], b = id[sb];
-        const double dx = p_(a, 0) - p_(b, 0), dy = p_(a, 1) - p_(b, 1);
-        const double wx = v_(a, 0) - v_(b, 0), wy = v_(a, 1) - v_(b, 1);
-        const double rs = radius(a) + radius(b);
-        const double lim = rs + std::sqrt(wx * wx + wy * wy) * dt * kSpeedMargin + margin;
-        const double d2 = dx * dx + dy * dy;
-        if (d2 >= lim * lim || d2 == 0) return;
-        const double d = std::sqrt(d2);
-        add(a, b, dx / d, dy / d, d - rs);
+        if (!sleeps || !(asleep_[a] && asleep_[b])) try_pair(a, b);
       });
     }
     if (walls_)
       for (int i = 0; i < n_; ++i)
-        for (int axis = 0; axis < 2; ++axis) {
-          const double v = v_(i, axis), toward = std::abs(v) + g * dt;
-          for (int side = 0; side < 2; ++side) {
-            const double gap = wall_gap(i, axis, side);
-            if (gap >= toward * dt * kSpeedMargin + margin) continue;
-            const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
-            add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
-          }
-        }
-    if (sleeps) wake_touched();
+        if (!sleeps || !asleep_[i]) try_walls(i);
+    if (sleeps) {
+      // A ball woken now gains the contacts it had none of while it slept.
+      wake_touched();
+      for (int i : woken_) {
+        if (!sc_.no_pairs)
+          grid_.for_each_near(i, [&](int j) {
+            if (asleep_[j] == kAsleep || (asleep_[j] == kWoken && j > i)) try_pair(i, j);
+          });
+        if (walls_) try_walls(i);
+      }
+      for (int i : woken_) asleep_[i] = kAwake;
+    }
     const double* inv_m = sc_.equal_masses ? nullptr : inv_m_.data();
+    moving_.clear();
     if (sleeping_ > 0) {
       soft_inv_mass_.resize(n_);
-      for (int i = 0; i < n_; ++i) soft_inv_mass_[i] = asleep_[i] ? 0.0 : inv_mass(i);
+      for (int i = 0; i < n_; ++i) {
+        soft_inv_mass_[i] = asleep_[i] ? 0.0 : inv_mass(i);
+        if (!asleep_[i]) moving_.push_back(i);
+      }
       inv_m = soft_inv_mass_.data();
-      std::erase_if(soft_contacts_, [&](const SoftContact& c) { return asleep_[c.i] && (c.j < 0 || asleep_[c.j]); });
     }
     for (SoftContact& c : soft_contacts_) {
       const double wi = inv_m ? inv_m[c.i] : inv_m0_, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : inv_m0_;
       c.mass = 1.0 / (wi + wj);
     }
-    const SoftBodies bodies{p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data(), inv_m, inv_m0_};
+    const SoftBodies bodies{p_.col(0).data(),
+                            p_.col(1).data(),
+                            v_.col(0).data(),
+                            v_.col(1).data(),
+                            inv_m,
+                            inv_m0_,
+                            sleeping_ > 0 ? moving_.data() : nullptr,
+                            static_cast<int>(moving_.size())};
     soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
-    if (sleeps) fall_asleep();
+    if (!asleep_.empty()) fall_asleep();
     warm_entries_.clear();
     for (const SoftContact& c : soft_contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
@@ -976,15 +1008,17 @@ class Home final : public Engine {
 
   // A sleeping ball wakes when a ball that can touch it within the step moves faster than
   // sleep_speed relative to it: one landing on it, or one it rests on moving away.
+  // The balls woken are marked kWoken and listed in woken_.
   void wake_touched() {
-    if (sleeping_ == 0) return;
+    woken_.clear();
     const double limit2 = s_.sleep_speed * s_.sleep_speed;
     for (const SoftContact& c : soft_contacts_) {
-      if (c.j < 0 || asleep_[c.i] == asleep_[c.j]) continue;
+      if (c.j < 0 || (asleep_[c.i] == kAsleep) == (asleep_[c.j] == kAsleep)) continue;
       const double wx = v_(c.i, 0) - v_(c.j, 0), wy = v_(c.i, 1) - v_(c.j, 1);
       if (wx * wx + wy * wy <= limit2) continue;
-      const int b = asleep_[c.i] ? c.i : c.j;
-      asleep_[b] = 0, still_for_[b] = 0, --sleeping_;
+      const int b = asleep_[c.i] == kAsleep ? c.i : c.j;
+      asleep_[b] = kWoken, still_for_[b] = 0, --sleeping_;
+      woken_.push_back(b);
     }
   }
 
@@ -998,7 +1032,7 @@ class Home final : public Engine {
         continue;
       }
       still_for_[i] += dt_;
-      if (still_for_[i] >= s_.sleep_time) asleep_[i] = 1, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
+      if (still_for_[i] >= s_.sleep_time) asleep_[i] = kAsleep, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
     }
   }
 
@@ -1301,7 +1335,12 @@ class Home final : public Engine {
   std::vector<Event> queue_;      // a min-heap on t, see push_event
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
   std::vector<SoftContact> soft_contacts_;
-  std::vector<uint8_t> asleep_;     // per ball (soft path with sleeping): 1 while asleep
+  // Per ball (soft path with sleeping): kAsleep while asleep; kWoken while the step that woke it
+  // gathers its contacts.
+  enum : uint8_t { kAwake = 0, kAsleep = 1, kWoken = 2 };
+  std::vector<uint8_t> asleep_;
+  std::vector<int> woken_;          // the balls woken this step
+  std::vector<int> moving_;         // the balls awake, while some sleep
   std::vector<double> still_for_;   // per ball: how long it has been slower than sleep_speed (s)
   int sleeping_ = 0;                // balls asleep
   std::vector<double> soft_inv_mass_;  // per ball while some sleep: 0 for a ball asleep

@@ -78,28 +78,30 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   const double h = dt / substeps, inv_h = 1 / h;
   // A contact spring stiffer than a quarter of the substep rate is not resolved by the substeps.
   const Softness soft = make_soft(std::min(s.contact_hertz, 0.25 * inv_h), s.damping_ratio, h);
-  scratch.dx.assign(n, 0.0);
-  scratch.dy.assign(n, 0.0);
+  if (scratch.dx.size() != static_cast<size_t>(n)) scratch.dx.assign(n, 0.0), scratch.dy.assign(n, 0.0);
   const Kernel k{b, scratch.dx.data(), scratch.dy.data()};
   for (SoftContact& c : contacts) c.vn0 = k.normal_velocity(c), c.max_impulse = 0;
   const double gxh = gx * h, gyh = gy * h;
   double* __restrict ux = scratch.dx.data();
   double* __restrict uy = scratch.dy.data();
-  for (int step = 0; step < substeps; ++step) {
-    if (b.inv_mass)  // a ball of inverse mass 0 is held still (home's sleeping balls)
-      for (int i = 0; i < n; ++i) {
-        if (b.inv_mass[i] > 0) b.vx[i] += gxh, b.vy[i] += gyh;
-      }
+  // Over every ball, or only over those that move (the others have inverse mass 0).
+  const auto for_moving = [&](auto&& f) {
+    if (b.moving)
+      for (int m = 0; m < b.moving_count; ++m) f(b.moving[m]);
     else
-      for (int i = 0; i < n; ++i) b.vx[i] += gxh, b.vy[i] += gyh;
+      for (int i = 0; i < n; ++i) f(i);
+  };
+  for (int step = 0; step < substeps; ++step) {
+    for_moving([&](int i) { b.vx[i] += gxh, b.vy[i] += gyh; });
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
     for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
-    for (int i = 0; i < n; ++i) {
+    for_moving([&](int i) {
       const double mx = b.vx[i] * h, my = b.vy[i] * h;
       b.x[i] += mx, b.y[i] += my, ux[i] += mx, uy[i] += my;
-    }
+    });
     for (SoftContact& c : contacts) k.solve(c, inv_h, soft, false, s.push_speed);
   }
+  for_moving([&](int i) { ux[i] = uy[i] = 0; });  // zero for the next step, as the held balls are
   // Restitution (Box2D v3's b2ApplyRestitution): a contact that approached faster than the
   // threshold at the start and pushed during the step leaves at e times that speed.
   if (restitution.e == 0) return;

@@ -48,11 +48,15 @@ struct SoftBodies {
   double* vy;
   const double* inv_mass;
   double inv_mass0;
+  // The balls that move, if not all: the others have inverse mass 0 (inv_mass given) and zero
+  // velocity, and the step does not touch them.
+  const int* moving = nullptr;
+  int moving_count = 0;
 };
 
 // Scratch the step reuses between calls (no allocation once warm).
 struct SoftStepScratch {
-  std::vector<double> dx, dy;  // each ball's displacement since the start of the step (m)
+  std::vector<double> dx, dy;  // each ball's displacement since the start of the step (m); 0 between steps
 };
 
 // Advances the balls by dt under gravity (gx, gy), solving `contacts`; their impulses are left
