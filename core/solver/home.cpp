@@ -927,13 +927,15 @@ class Home final : public Engine {
       soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm : 0.0, 0.0});
     };
     // A pair that can touch within the step, the lower number first, so the warm start finds it
-    // whichever cell order the grid gave it this step.
+    // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
+    // of their speeds, not their relative speed: two balls falling together close at once when the
+    // lower one lands. (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
     const auto try_pair = [&](int a, int b) {
       if (a > b) std::swap(a, b);
       const double dx = p_(a, 0) - p_(b, 0), dy = p_(a, 1) - p_(b, 1);
-      const double wx = v_(a, 0) - v_(b, 0), wy = v_(a, 1) - v_(b, 1);
+      const double speed2 = v_(a, 0) * v_(a, 0) + v_(a, 1) * v_(a, 1) + v_(b, 0) * v_(b, 0) + v_(b, 1) * v_(b, 1);
       const double rs = radius(a) + radius(b);
-      const double lim = rs + std::sqrt(wx * wx + wy * wy) * dt * kSpeedMargin + margin;
+      const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
       const double d2 = dx * dx + dy * dy;
       if (d2 >= lim * lim || d2 == 0) return;
       const double d = std::sqrt(d2);
