@@ -1,5 +1,6 @@
 #include "scaled_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -10,9 +11,46 @@
 
 namespace ballbench::bench {
 
-const char* scene_kind_name(SceneKind k) { return k == SceneKind::Gas ? "gas" : "bowl"; }
+const char* scene_kind_name(SceneKind k) {
+  switch (k) {
+    case SceneKind::Gas: return "gas";
+    case SceneKind::Bowl: return "bowl";
+    case SceneKind::Fluid: return "fluid";
+  }
+  return "?";
+}
+
+namespace {
+
+Scene fluid_scene(int n) {
+  const double scale = std::sqrt(72.0 / n);
+  const int columns = std::max(1, static_cast<int>(std::lround(std::sqrt(8.0 * n / 9.0))));
+  return parse_scene(fmt::format(R"(
+name = "fluid-{0}"
+dt = 0.01
+duration = 3.0
+gravity = [0.0, -100.0]
+restitution = 0.99
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[lattice]
+count = {0}
+radius = {1}
+spacing = {2}
+origin = [-4.6, -4.6]
+columns = {3}
+vel_min = [-2.5, -2.5]
+vel_max = [2.5, 2.5]
+seed = 2017
+)", n, 0.25 * scale, 0.6 * scale, columns),
+                     fmt::format("fluid-{}", n));
+}
+
+}  // namespace
 
 Scene scaled_scene(SceneKind kind, int n) {
+  if (kind == SceneKind::Fluid) return fluid_scene(n);
   const double half = 0.5 * std::sqrt(5.0 * n);  // box side sqrt(5 n): the seed-box's area per ball
   if (kind == SceneKind::Gas)
     return parse_scene(fmt::format(R"(

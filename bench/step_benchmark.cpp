@@ -15,9 +15,14 @@
 // pour's first second, 100 steps from rest (no warm-up, exactly 100 timed steps), where the step
 // benchmark's window is a few steps after 5 of warm-up, while the balls are still falling freely.
 //
-// settled/ENGINE/PROFILE/N times a pile at rest (settled_pile.h) from its saved state; the
-// variants settled/home/soft, settled/home/soft-sleep and settled/box2d/stock-sleep say their
-// settings in the profile's place.
+// step/ENGINE/PROFILE/settled/N times a pile at rest (settled_pile.h) from its saved state; the
+// variants with profile soft and soft-sleep (home) and stock-sleep (box2d) say their settings in
+// the profile's place. step/ENGINE/PROFILE/fluid/N times the fluid (scaled_scene.h) over its first
+// 3 s, the pour and the settle: 300 steps from the start, no warm-up; a ball that leaves the box
+// (checked every 10 steps, outside the timing) ends the benchmark as diverged.
+//
+// A benchmark whose steps (warm-up included) pass kBudgetSeconds stops with an error that says
+// how far it got and what a step cost: a slow engine is reported, not waited for.
 //
 // Read the ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
@@ -29,6 +34,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <map>
 
@@ -69,16 +75,43 @@ double peak_resident_bytes() {
   return static_cast<double>(u.ru_maxrss) * 1024.0;
 }
 
+constexpr double kBudgetSeconds = 30;
+// The fluid's window: its first 3 s.
+constexpr int kFluidSteps = 300;
+constexpr int kDivergenceCheckSteps = 10;
+
 // The scene a benchmark times, built when the benchmark first runs (so a filter that leaves it out
 // does not pay for it).
 using SceneOf = const Scene& (*)(int n);
 const Scene& gas_scene(int n) { return shared_scaled_scene(SceneKind::Gas, n); }
 const Scene& bowl_scene(int n) { return shared_scaled_scene(SceneKind::Bowl, n); }
+const Scene& fluid_scene(int n) { return shared_scaled_scene(SceneKind::Fluid, n); }
+
+// A centre beyond a wall by more than the largest diameter: the runner's divergence rule
+// (MetricsAccumulator::left_container), which `ballbench run` reports as diverged.
+bool left_the_box(const Scene& scene, const State& s) {
+  if (scene.container.kind != ContainerKind::Box) return false;
+  const double d = 2 * scene.radius.maxCoeff();
+  for (int i = 0; i < s.n(); ++i) {
+    for (int c = 0; c < 2; ++c)
+      if (!(s.pos(i, c) > scene.container.min(c) - d && s.pos(i, c) < scene.container.max(c) + d)) return true;
+  }
+  return false;
+}
+
+struct StepOptions {
+  int warm_up = 5;
+  bool check_divergence = false;  // read the state every kDivergenceCheckSteps steps, untimed
+};
 
 void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::string profile, SceneOf scene_of, int n,
-                    int warm_up, nlohmann::json settings) {
+                    StepOptions options, nlohmann::json settings) {
   const Scene& scene = scene_of(n);
   std::unique_ptr<Engine> engine;
+  using Clock = std::chrono::steady_clock;
+  const auto start = Clock::now();
+  const auto seconds_since_start = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  const int warm_up = options.warm_up;
   // Memory the scene generator freed stays in the heap; the engine would reuse it, and the growth
   // would miss that share of what it holds (measured at 10^6 bowl balls: 126 bytes per ball
   // without this, 167 with it). Handed back first, the growth is the engine's whole footprint.
@@ -86,16 +119,45 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
   const double resident_before = resident_bytes();
   try {
     engine = entry->create(scene, profile, settings);
-    for (int k = 0; k < warm_up; ++k) engine->step(scene.dt);  // contacts, caches
+    for (int k = 0; k < warm_up; ++k) {
+      engine->step(scene.dt);  // contacts, caches
+      if (seconds_since_start() > kBudgetSeconds) {
+        state.SkipWithError(
+            fmt::format("stopped at the {:.0f} s budget in warm-up step {} of {}", kBudgetSeconds, k + 1, warm_up)
+                .c_str());
+        return;
+      }
+    }
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
   }
+  const auto timed_start = Clock::now();
+  long steps = 0;
+  State read;
   for (auto _ : state) {
     try {
       engine->step(scene.dt);
     } catch (const std::exception& e) {
       state.SkipWithError(e.what());
+      break;
+    }
+    ++steps;
+    if (options.check_divergence && steps % kDivergenceCheckSteps == 0) {
+      state.PauseTiming();
+      engine->read(read);
+      const bool diverged = left_the_box(scene, read);
+      state.ResumeTiming();
+      if (diverged) {
+        state.SkipWithError(fmt::format("diverged: a ball left the box by step {}", steps).c_str());
+        break;
+      }
+    }
+    if (seconds_since_start() > kBudgetSeconds) {
+      const double timed = std::chrono::duration<double>(Clock::now() - timed_start).count();
+      state.SkipWithError(fmt::format("stopped at the {:.0f} s budget after {} timed steps: {:.0f} ns per ball-step",
+                                      kBudgetSeconds, steps, timed * 1e9 / (static_cast<double>(steps) * n))
+                              .c_str());
       break;
     }
   }
@@ -113,34 +175,39 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
 }  // namespace
 
 void register_benchmarks() {
+  const auto add = [](const std::string& name, const EngineEntry* e, const std::string& profile, SceneOf scene, int n,
+                      StepOptions options, nlohmann::json settings) {
+    return benchmark::RegisterBenchmark(name.c_str(), step_benchmark, e, profile, scene, n, options, std::move(settings))
+        ->Unit(benchmark::kMicrosecond)
+        ->UseRealTime();
+  };
   for (const auto& e : engine_registry()) {
     benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
     for (const auto& profile : e.info.profiles)
       for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
         for (int n = 10; n <= max_balls(e.info.name, profile); n *= 10)
-          benchmark::RegisterBenchmark(
-              fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n).c_str(),
-              step_benchmark, &e, profile, kind == SceneKind::Gas ? gas_scene : bowl_scene, n, 5,
-              nlohmann::json::object())
-              ->Unit(benchmark::kMicrosecond)
-              ->UseRealTime()
+          add(fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n), &e, profile,
+              kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, nlohmann::json::object())
               ->MinTime(0.2);
   }
-  // A pile at rest (settled_pile.h), 10^2 .. 10^4 balls for every engine; `home` also with its soft
-  // resting path (home/soft), to 10^6. Not `exact`: an event-driven solver without a resting
-  // contact model, it does not finish a step of a pile at rest (100 balls: no step in 100 s).
+  // A pile at rest (settled_pile.h), 10^2 .. 10^4 balls for every engine, and the fluid, 10^3 ..
+  // 10^5 (home-seed to 10^3). Not `exact`: an event-driven solver without a resting contact
+  // model, it does not finish a step of a pile at rest (100 balls: no step in 100 s).
   for (const auto& e : engine_registry())
-    for (const auto& profile : e.info.profiles)
-      if (e.info.name != "exact")
+    for (const auto& profile : e.info.profiles) {
+      if (e.info.name == "exact") continue;
       for (int n = 100; n <= std::min(10'000, max_balls(e.info.name, profile)); n *= 10)
-        benchmark::RegisterBenchmark(fmt::format("settled/{}/{}/{}", e.info.name, profile, n).c_str(), step_benchmark,
-                                     &e, profile, shared_settled_pile, n, 5, nlohmann::json::object())
-            ->Unit(benchmark::kMicrosecond)
-            ->UseRealTime()
+        add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n, {},
+            nlohmann::json::object())
             ->MinTime(0.2);
+      for (int n = 1000; n <= std::min(100'000, max_balls(e.info.name, profile)); n *= 10)
+        add(fmt::format("step/{}/{}/fluid/{}", e.info.name, profile, n), &e, profile, fluid_scene, n, {0, true},
+            nlohmann::json::object())
+            ->Iterations(kFluidSteps);
+    }
   // Variants with their settings in the name's profile place: home's soft path, and sleeping, which
   // every engine has off unless asked (each adapter's README), for home and for Box2D, whose default
-  // it is. A sleeping engine starts from the saved state awake: its warm-up (1 s, 100 steps) passes
+  // it is. A sleeping engine starts from the saved state awake: its warm-up (3 s, 300 steps) passes
   // the half second after which a still body sleeps in both (b2_timeToSleep, home.sleep_time).
   struct Variant {
     const char *engine, *label, *profile;
@@ -154,19 +221,18 @@ void register_benchmarks() {
   };
   for (const Variant& v : variants)
     for (int n = 100; n <= v.max_n; n *= 10)
-      benchmark::RegisterBenchmark(fmt::format("settled/{}/{}/{}", v.engine, v.label, n).c_str(), step_benchmark,
-                                   &find_engine(v.engine), std::string(v.profile), shared_settled_pile, n, v.warm_up,
-                                   v.settings)
-          ->Unit(benchmark::kMicrosecond)
-          ->UseRealTime()
+      add(fmt::format("step/{}/{}/settled/{}", v.engine, v.label, n), &find_engine(v.engine), v.profile,
+          shared_settled_pile, n, {v.warm_up}, v.settings)
           ->MinTime(0.2);
+  for (int n = 1000; n <= 100'000; n *= 10)
+    add(fmt::format("step/home/soft/fluid/{}", n), &find_engine("home"), "default", fluid_scene, n, {0, true},
+        {{"resting", "soft"}})
+        ->Iterations(kFluidSteps);
   constexpr int kPourSteps = 100;  // one second of the scaled bowl (dt 0.01)
-  benchmark::RegisterBenchmark("pour/home/default/bowl/1000000", step_benchmark, &find_engine("home"),
-                               std::string("default"), bowl_scene, 1'000'000, 0, nlohmann::json::object())
+  add("pour/home/default/bowl/1000000", &find_engine("home"), "default", bowl_scene, 1'000'000, {0},
+      nlohmann::json::object())
       ->Unit(benchmark::kMillisecond)
-      ->UseRealTime()
       ->Iterations(kPourSteps);
 }
 
 }  // namespace ballbench::bench
-

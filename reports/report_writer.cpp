@@ -201,10 +201,15 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
 
 void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vector<Figure>& figures) {
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
-      "scenes (`gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; box side sqrt(5 n), the seed's "
-      "density). The timed steps follow 5 warm-up steps from the start, so the bowl is timed early in its pour: from "
-      "10^5 balls on, the balls are still falling, and the settled pile costs more (core/solver/PERFORMANCE.md). "
-      "Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
+      "scenes. `gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; both at the seed's density in a box of "
+      "side sqrt(5 n), timed after 5 warm-up steps from the start, so the bowl is timed early in its pour (from 10^5 "
+      "balls on the balls are still falling). `settled`: a pile of balls of radius 0.25 (g 9.81, restitution 0.5) run "
+      "until at rest, saved, and timed from the saved state after 5 warm-up steps (300 for the sleeping variants). "
+      "`fluid`: the seed-bowl's 10 x 10 box, g 100, restitution 0.99, with n balls at its packing fraction (radius "
+      "0.25 sqrt(72 / n)), timed over its first 3 s (300 steps from the start: the pour and the settle). Profiles "
+      "`soft` and `soft-sleep` are `home` with `resting = \"soft\"` (and `sleep_speed = 0.05`), `stock-sleep` Box2D's "
+      "stock profile with its sleeping on. A benchmark that runs past 30 s stops and is shown as failed, with how far "
+      "it got below its table. Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
   put_figures(put, figures, "scaling", "");
   std::vector<std::string> scenes;
   std::vector<long> counts;
@@ -233,35 +238,48 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
       }
       put("\n");
     }
-    // Our solver against the fastest external engine at each count both ran (issue 6's measure).
-    std::vector<std::string> ratios;
-    for (long n : counts) {
-      const BenchRow* ours = nullptr;
-      const BenchRow* fastest = nullptr;
-      for (const BenchRow& r : bench.rows) {
-        if (r.scene != scene || r.n != n || !r.error.empty()) continue;
-        if (r.engine == "home") ours = &r;
-        const bool external = r.engine != "home" && r.engine != "home-seed" && r.engine != "exact";
-        if (external && (!fastest || r.ns_per_ball_step < fastest->ns_per_ball_step)) fastest = &r;
-      }
-      if (ours && fastest)
-        ratios.push_back(fmt::format("{} balls: {:.1f}x (vs {})", n, fastest->ns_per_ball_step / ours->ns_per_ball_step,
-                                     run_label(fastest->engine, fastest->profile)));
-    }
-    if (!ratios.empty())
-      put("\n`home` against the fastest external engine (its ns per ball-step over ours, same run): {}.\n",
-          fmt::join(ratios, "; "));
-    // Our solver's largest run: rate and memory (issue 6's measure at 10^6 balls).
-    const BenchRow* largest = nullptr;
+    // Each of our solver's profiles against the fastest external engine at each count both ran.
+    std::vector<std::string> ours_profiles;
     for (const BenchRow& r : bench.rows)
-      if (r.scene == scene && r.engine == "home" && r.error.empty() && (!largest || r.n > largest->n)) largest = &r;
-    if (largest && largest->steps_per_s)
-      put("\n`home` at {} balls: {:.1f} steps per second; memory {} bytes per ball (resident growth from a trimmed "
-          "heap while the world was built and run: what the engine holds), peak resident set of the benchmark process "
-          "{} bytes per ball.\n",
-          largest->n, *largest->steps_per_s,
-          largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
-          largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
+      if (r.scene == scene && r.engine == "home") add_once(ours_profiles, r.profile);
+    for (const std::string& profile : ours_profiles) {
+      std::vector<std::string> ratios;
+      for (long n : counts) {
+        const BenchRow* ours = nullptr;
+        const BenchRow* fastest = nullptr;
+        for (const BenchRow& r : bench.rows) {
+          if (r.scene != scene || r.n != n || !r.error.empty()) continue;
+          if (r.engine == "home" && r.profile == profile) ours = &r;
+          const bool external = r.engine != "home" && r.engine != "home-seed" && r.engine != "exact";
+          if (external && (!fastest || r.ns_per_ball_step < fastest->ns_per_ball_step)) fastest = &r;
+        }
+        if (ours && fastest)
+          ratios.push_back(fmt::format("{} balls: {:.1f}x (vs {})", n,
+                                       fastest->ns_per_ball_step / ours->ns_per_ball_step,
+                                       run_label(fastest->engine, fastest->profile)));
+      }
+      if (!ratios.empty())
+        put("\n`{}` against the fastest external engine (its ns per ball-step over ours, same run): {}.\n",
+            run_label("home", profile), fmt::join(ratios, "; "));
+      // The profile's largest run: rate and memory.
+      const BenchRow* largest = nullptr;
+      for (const BenchRow& r : bench.rows)
+        if (r.scene == scene && r.engine == "home" && r.profile == profile && r.error.empty() &&
+            (!largest || r.n > largest->n))
+          largest = &r;
+      if (largest && largest->steps_per_s)
+        put("\n`{}` at {} balls: {:.1f} steps per second; memory {} bytes per ball (resident growth from a trimmed "
+            "heap while the world was built and run: what the engine holds), peak resident set of the benchmark "
+            "process {} bytes per ball.\n",
+            run_label("home", profile), largest->n, *largest->steps_per_s,
+            largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
+            largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
+    }
+    std::vector<std::string> failures;
+    for (const BenchRow& r : bench.rows)
+      if (r.scene == scene && !r.error.empty())
+        failures.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, table_cell(r.error)));
+    if (!failures.empty()) put("\nFailed: {}.\n", fmt::join(failures, "; "));
     for (const BenchRow& r : bench.pour)
       if (r.scene == scene && r.engine == "home" && r.error.empty() && r.steps_per_s)
         put("\nOver the first second of the pour instead (100 steps from rest, no warm-up; `pour/home/default/{}/{}`), "

@@ -54,9 +54,10 @@ Suite quick_suite() {
   s.stress_levels = 5;
   // Every engine up to 10^4 balls, ours to 10^6 as well; the 10^6 bowl alone in its own process,
   // for its peak memory, with the pour's first second (the same scene, built once).
+  // The settled pile and the fluid to 10^4 balls.
   s.bench_filters = {
       "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas/(100000|1000000)|bowl/100000)(/|$)",
-      "^(step|pour)/home/default/bowl/1000000(/|$)"};
+      "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/(100|1000|10000)(/|$)"};
   s.bench_min_time = 0.05;
   // Issue 6's measure: 10^5 balls, every step and every 10th, and the floor beside it.
   s.harness_filter = "^(harness|floor)/home/gas/100000/";
@@ -70,9 +71,10 @@ Suite full_suite() {
   s.sweep_scenes = {"seed-box", "seed-bowl"};
   s.stress_scenes = {"seed-box", "seed-bowl"};
   s.stress_levels = 6;
-  // Everything registered: 10 .. 10^5 balls, 10^6 for ours (the 10^6 bowl in its own process).
+  // Everything registered: 10 .. 10^5 balls, 10^6 for ours (the 10^6 bowl in its own process);
+  // the settled pile to 10^6 (settling 10^6 balls before timing takes a while) and the fluid to 10^5.
   s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
-                     "^(step|pour)/home/default/bowl/1000000(/|$)"};
+                     "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/"};
   s.bench_min_time = 0.2;
   s.harness_filter = "^(harness|floor)/";
   s.timeout_s = 600;
@@ -143,8 +145,8 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     return;
   }
   fmt::print(stderr, "running {} for the {} section\n", bin, section);
-  // One process per filter; the peak resident set of the last one (the largest run alone) is then
-  // that run's own.
+  // One process per filter, so a filter that runs one benchmark alone (the 10^6 bowl) has its peak
+  // resident set to itself.
   nlohmann::json joined;
   for (size_t k = 0; k < filters.size(); ++k) {
     const std::string& filter = filters[k];

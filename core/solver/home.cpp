@@ -133,6 +133,7 @@ class Home final : public Engine {
         r0_(n_ > 0 ? scene.radius(0) : 0.0),
         inv_m0_(n_ > 0 ? 1.0 / scene.mass(0) : 0.0),
         rmax_(scene.radius.maxCoeff()),
+        rmin_(n_ > 0 ? scene.radius.minCoeff() : 0.0),
         p_(scene.initial.pos),
         v_(scene.initial.vel),
         t_local_(n_),
@@ -222,6 +223,10 @@ class Home final : public Engine {
             {"max_events_per_ball", s_.max_events_per_ball},
             {"resting", s_.resting},
             {"substeps", s_.soft.substeps},
+            {"substep_iterations", s_.soft.iterations},
+            {"relax_iterations", s_.soft.relax_iterations},
+            {"max_stride", s_.soft.max_stride},
+            {"max_parts", s_.soft.max_parts},
             {"contact_hertz", s_.soft.contact_hertz},
             {"damping_ratio", s_.soft.damping_ratio},
             {"push_speed", s_.soft.push_speed},
@@ -908,15 +913,34 @@ class Home final : public Engine {
 
   // Scenes with gravity: one soft step (soft_step.h) over every contact that can touch within the
   // step, found on a grid whose cells cover the fastest ball's motion.
+  // The soft step fixes each contact's normal for its step and tracks the separation along it,
+  // which holds while the balls move a small part of their size; a step in which the fastest ball
+  // would move further than max_stride of the smallest radius is cut into parts that do not, each
+  // with its contacts gathered afresh.
   void soft_path() {
     if (sleeping_ == n_ && n_ > 0) return;  // every ball asleep: nothing can move or wake one
-    const double dt = dt_, g = g_.norm();
+    double speed2 = 0;
+    for (int i = 0; i < n_; ++i) speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
+    const double travel = (std::sqrt(speed2) + g_.norm() * dt_) * dt_;
+    const double parts = std::ceil(travel / (s_.soft.max_stride * rmin_));
+    const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.soft.max_parts))) : 1;
+    for (int part = 0; part < k; ++part) soft_part(dt_ / k);
+  }
+
+  // One soft step of dt.
+  void soft_part(double dt) {
+    if (sleeping_ == n_ && n_ > 0) return;
+    const double g = g_.norm();
     double speed2 = 0;
     HomeGrid::Bounds bounds;
     for (int i = 0; i < n_; ++i) {
       bounds.add(p_(i, 0), p_(i, 1));
       speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
     }
+    // The warm start holds one substep's impulses; a substep of another length scales them.
+    const double h = dt / std::max(s_.soft.substeps, 1);
+    const double warm_scale = warm_h_ > 0 ? h / warm_h_ : 1.0;
+    warm_h_ = h;
     // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin).
     const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
     const double margin = kSoftMargin * rmax_;
@@ -924,7 +948,7 @@ class Home final : public Engine {
     // The mass is set once it is known which balls sleep (below).
     const auto add = [&](int i, int j, double nx, double ny, double gap) {
       const double warm = warm_.find(i, j);
-      soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm : 0.0, 0.0});
+      soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm * warm_scale : 0.0, 0.0});
     };
     // A pair that can touch within the step, the lower number first, so the warm start finds it
     // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
@@ -1001,7 +1025,7 @@ class Home final : public Engine {
                             sleeping_ > 0 ? moving_.data() : nullptr,
                             static_cast<int>(moving_.size())};
     soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
-    if (!asleep_.empty()) fall_asleep();
+    if (!asleep_.empty()) fall_asleep(dt);
     warm_entries_.clear();
     for (const SoftContact& c : soft_contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
@@ -1024,8 +1048,8 @@ class Home final : public Engine {
     }
   }
 
-  // A ball slower than sleep_speed for sleep_time falls asleep: it stops.
-  void fall_asleep() {
+  // A ball slower than sleep_speed for sleep_time falls asleep: it stops. dt: the time just stepped.
+  void fall_asleep(double dt) {
     const double limit2 = s_.sleep_speed * s_.sleep_speed;
     for (int i = 0; i < n_; ++i) {
       if (asleep_[i]) continue;
@@ -1033,7 +1057,7 @@ class Home final : public Engine {
         still_for_[i] = 0;
         continue;
       }
-      still_for_[i] += dt_;
+      still_for_[i] += dt;
       if (still_for_[i] >= s_.sleep_time) asleep_[i] = kAsleep, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
     }
   }
@@ -1295,6 +1319,7 @@ class Home final : public Engine {
   double r0_, inv_m0_;            // ball 0's radius and inverse mass: everyone's, if equal
   Eigen::VectorXd r_, inv_m_;     // per ball; empty when the shortcut makes them equal
   double rmax_;
+  double rmin_;                   // smallest radius
   Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
@@ -1347,6 +1372,7 @@ class Home final : public Engine {
   int sleeping_ = 0;                // balls asleep
   std::vector<double> soft_inv_mass_;  // per ball while some sleep: 0 for a ball asleep
   SoftStepScratch soft_scratch_;
+  double warm_h_ = 0;               // the substep the warm start's impulses were accumulated over (s)
 };
 
 }  // namespace
@@ -1372,6 +1398,10 @@ EngineEntry home_engine() {
             r.get("max_events_per_ball", s.max_events_per_ball);
             r.get("resting", s.resting, {"soft", "events"});
             r.get("substeps", s.soft.substeps);
+            r.get("substep_iterations", s.soft.iterations);
+            r.get("relax_iterations", s.soft.relax_iterations);
+            r.get("max_stride", s.soft.max_stride);
+            r.get("max_parts", s.soft.max_parts);
             r.get("contact_hertz", s.soft.contact_hertz);
             r.get("damping_ratio", s.soft.damping_ratio);
             r.get("push_speed", s.soft.push_speed);
@@ -1379,6 +1409,10 @@ EngineEntry home_engine() {
             r.get("sleep_time", s.sleep_time);
             r.finish();
             if (s.soft.substeps < 1) throw InputError("settings.home.substeps: must be >= 1");
+            if (s.soft.iterations < 1) throw InputError("settings.home.substep_iterations: must be >= 1");
+            if (s.soft.relax_iterations < 0) throw InputError("settings.home.relax_iterations: must be >= 0");
+            if (!(s.soft.max_stride > 0)) throw InputError("settings.home.max_stride: must be > 0");
+            if (s.soft.max_parts < 1) throw InputError("settings.home.max_parts: must be >= 1");
             if (!(s.soft.contact_hertz > 0)) throw InputError("settings.home.contact_hertz: must be > 0");
             if (!(s.soft.damping_ratio >= 0)) throw InputError("settings.home.damping_ratio: must be >= 0");
             if (!(s.soft.push_speed > 0)) throw InputError("settings.home.push_speed: must be > 0");

@@ -94,12 +94,14 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   for (int step = 0; step < substeps; ++step) {
     for_moving([&](int i) { b.vx[i] += gxh, b.vy[i] += gyh; });
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
-    for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
+    for (int it = 0; it < s.iterations; ++it)
+      for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
     for_moving([&](int i) {
       const double mx = b.vx[i] * h, my = b.vy[i] * h;
       b.x[i] += mx, b.y[i] += my, ux[i] += mx, uy[i] += my;
     });
-    for (SoftContact& c : contacts) k.solve(c, inv_h, soft, false, s.push_speed);
+    for (int it = 0; it < s.relax_iterations; ++it)
+      for (SoftContact& c : contacts) k.solve(c, inv_h, soft, false, s.push_speed);
   }
   for_moving([&](int i) { ux[i] = uy[i] = 0; });  // zero for the next step, as the held balls are
   // Restitution (Box2D v3's b2ApplyRestitution): a contact that approached faster than the
