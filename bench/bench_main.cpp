@@ -2,8 +2,46 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+namespace ballbench::bench {
+namespace {
+
+double budget = 30;
+
+// Takes --budget_s=S out of argv (Google Benchmark has taken its own flags out already).
+bool read_budget(int& argc, char** argv) {
+  constexpr const char* kFlag = "--budget_s=";
+  int kept = 1;
+  for (int k = 1; k < argc; ++k) {
+    if (std::strncmp(argv[k], kFlag, std::strlen(kFlag)) != 0) {
+      argv[kept++] = argv[k];
+      continue;
+    }
+    const char* text = argv[k] + std::strlen(kFlag);
+    char* end = nullptr;
+    budget = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !(budget > 0)) {
+      std::fprintf(stderr, "--budget_s: must be a number of seconds > 0, got '%s'\n", text);
+      return false;
+    }
+  }
+  argc = kept;
+  return true;
+}
+
+}  // namespace
+
+double budget_seconds() { return budget; }
+
+}  // namespace ballbench::bench
+
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
+  if (!ballbench::bench::read_budget(argc, argv)) return 1;
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   ballbench::bench::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();

@@ -21,8 +21,8 @@
 // 3 s, the pour and the settle: 300 steps from the start, no warm-up; a ball that leaves the box
 // (checked every 10 steps, outside the timing) ends the benchmark as diverged.
 //
-// A benchmark whose steps (warm-up included) pass kBudgetSeconds stops with an error that says
-// how far it got and what a step cost: a slow engine is reported, not waited for.
+// A benchmark whose steps (warm-up included) pass --budget_s (default 30 s) stops with an error
+// that says how far it got and what a step cost: a slow engine is reported, not waited for.
 //
 // Read the ratios within one run, not the nanoseconds: the machines are shared.
 #include <benchmark/benchmark.h>
@@ -75,7 +75,6 @@ double peak_resident_bytes() {
   return static_cast<double>(u.ru_maxrss) * 1024.0;
 }
 
-constexpr double kBudgetSeconds = 30;
 // The fluid's window: its first 3 s.
 constexpr int kFluidSteps = 300;
 constexpr int kDivergenceCheckSteps = 10;
@@ -121,9 +120,9 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
     engine = entry->create(scene, profile, settings);
     for (int k = 0; k < warm_up; ++k) {
       engine->step(scene.dt);  // contacts, caches
-      if (seconds_since_start() > kBudgetSeconds) {
+      if (seconds_since_start() > budget_seconds()) {
         state.SkipWithError(
-            fmt::format("stopped at the {:.0f} s budget in warm-up step {} of {}", kBudgetSeconds, k + 1, warm_up)
+            fmt::format("stopped at the {:.0f} s budget in warm-up step {} of {}", budget_seconds(), k + 1, warm_up)
                 .c_str());
         return;
       }
@@ -153,10 +152,10 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
         break;
       }
     }
-    if (seconds_since_start() > kBudgetSeconds) {
+    if (seconds_since_start() > budget_seconds()) {
       const double timed = std::chrono::duration<double>(Clock::now() - timed_start).count();
       state.SkipWithError(fmt::format("stopped at the {:.0f} s budget after {} timed steps: {:.0f} ns per ball-step",
-                                      kBudgetSeconds, steps, timed * 1e9 / (static_cast<double>(steps) * n))
+                                      budget_seconds(), steps, timed * 1e9 / (static_cast<double>(steps) * n))
                               .c_str());
       break;
     }

@@ -208,8 +208,8 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
       "`fluid`: the seed-bowl's 10 x 10 box, g 100, restitution 0.99, with n balls at its packing fraction (radius "
       "0.25 sqrt(72 / n)), timed over its first 3 s (300 steps from the start: the pour and the settle). Profiles "
       "`soft` and `soft-sleep` are `home` with `resting = \"soft\"` (and `sleep_speed = 0.05`), `stock-sleep` Box2D's "
-      "stock profile with its sleeping on. A benchmark that runs past 30 s stops and is shown as failed, with how far "
-      "it got below its table. Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
+      "stock profile with its sleeping on. A benchmark that runs past its budget (10 s in the quick report, 60 s in the "
+      "full one) stops and is shown as failed, with how far it got and what a step cost below its table. Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
   put_figures(put, figures, "scaling", "");
   std::vector<std::string> scenes;
   std::vector<long> counts;

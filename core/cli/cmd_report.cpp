@@ -42,6 +42,7 @@ struct Suite {
   int stress_levels = 5;
   std::vector<std::string> bench_filters;  // Google Benchmark --benchmark_filter, one process each
   double bench_min_time = 0.05;           // s per benchmark
+  double bench_budget_s = 10;             // s a benchmark may run before it stops as failed, with its figure
   std::string harness_filter;             // of bench/ballbench_harness_benchmark (its own minimum times)
   double timeout_s = 600;                 // per engine run
 };
@@ -76,6 +77,7 @@ Suite full_suite() {
   s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
                      "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/"};
   s.bench_min_time = 0.2;
+  s.bench_budget_s = 60;
   s.harness_filter = "^(harness|floor)/";
   s.timeout_s = 600;
   return s;
@@ -138,7 +140,7 @@ std::string default_bench_binary(const std::string& name) {
 // `found` says whether an output holds what the filter asked for. A missing binary or a failed run
 // is reported and skipped ("`section` skipped: ..."): the rest of the report stands without it.
 void run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
-               const std::string& path, const std::string& section,
+               double budget_s, const std::string& path, const std::string& section,
                const std::function<bool(const BenchResults&)>& found) {
   if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
     fmt::print(stderr, "{} skipped: no benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", section, bin);
@@ -152,8 +154,8 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     const std::string& filter = filters[k];
     const std::string tmp = fmt::format("{}.running{}", path, k);
     const std::string cmd =
-        fmt::format("'{}' --benchmark_filter='{}' {} --benchmark_out='{}' --benchmark_out_format=json 1>&2", bin, filter,
-                    min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", tmp);
+        fmt::format("'{}' --benchmark_filter='{}' {} --budget_s={} --benchmark_out='{}' --benchmark_out_format=json 1>&2",
+                    bin, filter, min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", budget_s, tmp);
     const int rc = std::system(cmd.c_str());
     // std::system ignores SIGINT while it waits; a benchmark ended by the terminal's SIGINT (or a
     // SIGTERM) is this report's interrupt too, raised here so that interrupt.h sees it.
@@ -258,13 +260,13 @@ void report(const ReportArgs& a) {
     } else {
       const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
       if (!reuse(bench_path, fs::exists(bench_path)))
-        run_bench(bin, suite.bench_filters, suite.bench_min_time, bench_path, "scaling",
+        run_bench(bin, suite.bench_filters, suite.bench_min_time, suite.bench_budget_s, bench_path, "scaling",
                   [](const BenchResults& b) { return !b.rows.empty(); });
       stop_if_interrupted();
       // The harness benchmark beside the step benchmark.
       if (!reuse(harness_path, fs::exists(harness_path)))
         run_bench((fs::path(bin).parent_path() / "ballbench_harness_benchmark").string(), {suite.harness_filter},
-                  std::nullopt, harness_path, "harness overhead",
+                  std::nullopt, suite.bench_budget_s, harness_path, "harness overhead",
                   [](const BenchResults& b) { return !b.harness.empty(); });
       stop_if_interrupted();
     }
