@@ -981,11 +981,20 @@ class Home final : public Engine {
     if (!sc_.no_pairs) {
       grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
       renumber_if_due();
-      const int* id = grid_.id();
-      grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
-        const int a = id[sa], b = id[sb];
-        if (!sleeps || !(asleep_[a] && asleep_[b])) try_pair(a, b);
-      });
+      if (sleeps && 2 * sleeping_ > n_) {
+        // Mostly asleep: the pairs around the balls awake, not every pair of the grid.
+        for (int i = 0; i < n_; ++i)
+          if (!asleep_[i])
+            grid_.for_each_near(i, [&](int j) {
+              if (j != i && (asleep_[j] || j > i)) try_pair(i, j);
+            });
+      } else {
+        const int* id = grid_.id();
+        grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
+          const int a = id[sa], b = id[sb];
+          if (!sleeps || !(asleep_[a] && asleep_[b])) try_pair(a, b);
+        });
+      }
     }
     if (walls_)
       for (int i = 0; i < n_; ++i)
