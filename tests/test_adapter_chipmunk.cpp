@@ -175,8 +175,8 @@ TEST(ChipmunkAdapter, SettingsListEveryKnobOfBothProfiles) {
   const Scene s = load_scene("seed-box");  // 20 balls of radius 0.25, frictionless
   const auto tuned = find_engine("chipmunk").create(s, "tuned", {})->settings();
   const auto stock = find_engine("chipmunk").create(s, "stock", {})->settings();
-  for (const char* key : {"iterations", "collision_slop", "collision_bias", "collision_persistence", "spatial_index",
-                          "hash_cell", "hash_count", "allow_sleep", "sleep_time_threshold", "idle_speed_threshold"}) {
+  for (const char* key : {"iterations", "collision_slop", "collision_bias", "collision_persistence", "wall_radius",
+                          "spatial_index", "hash_cell", "hash_count", "allow_sleep", "sleep_time_threshold", "idle_speed_threshold"}) {
     EXPECT_TRUE(tuned.contains(key)) << key;
     EXPECT_TRUE(stock.contains(key)) << key;
   }
@@ -188,6 +188,8 @@ TEST(ChipmunkAdapter, SettingsListEveryKnobOfBothProfiles) {
   EXPECT_EQ(stock["collision_persistence"], 3);
   EXPECT_EQ(stock["spatial_index"], "bbtree");
   EXPECT_EQ(stock["idle_speed_threshold"], 0.0);
+  EXPECT_EQ(stock["wall_radius"], 0.0);
+  EXPECT_EQ(tuned["wall_radius"], 0.0);  // both: lines on the bounds
 
   EXPECT_EQ(tuned["iterations"], 30);
   EXPECT_DOUBLE_EQ(tuned["collision_slop"].get<double>(), 0.0025);  // 1% of the radius
@@ -240,6 +242,7 @@ TEST(ChipmunkAdapter, BadSettingsAreInputErrors) {
   EXPECT_NE(message({{"collision_bias", 1.5}}).find("must be from 0 to 1"), std::string::npos);
   EXPECT_NE(message({{"collision_persistence", 0}}).find("must be >= 1"), std::string::npos);
   EXPECT_NE(message({{"spatial_index", "quadtree"}}).find("'quadtree' is not one of: bbtree, hash"), std::string::npos);
+  EXPECT_EQ(message({{"wall_radius", -1.0}}), "settings.chipmunk.wall_radius: must be >= 0 (m)");
   EXPECT_EQ(message({{"hash_cell", 0.0}}), "settings.chipmunk.hash_cell: must be > 0 (m)");
   EXPECT_EQ(message({{"hash_count", 0}}), "settings.chipmunk.hash_count: must be >= 1");
   EXPECT_NE(message({{"sleep_time_threshold", 0.0}}).find("must be > 0"), std::string::npos);

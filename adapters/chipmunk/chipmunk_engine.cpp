@@ -161,6 +161,7 @@ class ChipmunkEngine final : public Engine {
             {"collision_slop", cpSpaceGetCollisionSlop(space_)},
             {"collision_bias", bias},
             {"collision_persistence", cpSpaceGetCollisionPersistence(space_)},
+            {"wall_radius", s_.wall_radius},
             {"spatial_index", s_.spatial_index},
             {"hash_cell", s_.hash_cell},
             {"hash_count", s_.hash_count},
@@ -183,14 +184,16 @@ class ChipmunkEngine final : public Engine {
   }
 
  private:
-  // Four static segments of radius 0 on the space's static body, along the container's bounds.
+  // Four static segments on the space's static body, of radius wall_radius (0: lines on the
+  // container's bounds), each set back by its radius so its surface lies on the bound.
   void add_walls(const Scene& scene) {
     cpBody* ground = cpSpaceGetStaticBody(space_);
-    const double x0 = scene.container.min.x(), y0 = scene.container.min.y();
-    const double x1 = scene.container.max.x(), y1 = scene.container.max.y();
+    const double w = s_.wall_radius;
+    const double x0 = scene.container.min.x() - w, y0 = scene.container.min.y() - w;
+    const double x1 = scene.container.max.x() + w, y1 = scene.container.max.y() + w;
     const cpVect corners[] = {cpv(x0, y0), cpv(x1, y0), cpv(x1, y1), cpv(x0, y1)};
     for (int k = 0; k < 4; ++k) {
-      cpShape* wall = cpSegmentShapeNew(ground, corners[k], corners[(k + 1) % 4], 0.0);
+      cpShape* wall = cpSegmentShapeNew(ground, corners[k], corners[(k + 1) % 4], w);
       cpShapeSetElasticity(wall, elasticity_);
       cpShapeSetFriction(wall, friction_);
       shapes_.push_back(cpSpaceAddShape(space_, wall));
@@ -229,6 +232,7 @@ void validate(const ChipmunkSettings& s) {
     throw InputError("settings.chipmunk.collision_bias: must be from 0 to 1 (the fraction of overlap left after 1 s)");
   if (s.collision_persistence < 1)
     throw InputError("settings.chipmunk.collision_persistence: must be >= 1 (steps a contact is remembered)");
+  if (!(s.wall_radius >= 0)) throw InputError("settings.chipmunk.wall_radius: must be >= 0 (m)");
   if (!(s.hash_cell > 0)) throw InputError("settings.chipmunk.hash_cell: must be > 0 (m)");
   if (s.hash_count < 1) throw InputError("settings.chipmunk.hash_count: must be >= 1");
   if (!(s.sleep_time_threshold > 0)) throw InputError("settings.chipmunk.sleep_time_threshold: must be > 0 (s)");
@@ -296,6 +300,7 @@ EngineEntry chipmunk_engine() {
             r.get("collision_slop", s.collision_slop);
             r.get("collision_bias", s.collision_bias);
             r.get("collision_persistence", s.collision_persistence);
+            r.get("wall_radius", s.wall_radius);
             r.get("spatial_index", s.spatial_index, {"bbtree", "hash"});
             r.get("hash_cell", s.hash_cell);
             r.get("hash_count", s.hash_count);

@@ -24,6 +24,10 @@ struct ChipmunkSettings {
   /// Steps a contact's cached impulse is kept after the shapes stop touching
   /// (cpSpaceSetCollisionPersistence). (count)
   int collision_persistence = 3;
+  /// Radius of the four wall segments (m). Each is set back by it, so the surface a ball touches
+  /// stays on the container's bound; 0 gives lines on the bounds. A ball whose centre crosses a
+  /// segment's middle is pushed out on the far side, so a thicker wall is harder to tunnel.
+  double wall_radius = 0.0;
   /// Broad phase: "bbtree" (Chipmunk's default axis-aligned bounding box tree) or "hash"
   /// (cpSpaceUseSpatialHash with hash_cell and hash_count).
   std::string spatial_index = "bbtree";
