@@ -7,6 +7,7 @@
 
 #include "box2d/box2d_engine.h"
 #include "bullet/bullet_engine.h"
+#include "chipmunk/chipmunk_engine.h"
 #include "input_error.h"
 #include "ode/ode_engine.h"
 #include "solver/exact.h"
@@ -22,6 +23,7 @@ const std::vector<EngineEntry>& engine_registry() {
       exact_engine(),
       box2d_engine(),
       bullet_engine(),
+      chipmunk_engine(),
       ode_engine(),
   };
   return engines;

@@ -6,7 +6,7 @@ BALLBENCH_PACKAGES=(
   cmake g++ pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
-  libbox2d-dev libbullet-dev libode-dev libxxhash-dev
+  libbox2d-dev libbullet-dev libchipmunk-dev libode-dev libxxhash-dev
   gnuplot-nox python3
 )
 
