@@ -188,8 +188,10 @@ TEST(ChipmunkAdapter, SettingsListEveryKnobOfBothProfiles) {
   EXPECT_EQ(stock["collision_persistence"], 3);
   EXPECT_EQ(stock["spatial_index"], "bbtree");
   EXPECT_EQ(stock["idle_speed_threshold"], 0.0);
-  EXPECT_EQ(stock["wall_radius"], 0.0);
-  EXPECT_EQ(tuned["wall_radius"], 0.0);  // both: lines on the bounds
+  // Both: solid walls as thick as Box2D's, half the 10 m box's side.
+  EXPECT_EQ(stock["wall_radius"], 5.0);
+  EXPECT_EQ(tuned["wall_radius"], 5.0);
+  EXPECT_EQ(find_engine("chipmunk").create(s, "tuned", {{"wall_radius", 0.0}})->settings()["wall_radius"], 0.0);
 
   EXPECT_EQ(tuned["iterations"], 30);
   EXPECT_DOUBLE_EQ(tuned["collision_slop"].get<double>(), 0.0025);  // 1% of the radius
@@ -242,7 +244,6 @@ TEST(ChipmunkAdapter, BadSettingsAreInputErrors) {
   EXPECT_NE(message({{"collision_bias", 1.5}}).find("must be from 0 to 1"), std::string::npos);
   EXPECT_NE(message({{"collision_persistence", 0}}).find("must be >= 1"), std::string::npos);
   EXPECT_NE(message({{"spatial_index", "quadtree"}}).find("'quadtree' is not one of: bbtree, hash"), std::string::npos);
-  EXPECT_EQ(message({{"wall_radius", -1.0}}), "settings.chipmunk.wall_radius: must be >= 0 (m)");
   EXPECT_EQ(message({{"hash_cell", 0.0}}), "settings.chipmunk.hash_cell: must be > 0 (m)");
   EXPECT_EQ(message({{"hash_count", 0}}), "settings.chipmunk.hash_count: must be >= 1");
   EXPECT_NE(message({{"sleep_time_threshold", 0.0}}).find("must be > 0"), std::string::npos);

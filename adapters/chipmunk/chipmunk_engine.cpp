@@ -161,7 +161,7 @@ class ChipmunkEngine final : public Engine {
             {"collision_slop", cpSpaceGetCollisionSlop(space_)},
             {"collision_bias", bias},
             {"collision_persistence", cpSpaceGetCollisionPersistence(space_)},
-            {"wall_radius", s_.wall_radius},
+            {"wall_radius", wall_radius_},
             {"spatial_index", s_.spatial_index},
             {"hash_cell", s_.hash_cell},
             {"hash_count", s_.hash_count},
@@ -188,7 +188,9 @@ class ChipmunkEngine final : public Engine {
   // container's bounds), each set back by its radius so its surface lies on the bound.
   void add_walls(const Scene& scene) {
     cpBody* ground = cpSpaceGetStaticBody(space_);
-    const double w = s_.wall_radius;
+    const Eigen::Vector2d extent = scene.container.max - scene.container.min;
+    wall_radius_ = s_.wall_radius >= 0 ? s_.wall_radius : std::max(1.0, 0.5 * extent.maxCoeff());
+    const double w = wall_radius_;
     const double x0 = scene.container.min.x() - w, y0 = scene.container.min.y() - w;
     const double x1 = scene.container.max.x() + w, y1 = scene.container.max.y() + w;
     const cpVect corners[] = {cpv(x0, y0), cpv(x1, y0), cpv(x1, y1), cpv(x0, y1)};
@@ -218,6 +220,7 @@ class ChipmunkEngine final : public Engine {
   double dt_;                    // the scene's step (s), for the derived bias rate
   cpSpace* space_;               // owns neither bodies nor shapes (freed in the destructor)
   double elasticity_ = 1, friction_ = 0;  // per shape: square roots of the scene's values
+  double wall_radius_ = 0;       // in force (m): the setting, or the thickness derived from the box
   std::vector<cpBody*> bodies_;  // scene order
   std::vector<cpShape*> shapes_; // walls, then balls
   double t_ = 0;
@@ -232,7 +235,8 @@ void validate(const ChipmunkSettings& s) {
     throw InputError("settings.chipmunk.collision_bias: must be from 0 to 1 (the fraction of overlap left after 1 s)");
   if (s.collision_persistence < 1)
     throw InputError("settings.chipmunk.collision_persistence: must be >= 1 (steps a contact is remembered)");
-  if (!(s.wall_radius >= 0)) throw InputError("settings.chipmunk.wall_radius: must be >= 0 (m)");
+  if (!std::isfinite(s.wall_radius))
+    throw InputError("settings.chipmunk.wall_radius: must be a number of metres (negative: derived from the box)");
   if (!(s.hash_cell > 0)) throw InputError("settings.chipmunk.hash_cell: must be > 0 (m)");
   if (s.hash_count < 1) throw InputError("settings.chipmunk.hash_count: must be >= 1");
   if (!(s.sleep_time_threshold > 0)) throw InputError("settings.chipmunk.sleep_time_threshold: must be > 0 (s)");

@@ -26,8 +26,10 @@ struct ChipmunkSettings {
   int collision_persistence = 3;
   /// Radius of the four wall segments (m). Each is set back by it, so the surface a ball touches
   /// stays on the container's bound; 0 gives lines on the bounds. A ball whose centre crosses a
-  /// segment's middle is pushed out on the far side, so a thicker wall is harder to tunnel.
-  double wall_radius = 0.0;
+  /// segment's middle is pushed out on the far side, so a thin wall is a hole for a fast ball, not
+  /// the solid side of the scene's box. Negative: max(1 m, half the container's larger side), as
+  /// thick as the Box2D adapter's walls.
+  double wall_radius = -1.0;
   /// Broad phase: "bbtree" (Chipmunk's default axis-aligned bounding box tree) or "hash"
   /// (cpSpaceUseSpatialHash with hash_cell and hash_count).
   std::string spatial_index = "bbtree";
