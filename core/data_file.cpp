@@ -11,10 +11,12 @@ namespace ballbench {
 
 namespace {
 
-// An existing target that is not a regular file (a FIFO, a device such as /dev/null) is written in
-// place: a rename would replace it with a regular file.
+// An existing target that is not a regular file (a FIFO, a device such as /dev/null), or a symbolic
+// link (/dev/stdout, a user's link to a file), is written in place: a rename would replace it with
+// a regular file, and /dev/stdout with one for the whole machine.
 bool special_target(const std::string& path) {
   std::error_code ec;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) return true;
   const auto st = std::filesystem::status(path, ec);
   return !ec && std::filesystem::exists(st) && !std::filesystem::is_regular_file(st) &&
          !std::filesystem::is_directory(st);

@@ -259,6 +259,16 @@ TEST(Cli, OutputsAreCheckedBeforeRunningAndNeverClobberWhatTheyShouldNot) {
   EXPECT_TRUE(std::filesystem::is_fifo(fifo));
   EXPECT_NE(read_back.find("\"checksum\""), std::string::npos) << read_back;
   std::filesystem::remove(fifo);
+  // A link (as /dev/stdout is) is written through: the link stays, its target gets the results.
+  const std::string target = (dir / ("ballbench_link_target." + std::to_string(::getpid()))).string();
+  const std::string link = target + ".link";
+  std::ofstream(target) << "old";
+  std::filesystem::create_symlink(target, link);
+  const Outcome linked = cli("run --quiet --scene seed-box --engine home --steps 2 --json " + link);
+  EXPECT_EQ(linked.status, 0) << linked.err;
+  EXPECT_TRUE(std::filesystem::is_symlink(link)) << "the link was replaced by a file";
+  EXPECT_NE(slurp(target).find("\"checksum\""), std::string::npos);
+  std::filesystem::remove(link), std::filesystem::remove(target);
 }
 
 TEST(Cli, SceneNamesCannotLeaveTheWorkingFolder) {
