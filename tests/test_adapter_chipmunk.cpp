@@ -18,6 +18,7 @@
 #include "chipmunk/chipmunk_engine.h"
 #include "input_error.h"
 #include "isolated_run.h"
+#include "adapter_calibration.h"
 #include "registry.h"
 #include "scene_loader.h"
 
@@ -32,63 +33,13 @@ namespace {
 // below any solver effect worth seeing.
 constexpr double kRestitutionTol = 1e-12;
 
-struct Calibration {
-  std::string profile;
-  double e;
-};
-
-void PrintTo(const Calibration& c, std::ostream* os) { *os << c.profile << ", e = " << c.e; }
-
-std::string calibration_name(const ::testing::TestParamInfo<Calibration>& p) {
-  return fmt::format("{}_e{}", p.param.profile, static_cast<int>(std::lround(p.param.e * 100)));
-}
+using calibration::Calibration;
+using calibration::calibration_name;
+using calibration::head_on_scene;
+using calibration::wall_scene;
 
 State run(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
-  auto engine = find_engine("chipmunk").create(s, profile, overrides);
-  for (int k = 0; k < steps; ++k) engine->step(s.dt);
-  State st;
-  engine->read(st);
-  return st;
-}
-
-// A ball of radius 0.1 crossing a 2 m box along x at `speed`: it meets the wall at x = 1 once
-// within `steps` and is on its way back when read.
-Scene wall_scene(double e, double speed) {
-  return parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 1.0
-restitution = {}
-[container]
-min = [-1.0, -1.0]
-max = [1.0, 1.0]
-[[ball]]
-pos = [0.0, 0.0]
-vel = [{}, 0.0]
-radius = 0.1
-)",
-                                 e, speed),
-                     "wall.toml");
-}
-
-// Head-on in open space, unequal radii and masses: relative speed 5 m/s, contact at t = 0.1 s.
-Scene head_on_scene(double e) {
-  return parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 1.0
-restitution = {}
-[[ball]]
-pos = [-0.5, 0.0]
-vel = [3.0, 0.0]
-radius = 0.2
-mass = 1.0
-[[ball]]
-pos = [0.5, 0.0]
-vel = [-2.0, 0.0]
-radius = 0.3
-mass = 2.0
-)",
-                                 e),
-                     "head-on.toml");
+  return calibration::run_steps("chipmunk", s, profile, steps, overrides);
 }
 
 class ChipmunkCalibration : public ::testing::TestWithParam<Calibration> {};

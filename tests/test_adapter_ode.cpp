@@ -11,6 +11,7 @@
 
 #include "input_error.h"
 #include "ode/ode_engine.h"
+#include "adapter_calibration.h"
 #include "registry.h"
 #include "scene_loader.h"
 
@@ -25,14 +26,7 @@ namespace {
 // double round-off. 1e-6 is fifty times the largest of these.
 constexpr double kRestitutionTol = 1e-6;
 
-struct Calibration {
-  std::string profile;
-  double e;
-};
-
-std::string name(const ::testing::TestParamInfo<Calibration>& p) {
-  return fmt::format("{}_e{}", p.param.profile, static_cast<int>(std::lround(p.param.e * 100)));
-}
+using calibration::Calibration;
 
 // Steps until some ball's velocity changes; returns the states before and after that step.
 std::pair<State, State> first_impact(const Scene& s, const std::string& profile) {
@@ -161,7 +155,7 @@ TEST(OdeAdapter, SimultaneousContactsCanAddEnergy) {
 INSTANTIATE_TEST_SUITE_P(Ode, OdeCalibration,
                          ::testing::Values(Calibration{"tuned", 0.8}, Calibration{"tuned", 1.0},
                                            Calibration{"stock", 0.8}, Calibration{"stock", 1.0}),
-                         name);
+                         calibration::calibration_name);
 
 TEST(OdeAdapter, StaysInThePlaneOnSeedBox) {
   // Spheres at z = 0 with contact normals and gravity in the plane get no z force at all, so the

@@ -154,7 +154,7 @@ class Home final : public Engine {
     if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     ball_of_.resize(n_);
     for (int i = 0; i < n_; ++i) ball_of_[i] = i;
-    if (soft_ && s.sleep_speed > 0) asleep_.assign(n_, 0), still_for_.assign(n_, 0.0);
+    if (soft_ && s.sleep_speed > 0) asleep_.assign(n_, 0), still_for_.assign(n_, 0.0), island_of_.assign(n_, -1);
   }
 
   void step(double dt) override {
@@ -223,10 +223,10 @@ class Home final : public Engine {
             {"max_events_per_ball", s_.max_events_per_ball},
             {"resting", s_.resting},
             {"substeps", s_.soft.substeps},
-            {"substep_iterations", s_.soft.iterations},
+            {"substep_iterations", s_.soft.substep_iterations},
             {"relax_iterations", s_.soft.relax_iterations},
-            {"max_stride", s_.soft.max_stride},
-            {"max_parts", s_.soft.max_parts},
+            {"max_stride", s_.max_stride},
+            {"max_parts", s_.max_parts},
             {"contact_hertz", s_.soft.contact_hertz},
             {"damping_ratio", s_.soft.damping_ratio},
             {"push_speed", s_.soft.push_speed},
@@ -853,7 +853,7 @@ class Home final : public Engine {
     if (r_.size()) permute(r_.data());
     if (inv_m_.size()) permute(inv_m_.data());
     permute(count_.data());
-    if (!asleep_.empty()) permute(asleep_.data()), permute(still_for_.data());
+    if (!asleep_.empty()) permute(asleep_.data()), permute(still_for_.data()), permute(island_of_.data());
     grid_.renumbered([&](const int* new_number) {
       for (int& b : ball_of_) b = new_number[b];
       warm_entries_.clear();
@@ -911,23 +911,22 @@ class Home final : public Engine {
     for (int b : cluster_) predict(b);
   }
 
-  // Scenes with gravity: one soft step (soft_step.h) over every contact that can touch within the
-  // step, found on a grid whose cells cover the fastest ball's motion.
-  // The soft step fixes each contact's normal for its step and tracks the separation along it,
-  // which holds while the balls move a small part of their size; a step in which the fastest ball
-  // would move further than max_stride of the smallest radius is cut into parts that do not, each
-  // with its contacts gathered afresh.
+  // Scenes with gravity: the step as soft steps (soft_part). The soft step fixes each contact's
+  // normal for its step and tracks the separation along it, which holds while the balls move a
+  // small part of their size; a step in which the fastest ball would move further than max_stride
+  // of the smallest radius is cut into parts that do not, each with its contacts gathered afresh.
   void soft_path() {
     if (sleeping_ == n_ && n_ > 0) return;  // every ball asleep: nothing can move or wake one
     double speed2 = 0;
     for (int i = 0; i < n_; ++i) speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
     const double travel = (std::sqrt(speed2) + g_.norm() * dt_) * dt_;
-    const double parts = std::ceil(travel / (s_.soft.max_stride * rmin_));
-    const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.soft.max_parts))) : 1;
+    const double parts = std::ceil(travel / (s_.max_stride * rmin_));
+    const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.max_parts))) : 1;
     for (int part = 0; part < k; ++part) soft_part(dt_ / k);
   }
 
-  // One soft step of dt.
+  // One soft step (soft_step.h) of dt over every contact that can touch within it, found on a grid
+  // whose cells cover the fastest ball's motion.
   void soft_part(double dt) {
     if (sleeping_ == n_ && n_ > 0) return;
     const double g = g_.norm();
@@ -1041,34 +1040,78 @@ class Home final : public Engine {
     warm_.assign(warm_entries_);
   }
 
-  // A sleeping ball wakes when a ball that can touch it within the step moves faster than
-  // sleep_speed relative to it: one landing on it, or one it rests on moving away.
-  // The balls woken are marked kWoken and listed in woken_.
+  // A sleeping ball wakes, with its whole island, when a ball that can touch it within the step
+  // moves faster than sleep_speed relative to it: one landing on it, or one it rests on moving
+  // away. The balls woken are marked kWoken and listed in woken_.
   void wake_touched() {
     woken_.clear();
+    waking_islands_.clear();
     const double limit2 = s_.sleep_speed * s_.sleep_speed;
     for (const SoftContact& c : soft_contacts_) {
       if (c.j < 0 || (asleep_[c.i] == kAsleep) == (asleep_[c.j] == kAsleep)) continue;
       const double wx = v_(c.i, 0) - v_(c.j, 0), wy = v_(c.i, 1) - v_(c.j, 1);
       if (wx * wx + wy * wy <= limit2) continue;
-      const int b = asleep_[c.i] == kAsleep ? c.i : c.j;
-      asleep_[b] = kWoken, still_for_[b] = 0, --sleeping_;
-      woken_.push_back(b);
+      const int64_t island = island_of_[asleep_[c.i] == kAsleep ? c.i : c.j];
+      if (std::find(waking_islands_.begin(), waking_islands_.end(), island) == waking_islands_.end())
+        waking_islands_.push_back(island);
     }
+    if (waking_islands_.empty()) return;
+    for (int b = 0; b < n_; ++b)
+      if (asleep_[b] == kAsleep &&
+          std::find(waking_islands_.begin(), waking_islands_.end(), island_of_[b]) != waking_islands_.end()) {
+        asleep_[b] = kWoken, still_for_[b] = 0, --sleeping_;
+        woken_.push_back(b);
+      }
   }
 
-  // A ball slower than sleep_speed for sleep_time falls asleep: it stops. dt: the time just stepped.
+  // Sleeping by islands, as Box2D does: the balls awake that contacts pushing apart (impulse > 0)
+  // join form an island, and an island whose every ball has been slower than sleep_speed for
+  // sleep_time falls asleep whole: its balls stop. (One ball frozen at a time would be a wall under
+  // the balls still settling on it, which would keep a pile's surface awake.) dt: the time just
+  // stepped.
   void fall_asleep(double dt) {
     const double limit2 = s_.sleep_speed * s_.sleep_speed;
-    for (int i = 0; i < n_; ++i) {
-      if (asleep_[i]) continue;
-      if (v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1) > limit2) {
-        still_for_[i] = 0;
-        continue;
+    const auto for_awake = [&](auto&& f) {
+      if (sleeping_ > 0)
+        for (int i : moving_) f(i);
+      else
+        for (int i = 0; i < n_; ++i) f(i);
+    };
+    bool any_still = false;
+    for_awake([&](int i) {
+      const bool slow = v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1) <= limit2;
+      still_for_[i] = slow ? still_for_[i] + dt : 0.0;
+      any_still = any_still || still_for_[i] >= s_.sleep_time;
+    });
+    if (!any_still) return;
+    // Union-find (path halving) over the awake balls; each root holds its island's least still time.
+    island_root_.resize(n_);
+    for_awake([&](int i) { island_root_[i] = i; });
+    const auto root = [&](int i) {
+      while (island_root_[i] != i) i = island_root_[i] = island_root_[island_root_[i]];
+      return i;
+    };
+    for (const SoftContact& c : soft_contacts_)
+      if (c.j >= 0 && c.impulse > 0 && !asleep_[c.i] && !asleep_[c.j]) {
+        const int a = root(c.i), b = root(c.j);
+        if (a != b) island_root_[std::max(a, b)] = std::min(a, b);
       }
-      still_for_[i] += dt;
-      if (still_for_[i] >= s_.sleep_time) asleep_[i] = kAsleep, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
-    }
+    island_still_.resize(n_);
+    for_awake([&](int i) { island_still_[i] = kNever; });
+    for_awake([&](int i) {
+      double& t = island_still_[root(i)];
+      t = std::min(t, still_for_[i]);
+    });
+    // Island labels stay unique across steps: this step's roots offset past every earlier label.
+    falling_.clear();
+    for_awake([&](int i) {
+      const int r = root(i);
+      if (island_still_[r] < s_.sleep_time) return;
+      island_of_[i] = islands_ + r;
+      falling_.push_back(i);
+    });
+    islands_ += n_;
+    for (int i : falling_) asleep_[i] = kAsleep, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
@@ -1378,6 +1421,12 @@ class Home final : public Engine {
   std::vector<int> woken_;          // the balls woken this step
   std::vector<int> moving_;         // the balls awake, while some sleep
   std::vector<double> still_for_;   // per ball: how long it has been slower than sleep_speed (s)
+  std::vector<int64_t> island_of_;  // per ball asleep: the island it fell asleep with (a label)
+  int64_t islands_ = 0;             // labels used so far
+  std::vector<int64_t> waking_islands_;  // scratch for wake_touched
+  std::vector<int> island_root_;    // scratch for fall_asleep: union-find parents
+  std::vector<double> island_still_;  // scratch for fall_asleep: an island's least still time (s)
+  std::vector<int> falling_;        // scratch for fall_asleep: the balls falling asleep
   int sleeping_ = 0;                // balls asleep
   std::vector<double> soft_inv_mass_;  // per ball while some sleep: 0 for a ball asleep
   SoftStepScratch soft_scratch_;
@@ -1407,10 +1456,10 @@ EngineEntry home_engine() {
             r.get("max_events_per_ball", s.max_events_per_ball);
             r.get("resting", s.resting, {"soft", "events"});
             r.get("substeps", s.soft.substeps);
-            r.get("substep_iterations", s.soft.iterations);
+            r.get("substep_iterations", s.soft.substep_iterations);
             r.get("relax_iterations", s.soft.relax_iterations);
-            r.get("max_stride", s.soft.max_stride);
-            r.get("max_parts", s.soft.max_parts);
+            r.get("max_stride", s.max_stride);
+            r.get("max_parts", s.max_parts);
             r.get("contact_hertz", s.soft.contact_hertz);
             r.get("damping_ratio", s.soft.damping_ratio);
             r.get("push_speed", s.soft.push_speed);
@@ -1418,10 +1467,10 @@ EngineEntry home_engine() {
             r.get("sleep_time", s.sleep_time);
             r.finish();
             if (s.soft.substeps < 1) throw InputError("settings.home.substeps: must be >= 1");
-            if (s.soft.iterations < 1) throw InputError("settings.home.substep_iterations: must be >= 1");
+            if (s.soft.substep_iterations < 1) throw InputError("settings.home.substep_iterations: must be >= 1");
             if (s.soft.relax_iterations < 0) throw InputError("settings.home.relax_iterations: must be >= 0");
-            if (!(s.soft.max_stride > 0)) throw InputError("settings.home.max_stride: must be > 0");
-            if (s.soft.max_parts < 1) throw InputError("settings.home.max_parts: must be >= 1");
+            if (!(s.max_stride > 0)) throw InputError("settings.home.max_stride: must be > 0");
+            if (s.max_parts < 1) throw InputError("settings.home.max_parts: must be >= 1");
             if (!(s.soft.contact_hertz > 0)) throw InputError("settings.home.contact_hertz: must be > 0");
             if (!(s.soft.damping_ratio >= 0)) throw InputError("settings.home.damping_ratio: must be >= 0");
             if (!(s.soft.push_speed > 0)) throw InputError("settings.home.push_speed: must be > 0");

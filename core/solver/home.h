@@ -44,14 +44,21 @@ struct HomeSettings {
   /// motion with resting clusters solved where they form. Scenes without gravity always run
   /// the event-driven path, exact between collisions.
   std::string resting = "events";
-  /// The soft step's substeps, push-out stiffness, damping and speed (resting = "soft").
+  /// The soft step's substeps, sweeps, push-out stiffness, damping and speed (resting = "soft").
   SoftStepSettings soft;
-  /// Sleeping (resting = "soft"): a ball slower than sleep_speed for sleep_time stops (its velocity
-  /// set to 0) and is not stepped; it holds the balls touching it as a wall would, and wakes when
-  /// a ball that can touch it within the step moves faster than sleep_speed relative to it
-  /// (Box2D v3's b2BodyDef sleepThreshold and b2_timeToSleep, per ball). 0, the default, never
-  /// sleeps: as for every engine in the harness (each adapter's README), a slow ball is not frozen
-  /// unless a run asks for it. (m/s, s)
+  /// The soft step fixes each contact's normal for its step, which holds while the balls move a
+  /// small part of their size: a step in which the fastest ball would move more than max_stride of
+  /// the smallest radius is cut into parts that do not, at most max_parts (beyond that, the balls
+  /// move further per part). (radii, count)
+  double max_stride = 0.5;
+  int max_parts = 64;
+  /// Sleeping (resting = "soft"), by islands as in Box2D (b2BodyDef sleepThreshold, b2_timeToSleep):
+  /// balls joined by contacts that push form an island; an island whose every ball has been slower
+  /// than sleep_speed for sleep_time stops (velocities set to 0) and is not stepped; it holds the
+  /// balls touching it as a wall would, and wakes whole when a ball that can touch one of its balls
+  /// within the step moves faster than sleep_speed relative to it. 0, the default, never sleeps: as
+  /// for every engine in the harness (each adapter's README), a slow ball is not frozen unless a
+  /// run asks for it. (m/s, s)
   double sleep_speed = 0;
   double sleep_time = 0.5;
 

@@ -94,7 +94,7 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   for (int step = 0; step < substeps; ++step) {
     for_moving([&](int i) { b.vx[i] += gxh, b.vy[i] += gyh; });
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
-    for (int it = 0; it < s.iterations; ++it)
+    for (int it = 0; it < s.substep_iterations; ++it)
       for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
     for_moving([&](int i) {
       const double mx = b.vx[i] * h, my = b.vy[i] * h;

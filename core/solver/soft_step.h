@@ -28,12 +28,8 @@ struct SoftContact {
 
 struct SoftStepSettings {
   int substeps = 4;            // (count)
-  int iterations = 1;          // sweeps over the contacts with the push, per substep
+  int substep_iterations = 1;  // sweeps over the contacts with the push, per substep
   int relax_iterations = 1;    // sweeps without the push, per substep
-  // Set by the caller (home): a step in which the fastest ball would move more than max_stride of
-  // the smallest radius is cut into at most max_parts soft steps, each gathering its contacts.
-  double max_stride = 0.5;
-  int max_parts = 64;
   double contact_hertz = 100;  // stiffness of the push-out (Hz); at most a quarter of the substep rate is used
   double damping_ratio = 10;   // of the push-out: heavily damped, so a push does not ring
   double push_speed = 3;       // fastest an overlap is pushed out (m/s)
