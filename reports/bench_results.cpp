@@ -92,6 +92,8 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       optional("steps_per_s", row.steps_per_s);
       optional("peak_rss_bytes_per_ball", row.peak_rss_bytes_per_ball);
       optional("engine_bytes_per_ball", row.engine_bytes_per_ball);
+      optional("settle_steps", row.settle_steps);
+      optional("start_rms_speed", row.start_rms_speed);
     }
     (row.window == "pour" ? out.pour : out.rows).push_back(std::move(row));
   }

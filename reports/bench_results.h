@@ -18,6 +18,8 @@ struct BenchRow {
   std::optional<double> steps_per_s;              // when the benchmark reports it
   std::optional<double> peak_rss_bytes_per_ball;  // the process's peak resident set over n
   std::optional<double> engine_bytes_per_ball;    // resident growth while the engine was built and run
+  std::optional<double> settle_steps;             // settled pile: steps before the timed ones
+  std::optional<double> start_rms_speed;          // settled pile: RMS speed when the timed steps began (m/s)
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 
