@@ -917,25 +917,27 @@ class Home final : public Engine {
   // of the smallest radius is cut into parts that do not, each with its contacts gathered afresh.
   void soft_path() {
     if (sleeping_ == n_ && n_ > 0) return;  // every ball asleep: nothing can move or wake one
-    double speed2 = 0;
-    for (int i = 0; i < n_; ++i) speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
-    const double travel = (std::sqrt(speed2) + g_.norm() * dt_) * dt_;
+    const StartScan first = scan_state();
+    const double travel = (std::sqrt(first.speed2) + g_.norm() * dt_) * dt_;
     const double parts = std::ceil(travel / (s_.max_stride * rmin_));
     const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.max_parts))) : 1;
-    for (int part = 0; part < k; ++part) soft_part(dt_ / k);
+    for (int part = 0; part < k; ++part) soft_part(dt_ / k, part == 0 ? first : scan_state());
+  }
+
+  // The largest squared speed and the positions' bounds, now.
+  StartScan scan_state() const {
+    StartScan scan;
+    for (int i = 0; i < n_; ++i) scan.add(p_(i, 0), p_(i, 1), v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
+    return scan;
   }
 
   // One soft step (soft_step.h) of dt over every contact that can touch within it, found on a grid
-  // whose cells cover the fastest ball's motion.
-  void soft_part(double dt) {
+  // whose cells cover the fastest ball's motion; `start`: the state's scan at its start.
+  void soft_part(double dt, const StartScan& start) {
     if (sleeping_ == n_ && n_ > 0) return;
     const double g = g_.norm();
-    double speed2 = 0;
-    HomeGrid::Bounds bounds;
-    for (int i = 0; i < n_; ++i) {
-      bounds.add(p_(i, 0), p_(i, 1));
-      speed2 = std::max(speed2, v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
-    }
+    const double speed2 = start.speed2;
+    const HomeGrid::Bounds& bounds = start.bounds;
     // The warm start holds one substep's impulses; a substep of another length scales them.
     const double h = dt / std::max(s_.soft.substeps, 1);
     const double warm_scale = warm_h_ > 0 ? h / warm_h_ : 1.0;
