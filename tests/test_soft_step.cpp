@@ -194,6 +194,8 @@ radius = 0.05
     e->read(s);
     return std::abs(s.vel(1, 0)) + std::abs(s.vel(1, 1) + 1e-3 * scene.dt);  // beyond its free fall
   };
+  // Untouched, its velocity is its free fall to round-off (1e-5 m/s of gravity's, so ~1e-21): 1e-12
+  // is far above that. Pushed, it takes a share of the passing ball's 50 m/s (measured above 1 m/s).
   EXPECT_LT(moved_by_contact(nlohmann::json::object()), 1e-12);
   EXPECT_GT(moved_by_contact({{"max_stride", 1e9}}), 1.0) << "one whole step should have pushed it";
 }
