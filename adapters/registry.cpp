@@ -1,6 +1,7 @@
 #include "registry.h"
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -31,8 +32,14 @@ const std::vector<EngineEntry>& engine_registry() {
 
 const EngineEntry* reference_engine() {
   for (const auto& e : engine_registry())
-    if (e.info.name == "exact") return &e;
+    if (e.info.role == EngineRole::reference) return &e;
   return nullptr;
+}
+
+std::map<std::string, EngineRole> engine_roles() {
+  std::map<std::string, EngineRole> roles;
+  for (const auto& e : engine_registry()) roles[e.info.name] = e.info.role;
+  return roles;
 }
 
 const EngineEntry& find_engine(const std::string& name) {

@@ -1,6 +1,7 @@
 #pragma once
 // Every engine the harness knows: our own solvers and the adapters. Adding an engine is one folder
 // under adapters/ and one line in registry.cpp.
+#include <map>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,12 @@ namespace ballbench {
 
 const std::vector<EngineEntry>& engine_registry();
 
-// The engine errors are measured against (`exact`, event-driven), or null if it is not built in.
+// The engine errors are measured against (role `reference`: `exact`, event-driven), or null if
+// none is built in.
 const EngineEntry* reference_engine();
+
+// Engine name -> role, for the report (which reads result files and knows engines only by name).
+std::map<std::string, EngineRole> engine_roles();
 
 // By name; throws InputError naming the known engines.
 const EngineEntry& find_engine(const std::string& name);

@@ -6,6 +6,16 @@
 
 namespace ballbench {
 
+const char* role_name(EngineRole role) {
+  switch (role) {
+    case EngineRole::ours: return "ours";
+    case EngineRole::reference: return "reference";
+    case EngineRole::thesis: return "thesis";
+    case EngineRole::external: return "external";
+  }
+  return "external";
+}
+
 std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
   const SceneFeatures f = scene.features();
   std::vector<std::string> missing;

@@ -48,11 +48,24 @@ struct SweepKnob {
   nlohmann::json values;  // a JSON array of setting values
 };
 
+// What an engine is to the harness. The report compares `ours` with `external` engines, measures
+// everyone's error against the `reference`, and pictures the `thesis` port beside ours.
+enum class EngineRole {
+  ours,       // our solver: `home`
+  reference,  // the accuracy reference every run is measured against: `exact`
+  thesis,     // the 2017 thesis's algorithm ported as it was: `home-seed`
+  external,   // an engine we compare against (every adapter)
+};
+
+// "ours", "reference", "thesis", "external".
+const char* role_name(EngineRole role);
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
   std::string summary;     // one line for `ballbench list`
   std::string limits;      // what in the engine shapes results (clamps, slops, precision), for the report
+  EngineRole role = EngineRole::external;
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
   std::vector<SweepKnob> sweep_knobs;             // what trades its run time for accuracy

@@ -265,7 +265,8 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
       figures.push_back(energy_figure(scene, by_scene[scene], "."));
       std::vector<const Result*> pictured;  // the thesis's algorithm beside ours
       for (const Result* r : by_scene[scene])
-        if ((r->engine == "home-seed" || r->engine == "home") && !r->series.final_pos.empty()) pictured.push_back(r);
+        if ((role_of(in, r->engine) == EngineRole::thesis || role_of(in, r->engine) == EngineRole::ours) &&
+            !r->series.final_pos.empty()) pictured.push_back(r);
       if (!pictured.empty()) figures.push_back(scene_figure(scene, pictured, "."));
     }
     for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));

@@ -199,7 +199,8 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
       "at a level.\n\n");
 }
 
-void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vector<Figure>& figures) {
+void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults& bench,
+                 const std::vector<Figure>& figures) {
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
       "scenes. `gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; both at the seed's density in a box of "
       "side sqrt(5 n), timed after 5 warm-up steps from the start, so the bowl is timed early in its pour (from 10^5 "
@@ -250,19 +251,19 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
     // Each of our solver's profiles against the fastest external engine at each count both ran:
     // a sleeping profile against every external row, one without sleeping against those without.
     const auto sleeps = [](const std::string& profile) { return profile.ends_with("-sleep"); };
-    std::vector<std::string> ours_profiles;
+    std::vector<std::pair<std::string, std::string>> ours_runs;  // (engine, profile)
     for (const BenchRow& r : bench.rows)
-      if (r.scene == scene && r.engine == "home") add_once(ours_profiles, r.profile);
-    for (const std::string& profile : ours_profiles) {
+      if (r.scene == scene && role_of(in, r.engine) == EngineRole::ours) add_once(ours_runs, {r.engine, r.profile});
+    for (const auto& [engine, profile] : ours_runs) {
+      const auto is_ours = [&](const BenchRow& r) { return r.engine == engine && r.profile == profile; };
       std::vector<std::string> ratios;
       for (long n : counts) {
         const BenchRow* ours = nullptr;
         const BenchRow* fastest = nullptr;
         for (const BenchRow& r : bench.rows) {
           if (r.scene != scene || r.n != n || !r.error.empty()) continue;
-          if (r.engine == "home" && r.profile == profile) ours = &r;
-          const bool external = r.engine != "home" && r.engine != "home-seed" && r.engine != "exact" &&
-                                (sleeps(profile) || !sleeps(r.profile));
+          if (is_ours(r)) ours = &r;
+          const bool external = role_of(in, r.engine) == EngineRole::external && (sleeps(profile) || !sleeps(r.profile));
           if (external && (!fastest || r.ns_per_ball_step < fastest->ns_per_ball_step)) fastest = &r;
         }
         if (ours && fastest)
@@ -272,19 +273,17 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
       }
       if (!ratios.empty())
         put("\n`{}` against the fastest external engine{} (its ns per ball-step over ours, same run): {}.\n",
-            run_label("home", profile), sleeps(profile) ? ", sleeping or not" : " without sleeping",
+            run_label(engine, profile), sleeps(profile) ? ", sleeping or not" : " without sleeping",
             fmt::join(ratios, "; "));
       // The profile's largest run: rate and memory.
       const BenchRow* largest = nullptr;
       for (const BenchRow& r : bench.rows)
-        if (r.scene == scene && r.engine == "home" && r.profile == profile && r.error.empty() &&
-            (!largest || r.n > largest->n))
-          largest = &r;
+        if (r.scene == scene && is_ours(r) && r.error.empty() && (!largest || r.n > largest->n)) largest = &r;
       if (largest && largest->steps_per_s)
         put("\n`{}` at {} balls: {:.1f} steps per second; memory {} bytes per ball (resident growth from a trimmed "
             "heap while the world was built and run: what the engine holds), peak resident set of the benchmark "
             "process {} bytes per ball.\n",
-            run_label("home", profile), largest->n, *largest->steps_per_s,
+            run_label(engine, profile), largest->n, *largest->steps_per_s,
             largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
             largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
     }
@@ -302,11 +301,11 @@ void put_scaling(MarkdownBuffer& put, const BenchResults& bench, const std::vect
         failures.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, table_cell(r.error)));
     if (!failures.empty()) put("\nFailed: {}.\n", fmt::join(failures, "; "));
     for (const BenchRow& r : bench.pour)
-      if (r.scene == scene && r.engine == "home" && r.error.empty() && r.steps_per_s)
-        put("\nOver the first second of the pour instead (100 steps from rest, no warm-up; `pour/home/default/{}/{}`), "
-            "`home` at {} balls makes {:.1f} steps per second: balls reach the floor and pile up, and the grid's cells "
+      if (r.scene == scene && role_of(in, r.engine) == EngineRole::ours && r.error.empty() && r.steps_per_s)
+        put("\nOver the first second of the pour instead (100 steps from rest, no warm-up; `pour/{}/default/{}/{}`), "
+            "`{}` at {} balls makes {:.1f} steps per second: balls reach the floor and pile up, and the grid's cells "
             "grow with the fastest fall (core/solver/PERFORMANCE.md).\n",
-            r.scene, r.n, r.n, *r.steps_per_s);
+            r.engine, r.scene, r.n, r.engine, r.n, *r.steps_per_s);
     put("\n");
   }
 }
@@ -346,6 +345,11 @@ void put_harness(MarkdownBuffer& put, const BenchResults& bench) {
 }
 
 }  // namespace
+
+EngineRole role_of(const ReportInputs& in, const std::string& engine) {
+  const auto it = in.roles.find(engine);
+  return it == in.roles.end() ? EngineRole::external : it->second;
+}
 
 ReportInputs read_report_inputs(const std::string& results_dir) {
   ReportInputs in;
@@ -434,7 +438,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     put_figures(put, figures, "picture", scene);
   }
   for (const SweepResult& sw : in.sweeps) put_sweep(put, sw, figures);
-  if (in.bench && !in.bench->rows.empty()) put_scaling(put, *in.bench, figures);
+  if (in.bench && !in.bench->rows.empty()) put_scaling(put, in, *in.bench, figures);
   if (in.harness && !in.harness->harness.empty()) put_harness(put, *in.harness);
   for (const FrontierResult& f : in.frontiers) put_frontier(put, f, figures);
 

@@ -1,6 +1,7 @@
 #pragma once
 // Results (JSON files) -> REPORT.md. It reads result files only: every number in the report can be
 // traced to a file in the results folder.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_results.h"
+#include "engine.h"
 #include "frontier_result.h"
 #include "result.h"
 #include "sweep_result.h"
@@ -21,7 +23,12 @@ struct ReportInputs {
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
   std::optional<BenchResults> harness;  // results/harness.json (bench/ballbench_harness_benchmark)
+  // Engine name -> role (the registry's engine_roles(), given by the caller); a name not in it is
+  // external.
+  std::map<std::string, EngineRole> roles;
 };
+
+EngineRole role_of(const ReportInputs& in, const std::string& engine);
 
 // A figure drawn for the report (figures.h).
 struct Figure {

@@ -91,6 +91,34 @@ TEST(BenchResults, ReadsHarnessBenchmarksAndTheReportShowsThem) {
     EXPECT_NE(md.find(want), std::string::npos) << want << "\n" << md;
 }
 
+// The report tells our solver from the engines it is compared with by role, not by name: an
+// engine of role `ours` under any name gets the ratio line, the reference and the thesis's port are
+// never the "fastest external engine".
+TEST(BenchResults, TheScalingRatiosFollowTheEnginesRoles) {
+  BenchResults b;
+  const auto row = [](std::string engine, double ns) {
+    BenchRow r;
+    r.engine = std::move(engine);
+    r.profile = "default";
+    r.scene = "gas";
+    r.n = 1000;
+    r.ns_per_ball_step = ns;
+    return r;
+  };
+  b.rows = {row("mine", 10), row("theirs", 50), row("oracle", 20), row("seed", 1)};
+  ReportInputs in;
+  in.run = nlohmann::json::object();
+  in.bench = b;
+  in.roles = {{"mine", EngineRole::ours}, {"oracle", EngineRole::reference}, {"seed", EngineRole::thesis}};
+  const std::string md = render_report(in);
+  EXPECT_NE(md.find("`mine` against the fastest external engine without sleeping (its ns per ball-step over ours, "
+                    "same run): 1000 balls: 5.0x (vs theirs)"),
+            std::string::npos)
+      << md;
+  EXPECT_EQ(md.find("`theirs` against"), std::string::npos) << md;
+  EXPECT_EQ(md.find("`oracle` against"), std::string::npos) << md;
+}
+
 TEST(BenchResults, AHarnessRowWithoutItsCountersIsAnInputError) {
   const auto path = std::filesystem::temp_directory_path() / ("bb_harness_bad." + std::to_string(::getpid()) + ".json");
   for (const char* row : {R"({"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration", "overhead": 1.0})",

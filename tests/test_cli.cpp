@@ -447,7 +447,8 @@ TEST(Cli, ListShowsScenesAndEnginesWithVersions) {
   const Outcome o = cli("list");
   EXPECT_EQ(o.status, 0);
   EXPECT_NE(o.out.find("seed-bowl"), std::string::npos);
-  EXPECT_NE(o.out.find("home-seed    thesis-2017"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("home-seed    thesis-2017    thesis"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("box2d        2.4.1          external"), std::string::npos) << o.out;
 }
 
 }  // namespace

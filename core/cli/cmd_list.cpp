@@ -21,7 +21,7 @@ void list() {
   }
   fmt::print("engines:\n");
   for (const auto& e : engine_registry())
-    fmt::print("  {:<12} {:<14} profiles: {:<14} {}\n", e.info.name, e.info.version,
+    fmt::print("  {:<12} {:<14} {:<9} profiles: {:<14} {}\n", e.info.name, e.info.version, role_name(e.info.role),
                fmt::format("{}", fmt::join(e.info.profiles, ",")), e.info.summary);
 }
 

@@ -275,7 +275,8 @@ void report(const ReportArgs& a) {
     context["scenes"] = suite.scenes;  // the report's order
     write_file_atomically(results_dir + "/run.json", context.dump(2) + "\n", "the run record");
   }
-  const ReportInputs inputs = read_report_inputs(results_dir);
+  ReportInputs inputs = read_report_inputs(results_dir);
+  inputs.roles = engine_roles();
   const std::string md = render_report(inputs, draw_figures(inputs, a.out));
   write_file_atomically(a.out + "/REPORT.md", md, "the report");
   fmt::print("wrote {}/REPORT.md\n", a.out);

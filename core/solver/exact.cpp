@@ -1069,6 +1069,7 @@ class Exact final : public Engine {
 EngineEntry exact_engine() {
   EngineInfo info;
   info.name = "exact";
+  info.role = EngineRole::reference;
   info.version = "1.0";
   info.summary =
       "event-driven reference: exact parabolic flights, binary collisions in time order, rest rules for piles";

@@ -1440,6 +1440,7 @@ class Home final : public Engine {
 EngineEntry home_engine() {
   EngineInfo info;
   info.name = "home";
+  info.role = EngineRole::ours;
   info.version = "0.1";
   info.limits =
       "double; impacts slower than rest_velocity (2 |g| dt) are resting contact (restitution 0); contacts within "

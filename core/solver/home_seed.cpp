@@ -153,6 +153,7 @@ class HomeSeed final : public Engine {
 EngineEntry home_seed_engine() {
   EngineInfo info;
   info.name = "home-seed";
+  info.role = EngineRole::thesis;
   info.version = "thesis-2017";
   info.limits =
       "double; discrete collision checks once per step with per-ball (or per-pair) flags, as in the thesis: "
