@@ -126,7 +126,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   engine->read(state);
   metrics.observe(state);
   record(0);
-  if (options.trajectory) options.trajectory->write(run_label(r), 0, state);
+  if (options.trajectory) options.trajectory->write(r.engine, r.profile, 0, state);
   uint64_t final_sum = state_checksum(state), trajectory_sum = chain_checksum(kChecksumSeed, final_sum);
 
   const long report_every = std::max(1L, r.steps / 100);
@@ -173,7 +173,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
         reference.reset();
       }
     }
-    if (options.trajectory) options.trajectory->write(run_label(r), k, state);
+    if (options.trajectory) options.trajectory->write(r.engine, r.profile, k, state);
     r.steps_done = k;
     if (k % every == 0 || k == r.steps) {
       sampled = k;

@@ -12,18 +12,18 @@ namespace ballbench {
 TrajectoryCsv::TrajectoryCsv(const std::string& path) : path_(path), tmp_(path + ".tmp") {
   f_ = std::fopen(tmp_.c_str(), "w");
   if (!f_) throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
-  std::fputs("engine,step,t,id,x,y,vx,vy\n", f_);
+  std::fputs("engine,profile,step,t,id,x,y,vx,vy\n", f_);
 }
 
 TrajectoryCsv::~TrajectoryCsv() {
   if (f_) std::fclose(f_);
 }
 
-void TrajectoryCsv::write(const std::string& engine, long step, const State& s) {
+void TrajectoryCsv::write(const std::string& engine, const std::string& profile, long step, const State& s) {
   fmt::memory_buffer buf;
   for (int i = 0; i < s.n(); ++i)
-    fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{},{}\n", engine, step, s.t, i, s.pos(i, 0), s.pos(i, 1),
-                   s.vel(i, 0), s.vel(i, 1));
+    fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{},{},{}\n", engine, profile, step, s.t, i, s.pos(i, 0),
+                   s.pos(i, 1), s.vel(i, 0), s.vel(i, 1));
   std::fwrite(buf.data(), 1, buf.size(), f_);
 }
 

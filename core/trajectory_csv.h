@@ -1,6 +1,7 @@
 #pragma once
-// --trajectory output: CSV with header `engine,step,t,id,x,y,vx,vy`, one row per ball per sample,
-// step 0 being the initial state. Numbers are printed round-trip exact (shortest form that reads
+// --trajectory output: CSV with header `engine,profile,step,t,id,x,y,vx,vy`, one row per ball per
+// sample, step 0 being the initial state. `engine` and `profile` are the result JSON's fields of
+// the same names, so the two join on them. Numbers are printed round-trip exact (shortest form that reads
 // back to the same double), so metrics can be recomputed from the file independently.
 #include <cstdio>
 #include <string>
@@ -16,7 +17,7 @@ class TrajectoryCsv {
   TrajectoryCsv(const TrajectoryCsv&) = delete;
   TrajectoryCsv& operator=(const TrajectoryCsv&) = delete;
 
-  void write(const std::string& engine, long step, const State& s);
+  void write(const std::string& engine, const std::string& profile, long step, const State& s);
   void close();  // flushes and renames into place; throws InputError if writing failed
 
  private:

@@ -7,7 +7,7 @@ BALLBENCH_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
   libbox2d-dev libbullet-dev libchipmunk-dev libode-dev libxxhash-dev
-  gnuplot-nox python3
+  gnuplot-nox python3 python3-pandas
 )
 
 # CI only (.ci/run): clang and its runtime libraries for the libFuzzer target (tests/fuzz/). The

@@ -129,8 +129,9 @@ def main():
     run_times = defaultdict(dict)
     with open(csv_path) as f:
         for row in csv.DictReader(f):
-            runs[row["engine"]][int(row["step"])].append((float(row["x"]), float(row["y"]), float(row["vx"]), float(row["vy"])))
-            run_times[row["engine"]][int(row["step"])] = float(row["t"])
+            label = row["engine"] if row["profile"] == "default" else f'{row["engine"]}/{row["profile"]}'
+            runs[label][int(row["step"])].append((float(row["x"]), float(row["y"]), float(row["vx"]), float(row["vy"])))
+            run_times[label][int(row["step"])] = float(row["t"])
     bad = []
     for r in results:
         label = r["engine"] if r["profile"] == "default" else f'{r["engine"]}/{r["profile"]}'

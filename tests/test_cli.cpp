@@ -337,7 +337,7 @@ TEST(Cli, AnInterruptKeepsTheRowsDoneAndLeavesNothingBehind) {
     EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << e;
     const std::string results = slurp(json);
     EXPECT_NE(results.find("\"status\": \"interrupted\""), std::string::npos) << results.substr(0, 300);
-    EXPECT_EQ(slurp(csv).rfind("engine,step,t,id,x,y,vx,vy\n", 0), 0u);
+    EXPECT_EQ(slurp(csv).rfind("engine,profile,step,t,id,x,y,vx,vy\n", 0), 0u);
     for (const auto& f : std::filesystem::directory_iterator(dir)) {
       const std::string name = f.path().filename().string();
       EXPECT_TRUE(name == "r.json" || name == "t.csv" || name == "out" || name == "err") << "left behind: " << name;
@@ -438,7 +438,7 @@ TEST(Cli, IsolatedAndInProcessRunsAgree) {
   EXPECT_EQ(checksums(ja), checksums(jb));
   EXPECT_EQ(slurp(c1), slurp(c2));
   const std::string csv = slurp(c1);
-  EXPECT_EQ(csv.rfind("engine,step,t,id,x,y,vx,vy\n", 0), 0u);
+  EXPECT_EQ(csv.rfind("engine,profile,step,t,id,x,y,vx,vy\n", 0), 0u);
   EXPECT_EQ(csv.find("engine,", 1), std::string::npos);  // one header
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 2 * 51 * 20);
 }

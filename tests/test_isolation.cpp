@@ -177,7 +177,7 @@ TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
   std::string line;
   long header = 0, home = 0, free_rows = 0, other = 0;
   while (std::getline(in, line)) {
-    if (line == "engine,step,t,id,x,y,vx,vy") ++header;
+    if (line == "engine,profile,step,t,id,x,y,vx,vy") ++header;
     else if (line.rfind("home,", 0) == 0) ++home;
     else if (line.rfind("free,", 0) == 0) ++free_rows;
     else ++other;
