@@ -64,9 +64,18 @@ nlohmann::json to_json(const SweepResult& s) {
                       {"energy_rel", p.energy_rel},
                       {"tunnelling", p.tunnelling},
                       {"sticking", p.sticking},
-                      {"pareto", p.pareto}});
-  return {{"scene", s.scene},   {"n", s.n},           {"horizon", s.horizon}, {"reference", s.reference},
-          {"repeats", s.repeats}, {"context", s.context}, {"interrupted", s.interrupted}, {"points", points}};
+                      {"pareto", p.pareto},
+                      {"plan_index", p.plan_index}});
+  return {{"scene", s.scene},
+          {"n", s.n},
+          {"horizon", s.horizon},
+          {"reference", s.reference},
+          {"repeats", s.repeats},
+          {"context", s.context},
+          {"interrupted", s.interrupted},
+          {"plan", s.plan},
+          {"shard", {{"index", s.shard_index}, {"count", s.shard_count}}},
+          {"points", points}};
 }
 
 SweepResult sweep_from_json(const nlohmann::json& j) {
@@ -78,6 +87,13 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
   s.repeats = j.at("repeats").get<int>();
   s.context = j.value("context", nlohmann::json::object());
   s.interrupted = j.value("interrupted", "");
+  s.plan = j.value("plan", nlohmann::json());
+  if (j.contains("shard")) {
+    s.shard_index = j.at("shard").at("index").get<int>();
+    s.shard_count = j.at("shard").at("count").get<int>();
+    if (s.shard_count < 1 || s.shard_index < 1 || s.shard_index > s.shard_count)
+      throw InputError(fmt::format("shard {}/{}: not a shard (I/N with 1 <= I <= N)", s.shard_index, s.shard_count));
+  }
   for (const auto& q : j.at("points")) {
     SweepPoint p;
     p.engine = q.at("engine").get<std::string>();
@@ -97,6 +113,7 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
     p.tunnelling = q.at("tunnelling").get<int>();
     p.sticking = q.at("sticking").get<int>();
     p.pareto = q.at("pareto").get<bool>();
+    p.plan_index = q.value("plan_index", static_cast<long>(s.points.size()));
     s.points.push_back(std::move(p));
   }
   return s;
@@ -116,6 +133,38 @@ std::string sweep_csv(const SweepResult& s) {
                        p.profile, p.knob, value, p.dt, p.steps, p.status, p.ns_median(), lo, hi, p.engine_s_median(),
                        p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);
   }
+  return out;
+}
+
+SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std::vector<std::string>& names) {
+  if (shards.empty()) throw InputError("merge: no shards given");
+  const SweepResult& first = shards.front();
+  if (first.plan.is_null())
+    throw InputError(fmt::format("merge: {} has no plan (written by a ballbench without --shard)", names.front()));
+  std::vector<std::string> seen(first.shard_count + 1);
+  SweepResult out = first;
+  out.points.clear();
+  out.shard_index = out.shard_count = 1;
+  out.context["shards"] = nlohmann::json::array();
+  for (size_t k = 0; k < shards.size(); ++k) {
+    const SweepResult& s = shards[k];
+    if (s.plan != first.plan || s.shard_count != first.shard_count)
+      throw InputError(fmt::format("merge: {} is a shard of another sweep than {} (its plan or shard count differs)",
+                                   names[k], names.front()));
+    if (!seen[s.shard_index].empty())
+      throw InputError(fmt::format("merge: {} and {} are both shard {}/{}", seen[s.shard_index], names[k], s.shard_index,
+                                   s.shard_count));
+    if (!s.interrupted.empty())
+      throw InputError(fmt::format("merge: {} was interrupted ({}); run its shard again", names[k], s.interrupted));
+    seen[s.shard_index] = names[k];
+    out.context["shards"].push_back(s.context);
+    out.points.insert(out.points.end(), s.points.begin(), s.points.end());
+  }
+  for (int i = 1; i <= first.shard_count; ++i)
+    if (seen[i].empty()) throw InputError(fmt::format("merge: shard {}/{} is missing", i, first.shard_count));
+  std::stable_sort(out.points.begin(), out.points.end(),
+                   [](const SweepPoint& a, const SweepPoint& b) { return a.plan_index < b.plan_index; });
+  mark_pareto(out.points);
   return out;
 }
 

@@ -25,6 +25,7 @@ struct SweepPoint {
   double energy_rel = 0;            // max |E - E_ref| / E_ref(0) over the run
   int tunnelling = 0, sticking = 0; // wall + pair events (metrics/tunnelling.h, metrics/sticking.h)
   bool pareto = false;              // on its engine's Pareto front (engine time vs pos_rms)
+  long plan_index = 0;              // its place in the sweep's plan (shards hold some of the places)
 
   double ns_median() const;
   double engine_s_median() const;
@@ -38,8 +39,18 @@ struct SweepResult {
   int repeats = 0;           // timing runs per point
   nlohmann::json context;    // machine, compiler, command, date
   std::string interrupted;   // "SIGINT"/"SIGTERM" if the sweep was stopped: its points are those run so far
+  // What the whole sweep runs (scene, horizon, reference, repeats, every point's engine, profile,
+  // knob and value), whichever shard this is; shards of one sweep have the same plan.
+  nlohmann::json plan;
+  int shard_index = 1, shard_count = 1;  // this file holds the points of shard index of count (1/1: all)
   std::vector<SweepPoint> points;
 };
+
+// Shards of one sweep, one SweepResult each (their file names, for messages): the points of all of
+// them in plan order, Pareto fronts marked over all; context of the first, with every shard's as
+// context.shards. Throws InputError naming the file if the shards are of different plans, if one
+// is given twice or missing, or if one was interrupted.
+SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std::vector<std::string>& names);
 
 double median(std::vector<double> v);
 

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "result.h"
 
@@ -56,10 +57,11 @@ radius = 0.1
   void TearDown() override { fs::remove_all(root_); }
 
   // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
-  int report(const std::string& args = "") {
-    const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI +
-                            " report --no-bench --out " + out().string() + " " + args + " >/dev/null 2>" +
-                            (root_ / "err.txt").string();
+  int report(const std::string& args = "") { return command("report --no-bench --out " + out().string() + " " + args); }
+  // Runs `ballbench ARGS` on the stand-in scenes; returns the exit status, stderr in err_.
+  int command(const std::string& args) {
+    const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI + " " +
+                            args + " >/dev/null 2>" + (root_ / "err.txt").string();
     const int rc = std::system(cmd.c_str());
     err_ = slurp(root_ / "err.txt");
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);
@@ -138,6 +140,29 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
   ASSERT_EQ(report(), 0) << err_;
   EXPECT_TRUE(ran("seed-box")) << err_;
   EXPECT_TRUE(reused("seed-bowl")) << err_;
+}
+
+// A report run as two shards (on two machines, say), merged: every part's result file and a
+// REPORT.md with every section of the quick suite; a shard alone renders nothing, and a merge with
+// a shard missing is refused.
+TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
+  const fs::path one = root_ / "shard1", two = root_ / "shard2", merged = root_ / "merged";
+  for (const auto& [dir, which] : {std::pair{one, "1/2"}, std::pair{two, "2/2"}}) {
+    ASSERT_EQ(command("report --no-bench --out " + dir.string() + " --shard " + which), 0) << err_;
+    EXPECT_FALSE(fs::exists(dir / "REPORT.md")) << which;
+  }
+  EXPECT_EQ(command("merge --out " + merged.string() + " " + one.string()), 2);
+  EXPECT_NE(err_.find("report shard 2/2 is missing"), std::string::npos) << err_;
+  ASSERT_EQ(command("merge --out " + merged.string() + " " + two.string() + " " + one.string()), 0) << err_;
+  std::set<std::string> files;
+  for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());
+  EXPECT_EQ(files, (std::set<std::string>{"run.json", "seed-box.json", "seed-bowl.json", "stress-seed-box.json",
+                                          "sweep-seed-box.csv", "sweep-seed-box.json"}));
+  const std::string md = slurp(merged / "REPORT.md");
+  for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",
+                           "## Stability frontier: `seed-box`"})
+    EXPECT_NE(md.find(want), std::string::npos) << want;
+  EXPECT_NE(slurp(merged / "results" / "run.json").find("\"shards\""), std::string::npos);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <tuple>
 
 #include "cli_runner.h"
 #include "input_error.h"
@@ -113,6 +114,76 @@ TEST_F(SweepCli, WritesJsonAndCsvAndPrintsEachEnginesFront) {
   const std::string csv = testing::slurp((dir_ / "s.csv").string());
   EXPECT_EQ(csv.rfind("engine,profile,knob,value,dt,steps,status,ns_per_ball_step_median", 0), 0u) << csv;
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), static_cast<long>(s.points.size()) + 1);
+}
+
+// Three shards of a sweep, each run apart and written to its own file, merged: the points of the
+// unsharded sweep, in its order, equal in everything but timing (and the Pareto marks, which
+// follow the timing).
+TEST_F(SweepCli, ThreeShardsMergedEqualTheWholeSweepButForTiming) {
+  const std::string common = "sweep --scene seed-box --engine home,box2d --horizon 0.2 --repeats 1 --quiet --json ";
+  const std::string whole = (dir_ / "whole.json").string();
+  ASSERT_EQ(run_cli(common + whole).status, 0);
+  std::vector<std::string> shards;
+  for (int i = 3; i >= 1; --i) {  // any order
+    shards.push_back((dir_ / ("shard" + std::to_string(i) + ".json")).string());
+    const auto o = run_cli(common + shards.back() + " --shard " + std::to_string(i) + "/3");
+    ASSERT_EQ(o.status, 0) << o.err;
+    EXPECT_EQ(o.out.find("Pareto fronts"), std::string::npos) << "a shard's fronts are partial: " << o.out;
+  }
+  const std::string merged = (dir_ / "merged.json").string();
+  const auto o = run_cli("merge --out " + merged + " " + shards[0] + " " + shards[1] + " " + shards[2]);
+  ASSERT_EQ(o.status, 0) << o.err;
+  const SweepResult a = read_sweep_file(whole), b = read_sweep_file(merged);
+  EXPECT_EQ(a.plan, b.plan);
+  EXPECT_EQ(b.shard_count, 1);
+  ASSERT_EQ(a.points.size(), b.points.size());
+  ASSERT_GE(a.points.size(), 8u);
+  for (size_t k = 0; k < a.points.size(); ++k) {
+    const SweepPoint &p = a.points[k], &q = b.points[k];
+    const std::string where = p.engine + "/" + p.profile + " " + p.knob + " " + p.value.dump();
+    EXPECT_EQ(q.plan_index, static_cast<long>(k)) << where;
+    EXPECT_EQ(std::tie(p.engine, p.profile, p.knob, p.value, p.dt, p.steps, p.settings, p.status, p.error),
+              std::tie(q.engine, q.profile, q.knob, q.value, q.dt, q.steps, q.settings, q.status, q.error))
+        << where;
+    EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
+              std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
+        << where;
+    EXPECT_EQ(q.engine_s.size(), 1u) << where;
+  }
+  EXPECT_TRUE(fs::exists(dir_ / "merged.csv"));
+}
+
+// Shards that do not make one sweep are refused in one line naming the file.
+TEST_F(SweepCli, MergeRefusesShardsOfDifferentPlansRepeatsAndGaps) {
+  const std::string common = "sweep --scene seed-box --horizon 0.2 --repeats 1 --no-knobs --dt-factors 1 --quiet ";
+  const auto shard = [&](const std::string& name, const std::string& engines, const std::string& which) {
+    const std::string path = (dir_ / name).string();
+    const auto o = run_cli(common + "--engine " + engines + " --json " + path + " --shard " + which);
+    EXPECT_EQ(o.status, 0) << o.err;
+    return path;
+  };
+  const std::string one = shard("a1.json", "home,exact", "1/2"), two = shard("a2.json", "home,exact", "2/2");
+  const std::string other = shard("b2.json", "home,box2d", "2/2");
+  const std::string out = (dir_ / "m.json").string();
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {one + " " + other, "is a shard of another sweep"},
+      {one + " " + one, "are both shard 1/2"},
+      {one, "shard 2/2 is missing"},
+      {one + " " + (dir_ / "nosuch.json").string(), "no such file"},
+  };
+  for (const auto& [args, want] : cases) {
+    const auto o = run_cli("merge --out " + out + " " + args);
+    EXPECT_EQ(o.status, 2) << args << ": " << o.err;
+    EXPECT_NE(o.err.find(want), std::string::npos) << args << ": " << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+  EXPECT_EQ(run_cli("merge --out " + out + " " + two + " " + one).status, 0);
+  for (const std::string bad : {"0/2", "3/2", "1/0", "a/b", "1/2x", "1"}) {
+    const auto o = run_cli(common + "--engine home --json " + (dir_ / "x.json").string() + " --shard " + bad);
+    EXPECT_EQ(o.status, 2) << bad << ": " << o.err;
+    EXPECT_NE(o.err.find("expected I/N"), std::string::npos) << bad << ": " << o.err;
+  }
 }
 
 TEST_F(SweepCli, BadInputIsOneLineAndStatus2) {

@@ -25,6 +25,7 @@
 #include "report_writer.h"
 #include "run_engines.h"
 #include "scene_loader.h"
+#include "shard.h"
 #include "stability_frontier.h"
 #include "sweep.h"
 
@@ -91,7 +92,19 @@ struct ReportArgs {
   bool fresh = false;
   bool no_bench = false;
   std::string bench_binary;  // default: beside this executable's build tree
+  std::string shard;         // "I/N": run only that share of the parts, render nothing
 };
+
+// The report's parts in run order, each a results file (or, for "bench", the step and harness
+// benchmarks together, so their ratios come from one machine). A shard runs the parts it takes.
+std::vector<std::string> report_parts(const Suite& suite, bool bench) {
+  std::vector<std::string> parts;
+  for (const auto& name : suite.scenes) parts.push_back("table:" + name);
+  for (const auto& name : suite.sweep_scenes) parts.push_back("sweep:" + name);
+  for (const auto& name : suite.stress_scenes) parts.push_back("stress:" + name);
+  if (bench) parts.push_back("bench");
+  return parts;
+}
 
 // A results file holding exactly the runs a report makes of `scene` (every engine x profile),
 // left by an earlier report that stopped later on: reusing it resumes the report. Files are written
@@ -183,6 +196,18 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
   write_file_atomically(path, joined.dump(2) + "\n", "the benchmark results");
 }
 
+}  // namespace
+
+void render_report_folder(const std::string& out) {
+  ReportInputs inputs = read_report_inputs(out + "/results");
+  inputs.roles = engine_roles();
+  const std::string md = render_report(inputs, draw_figures(inputs, out));
+  write_file_atomically(out + "/REPORT.md", md, "the report");
+  fmt::print("wrote {}/REPORT.md\n", out);
+}
+
+namespace {
+
 void report(const ReportArgs& a) {
   if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
     throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
@@ -192,6 +217,11 @@ void report(const ReportArgs& a) {
   for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
   const Suite suite = a.full ? full_suite() : quick_suite();
+  const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
+  const std::vector<std::string> parts = report_parts(suite, !a.no_bench);
+  const auto mine = [&](const std::string& part) {
+    return shard.takes(std::find(parts.begin(), parts.end(), part) - parts.begin());
+  };
   if (a.fresh) {
     // What an earlier report left (a --full one has more parts) must not reach this one.
     std::error_code ec;
@@ -219,6 +249,7 @@ void report(const ReportArgs& a) {
       return true;
     };
     for (const std::string& name : suite.scenes) {
+      if (!mine("table:" + name)) continue;
       const Scene scene = load_scene(name);
       const std::string path = fmt::format("{}/{}.json", results_dir, name);
       if (reuse(path, complete_results(path, scene, engines))) continue;
@@ -229,6 +260,7 @@ void report(const ReportArgs& a) {
       fmt::print(stderr, "ran {}\n", name);
     }
     for (const std::string& name : suite.sweep_scenes) {
+      if (!mine("sweep:" + name)) continue;
       const std::string path = fmt::format("{}/sweep-{}.json", results_dir, name);
       if (reuse(path, uninterrupted(path, read_sweep_file))) continue;
       SweepOptions o;
@@ -241,6 +273,7 @@ void report(const ReportArgs& a) {
       fmt::print(stderr, "swept {}\n", name);
     }
     for (const std::string& name : suite.stress_scenes) {
+      if (!mine("stress:" + name)) continue;
       const std::string path = fmt::format("{}/stress-{}.json", results_dir, name);
       if (reuse(path, uninterrupted(path, read_frontier_file))) continue;
       const Scene scene = load_scene(name);
@@ -257,7 +290,7 @@ void report(const ReportArgs& a) {
     const std::string bench_path = results_dir + "/bench.json", harness_path = results_dir + "/harness.json";
     if (a.no_bench) {
       fs::remove(bench_path), fs::remove(harness_path);
-    } else {
+    } else if (mine("bench")) {
       const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
       if (!reuse(bench_path, fs::exists(bench_path)))
         run_bench(bin, suite.bench_filters, suite.bench_min_time, suite.bench_budget_s, bench_path, "scaling",
@@ -273,13 +306,22 @@ void report(const ReportArgs& a) {
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";
     context["scenes"] = suite.scenes;  // the report's order
+    context["parts"] = parts;
+    context["engines"] = nlohmann::json::object();  // name -> version: shards of one report agree
+    for (const auto& e : engine_registry()) context["engines"][e.info.name] = e.info.version;
+    if (!shard.all()) context["shard"] = {{"index", shard.index}, {"count", shard.count}};
     write_file_atomically(results_dir + "/run.json", context.dump(2) + "\n", "the run record");
   }
-  ReportInputs inputs = read_report_inputs(results_dir);
-  inputs.roles = engine_roles();
-  const std::string md = render_report(inputs, draw_figures(inputs, a.out));
-  write_file_atomically(a.out + "/REPORT.md", md, "the report");
-  fmt::print("wrote {}/REPORT.md\n", a.out);
+  if (!shard.all()) {
+    std::vector<std::string> ran;
+    for (size_t k = 0; k < parts.size(); ++k)
+      if (shard.takes(k)) ran.push_back(parts[k]);
+    fmt::print("shard {}/{}: {} in {} (join the shards' folders with `ballbench merge --out DIR FOLDER...`)\n",
+               shard.index, shard.count, ran.empty() ? "no parts" : fmt::format("{}", fmt::join(ran, ", ")),
+               results_dir);
+    return;
+  }
+  render_report_folder(a.out);
 }
 
 }  // namespace
@@ -305,6 +347,11 @@ void add_report(CLI::App& app) {
                   "harness benchmark is taken from the same folder")
       ->excludes(render_only)
       ->excludes(no_bench);
+  cmd->add_option("--shard", a->shard,
+                  "run only shard I of N of the report's parts (I/N, e.g. 2/3; the benchmarks are one part), on one "
+                  "machine each; `ballbench merge --out DIR FOLDER...` joins the shards' --out folders and renders "
+                  "REPORT.md")
+      ->excludes(render_only);
   cmd->callback([a] { report(*a); });
 }
 

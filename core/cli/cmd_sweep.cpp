@@ -20,7 +20,7 @@ namespace ballbench::cli {
 namespace {
 
 struct SweepArgs {
-  std::string scene, engines, json, csv;
+  std::string scene, engines, json, csv, shard;
   std::vector<double> dt_factors;
   bool no_knobs = false;
   SweepOptions options;
@@ -34,7 +34,11 @@ void sweep(SweepArgs& a) {
   if (!a.dt_factors.empty()) a.options.dt_factors = a.dt_factors;
   a.options.knobs = !a.no_knobs;
   a.options.reference = reference_engine();
-  if (a.json.empty()) a.json = fmt::format("sweep-{}.json", scene.name);
+  if (!a.shard.empty()) a.options.shard = parse_shard(a.shard);
+  if (a.json.empty())
+    a.json = a.options.shard.all() ? fmt::format("sweep-{}.json", scene.name)
+                                   : fmt::format("sweep-{}.shard{}of{}.json", scene.name, a.options.shard.index,
+                                                 a.options.shard.count);
   if (a.csv.empty()) a.csv = a.json.size() > 5 && a.json.ends_with(".json") ? a.json.substr(0, a.json.size() - 5) + ".csv"
                                                                             : a.json + ".csv";
   // Checked before the sweep (it takes minutes), as `run` checks its outputs.
@@ -44,7 +48,7 @@ void sweep(SweepArgs& a) {
   install_interrupt_handlers();
   const SweepResult s = run_sweep(scene, engines, a.options, run_context());
   write_sweep_files(s, a.json, a.csv);
-  print_pareto(s);
+  if (s.shard_count == 1) print_pareto(s);  // a shard's fronts are of its points only
   fmt::print("wrote {} and {}\n", a.json, a.csv);
   exit_if_interrupted(fmt::format("{} point(s) written to {} and {}, the point in progress marked interrupted",
                                   s.points.size(), a.json, a.csv));
@@ -73,6 +77,9 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--csv", a->csv, "CSV output (default: the JSON path with .csv)");
   cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds each run may take (default 120)")
       ->check(kPositiveNumber);
+  cmd->add_option("--shard", a->shard,
+                  "run only shard I of N of the sweep's points (I/N, e.g. 2/3; join the shards' JSON files with "
+                  "`ballbench merge`); default: all");
   cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
   cmd->callback([a] { sweep(*a); });
 }

@@ -14,6 +14,10 @@ void add_report(CLI::App& app);
 void add_regress(CLI::App& app);
 void add_stress(CLI::App& app);
 void add_sweep(CLI::App& app);
+void add_merge(CLI::App& app);
+
+// Renders OUT/REPORT.md and OUT/figures from OUT/results (`report`, and `merge` of report shards).
+void render_report_folder(const std::string& out);
 
 // Thrown by a subcommand that ran to the end but found what it checks failing (`regress`, having
 // printed what differs): main exits with `status`, printing nothing more.

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   ballbench::cli::add_regress(app);
   ballbench::cli::add_stress(app);
   ballbench::cli::add_sweep(app);
+  ballbench::cli::add_merge(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {

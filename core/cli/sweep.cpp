@@ -53,12 +53,26 @@ std::vector<SweepPlanItem> plan_sweep(const Scene& scene, const std::vector<cons
   return plan;
 }
 
+nlohmann::json plan_record(const Scene& scene, const std::vector<SweepPlanItem>& plan, const SweepOptions& o) {
+  nlohmann::json points = nlohmann::json::array();
+  for (const SweepPlanItem& item : plan)
+    points.push_back({item.engine->info.name, item.engine->info.version, item.profile, item.knob, item.value, item.dt,
+                      item.steps});
+  return {{"scene", scene.name}, {"n", scene.n()},         {"horizon", o.horizon},
+          {"reference", o.reference ? o.reference->info.name : ""}, {"repeats", o.repeats}, {"points", points}};
+}
+
 SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines, const SweepOptions& o,
                       const nlohmann::json& context) {
   if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
   if (!o.reference) throw InputError("sweep: no reference engine");
   const auto plan = plan_sweep(scene, engines, o);
+  std::vector<size_t> mine;  // this shard's places in the plan, dealt round-robin so shards mix engines
+  for (size_t k = 0; k < plan.size(); ++k)
+    if (o.shard.takes(k)) mine.push_back(k);
   SweepResult out;
+  out.plan = plan_record(scene, plan, o);
+  out.shard_index = o.shard.index, out.shard_count = o.shard.count;
   out.scene = scene.name;
   out.n = scene.n();
   out.horizon = o.horizon;
@@ -66,12 +80,16 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
   out.repeats = o.repeats;
   out.context = context;
   const IsolationOptions child{o.isolation.timeout_s, ""};
-  Progress progress(fmt::format("sweep {} ({} points x {} runs)", scene.name, plan.size(), o.repeats + 1));
+  Progress progress(o.shard.all()
+                        ? fmt::format("sweep {} ({} points x {} runs)", scene.name, plan.size(), o.repeats + 1)
+                        : fmt::format("sweep {} shard {}/{} ({} of {} points x {} runs)", scene.name, o.shard.index,
+                                      o.shard.count, mine.size(), plan.size(), o.repeats + 1));
   // Runs in this process or a child, as asked.
   auto run = [&](const Scene& s, const EngineEntry& e, const RunOptions& r) {
     return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
   };
-  for (size_t k = 0; k < plan.size(); ++k) {
+  for (size_t m = 0; m < mine.size(); ++m) {
+    const size_t k = mine[m];
     const SweepPlanItem& item = plan[k];
     Scene s = scene;
     s.dt = item.dt;
@@ -99,6 +117,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
     }  // else: the reference against itself, error 0 by definition
     p.tunnelling = r.metrics.tunnelling_wall + r.metrics.tunnelling_pair;
     p.sticking = r.metrics.sticking_wall + r.metrics.sticking_pair;
+    p.plan_index = static_cast<long>(k);
     // The timing runs: the engine alone, the same steps.
     options.reference = nullptr;
     for (int rep = 0; rep < o.repeats && r.status == "ok"; ++rep) {
@@ -112,7 +131,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       out.interrupted = interrupt_name();
       break;
     }
-    if (!o.quiet) progress.update(double(k + 1) / plan.size());
+    if (!o.quiet) progress.update(double(m + 1) / mine.size());
   }
   mark_pareto(out.points);
   return out;

@@ -7,6 +7,7 @@
 #include "engine.h"
 #include "run_engines.h"
 #include "scene.h"
+#include "shard.h"
 #include "sweep_result.h"
 
 namespace ballbench::cli {
@@ -20,6 +21,7 @@ struct SweepOptions {
   Isolation isolation{true, 120};
   const EngineEntry* reference = nullptr;       // the error is measured against it (required)
   bool quiet = false;                           // no progress on stderr
+  Shard shard;                                  // the share of the plan's points to run (shard.h)
 };
 
 // One point to run: an engine, a profile, a step size and the settings set on top of the profile.
@@ -35,6 +37,9 @@ struct SweepPlanItem {
 // that differs from the profile's own at the scene's dt.
 std::vector<SweepPlanItem> plan_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines,
                                       const SweepOptions& options);
+
+// The plan as recorded in every shard's result: what identifies one sweep.
+nlohmann::json plan_record(const Scene& scene, const std::vector<SweepPlanItem>& plan, const SweepOptions& options);
 
 SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines, const SweepOptions& options,
                       const nlohmann::json& context);

@@ -1,0 +1,132 @@
+// `ballbench merge`: joins the shards of one plan run on several machines (`--shard I/N`). Sweep
+// shards (JSON files) become one sweep file, as if run unsharded; report shards (their --out
+// folders) become one results folder, from which REPORT.md is rendered. Shards of different plans,
+// a shard given twice or one missing are refused, naming the file.
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "data_file.h"
+#include "input_error.h"
+#include "sweep_result.h"
+
+namespace ballbench::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MergeArgs {
+  std::vector<std::string> shards;
+  std::string out, csv;
+};
+
+void merge_sweeps(const MergeArgs& a) {
+  std::vector<SweepResult> shards;
+  for (const auto& path : a.shards) shards.push_back(read_sweep_file(path));
+  const SweepResult merged = merge_sweep_shards(shards, a.shards);
+  const std::string csv = !a.csv.empty()              ? a.csv
+                          : a.out.ends_with(".json") ? a.out.substr(0, a.out.size() - 5) + ".csv"
+                                                      : a.out + ".csv";
+  write_sweep_files(merged, a.out, csv);
+  fmt::print("merged {} shards ({} points) into {} and {}\n", shards.size(), merged.points.size(), a.out, csv);
+}
+
+// A report shard's run record: its plan (the suite and its parts) and which shard it is.
+struct ReportShard {
+  nlohmann::json context;
+  nlohmann::json plan;
+  int index = 1, count = 1;
+};
+
+ReportShard read_report_shard(const std::string& folder) {
+  const std::string path = folder + "/results/run.json";
+  if (!fs::exists(path))
+    throw InputError(fmt::format("merge: {}: no results/run.json (not the --out folder of `ballbench report --shard`)",
+                                 folder));
+  ReportShard s;
+  s.context = parse_json_file(path, "a report's run record");
+  if (!s.context.contains("shard") || !s.context.contains("parts"))
+    throw InputError(fmt::format("merge: {}: not a report shard (its run.json has no shard; it is a whole report)", path));
+  s.plan = {{"suite", s.context.value("suite", "")},
+            {"parts", s.context.at("parts")},
+            {"engines", s.context.value("engines", nlohmann::json::object())}};
+  s.index = s.context.at("shard").at("index").get<int>();
+  s.count = s.context.at("shard").at("count").get<int>();
+  return s;
+}
+
+void merge_reports(const MergeArgs& a) {
+  std::vector<ReportShard> shards;
+  for (const auto& folder : a.shards) {
+    std::error_code ec;
+    if (fs::equivalent(folder, a.out, ec))
+      throw InputError(fmt::format("merge: --out {} is one of the shards: merge into a folder of its own", a.out));
+    shards.push_back(read_report_shard(folder));
+  }
+  const ReportShard& first = shards.front();
+  std::vector<std::string> seen(first.count + 1);
+  for (size_t k = 0; k < shards.size(); ++k) {
+    const ReportShard& s = shards[k];
+    if (s.plan != first.plan || s.count != first.count)
+      throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, parts, engine versions or "
+                                   "shard count differ)",
+                                   a.shards[k], a.shards.front()));
+    if (s.index < 1 || s.index > s.count)
+      throw InputError(fmt::format("merge: {}: shard {}/{} is not a shard", a.shards[k], s.index, s.count));
+    if (!seen[s.index].empty())
+      throw InputError(fmt::format("merge: {} and {} are both shard {}/{}", seen[s.index], a.shards[k], s.index, s.count));
+    seen[s.index] = a.shards[k];
+  }
+  for (int i = 1; i <= first.count; ++i)
+    if (seen[i].empty()) throw InputError(fmt::format("merge: report shard {}/{} is missing", i, first.count));
+  // Every shard's result files (its parts) into one results folder; a file in two shards is refused.
+  const fs::path results = fs::path(a.out) / "results";
+  fs::create_directories(results);
+  std::vector<std::string> copied;
+  for (const auto& folder : a.shards)
+    for (const auto& e : fs::directory_iterator(fs::path(folder) / "results")) {
+      const std::string name = e.path().filename().string();
+      if (!e.is_regular_file() || name == "run.json") continue;
+      if (std::find(copied.begin(), copied.end(), name) != copied.end())
+        throw InputError(fmt::format("merge: {} is in two shards ({} is one): run each shard into its own folder", name,
+                                     folder));
+      fs::copy_file(e.path(), results / name, fs::copy_options::overwrite_existing);
+      copied.push_back(name);
+    }
+  nlohmann::json context = first.context;
+  context.erase("shard");
+  context["shards"] = nlohmann::json::array();
+  for (const auto& s : shards) context["shards"].push_back(s.context);
+  write_file_atomically((results / "run.json").string(), context.dump(2) + "\n", "the run record");
+  fmt::print("merged {} report shards ({} result files) into {}\n", shards.size(), copied.size(), results.string());
+  render_report_folder(a.out);
+}
+
+void merge(const MergeArgs& a) {
+  size_t folders = 0;
+  for (const auto& s : a.shards) {
+    if (!fs::exists(s)) throw InputError(fmt::format("merge: {}: no such file or folder", s));
+    folders += fs::is_directory(s);
+  }
+  if (folders != 0 && folders != a.shards.size())
+    throw InputError("merge: give either sweep shards (JSON files) or report shards (folders), not both");
+  if (folders) merge_reports(a);
+  else merge_sweeps(a);
+}
+
+}  // namespace
+
+void add_merge(CLI::App& app) {
+  auto a = std::make_shared<MergeArgs>();
+  auto* cmd = app.add_subcommand(
+      "merge", "join the shards of one sweep (JSON files) or one report (--out folders) run with --shard I/N");
+  cmd->add_option("shards", a->shards, "every shard's sweep JSON file, or every shard's report folder")->required();
+  cmd->add_option("--out", a->out, "the merged sweep's JSON file, or the merged report's folder")->required();
+  cmd->add_option("--csv", a->csv, "sweeps: the merged CSV (default: --out with .csv)");
+  cmd->callback([a] { merge(*a); });
+}
+
+}  // namespace ballbench::cli
