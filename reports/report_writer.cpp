@@ -310,6 +310,44 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
   }
 }
 
+// Requested against effective restitution, per engine and profile (calibration_result.h).
+void put_calibration(MarkdownBuffer& put, const CalibrationResult& c) {
+  put("## Restitution calibration\n\nThe restitution each engine delivers against the one the scene asks for: one ball "
+      "meeting a wall, and two equal balls head-on, at the impact speeds given (m/s), no gravity, dt 0.01; measured "
+      "from the states as sqrt(kinetic energy after / before). An engine with a bounce threshold shows 0 below it. "
+      "Source: `results/calibration.json`.\n\n");
+  std::vector<std::string> labels;
+  for (const CalibrationPoint& p : c.points) add_once(labels, run_label(p.engine, p.profile));
+  for (double requested : c.requested) {
+    put("Requested e = {}:\n\n| engine |", requested);
+    for (const char* contact : {"ball-wall", "ball-ball"})
+      for (double v : c.speeds) put(" {} {} |", contact, v);
+    put("\n|---|");
+    for (size_t k = 0; k < 2 * c.speeds.size(); ++k) put("---:|");
+    put("\n");
+    for (const std::string& label : labels) {
+      put("| {} |", label);
+      for (const char* contact : {"ball-wall", "ball-ball"})
+        for (double v : c.speeds) {
+          std::string cell;
+          for (const CalibrationPoint& p : c.points)
+            if (run_label(p.engine, p.profile) == label && p.contact == contact && p.requested == requested &&
+                p.speed == v)
+              cell = p.status == "ok" ? fmt::format("{:.3f}", p.effective) : p.status;
+          put(" {} |", cell);
+        }
+      put("\n");
+    }
+    put("\n");
+  }
+  std::vector<std::string> notes;
+  for (const CalibrationPoint& p : c.points)
+    if (p.status != "ok" && p.status != "unsupported" && !p.error.empty())
+      notes.push_back(fmt::format("{} {} e {} at {} m/s: {}", run_label(p.engine, p.profile), p.contact, p.requested,
+                                  p.speed, table_cell(p.error)));
+  if (!notes.empty()) put("Not measured: {}.\n\n", fmt::join(notes, "; "));
+}
+
 // Issue 6's fourth target: metrics and sampling at most 10% of the engine's own step time.
 void put_harness(MarkdownBuffer& put, const BenchResults& bench) {
   put("## Harness overhead\n\n`bench/ballbench_harness_benchmark` (Google Benchmark): `run_engine` on the scaled "
@@ -368,6 +406,8 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.bench = read_bench_file(f.string());
     } else if (name == "harness.json") {
       in.harness = read_bench_file(f.string());
+    } else if (name == "calibration.json") {
+      in.calibration = read_calibration_file(f.string());
     } else if (name.starts_with("sweep-")) {
       in.sweeps.push_back(read_sweep_file(f.string()));
     } else if (name.starts_with("stress-")) {
@@ -441,6 +481,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   if (in.bench && !in.bench->rows.empty()) put_scaling(put, in, *in.bench, figures);
   if (in.harness && !in.harness->harness.empty()) put_harness(put, *in.harness);
   for (const FrontierResult& f : in.frontiers) put_frontier(put, f, figures);
+  if (in.calibration) put_calibration(put, *in.calibration);
 
   put("## Engines, profiles and limits\n\n`stock` is the engine as shipped (its defaults); `tuned` is what its own "
       "documentation and issue tracker recommend for elastic balls; our solvers have one profile, `default`. Details "

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_results.h"
+#include "calibration_result.h"
 #include "engine.h"
 #include "frontier_result.h"
 #include "result.h"
@@ -23,6 +24,7 @@ struct ReportInputs {
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
   std::optional<BenchResults> harness;  // results/harness.json (bench/ballbench_harness_benchmark)
+  std::optional<CalibrationResult> calibration;  // results/calibration.json
   // Engine name -> role (the registry's engine_roles(), given by the caller); a name not in it is
   // external.
   std::map<std::string, EngineRole> roles;

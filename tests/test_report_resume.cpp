@@ -82,7 +82,11 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
   // The quick suite's other parts: a sweep and a stability frontier, each with its figure.
   const std::string md = slurp(out() / "REPORT.md");
   for (const char* want : {"## Work against precision: `seed-box`", "figures/seed-box-work-precision.png",
-                           "## Stability frontier: `seed-box`", "figures/seed-box-frontier.png"})
+                           "## Stability frontier: `seed-box`", "figures/seed-box-frontier.png",
+                           "## Restitution calibration", "| ball-wall 0.1 | ball-wall 1 | ball-wall 10 | ball-ball 0.1 |",
+                           // the reference delivers what is asked, at every speed and on both contacts
+                           "| exact | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 |",
+                           "| exact | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
   EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
@@ -156,11 +160,11 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   ASSERT_EQ(command("merge --out " + merged.string() + " " + two.string() + " " + one.string()), 0) << err_;
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());
-  EXPECT_EQ(files, (std::set<std::string>{"run.json", "seed-box.json", "seed-bowl.json", "stress-seed-box.json",
-                                          "sweep-seed-box.csv", "sweep-seed-box.json"}));
+  EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "run.json", "seed-box.json", "seed-bowl.json",
+                                          "stress-seed-box.json", "sweep-seed-box.csv", "sweep-seed-box.json"}));
   const std::string md = slurp(merged / "REPORT.md");
   for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",
-                           "## Stability frontier: `seed-box`"})
+                           "## Stability frontier: `seed-box`", "## Restitution calibration"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_NE(slurp(merged / "results" / "run.json").find("\"shards\""), std::string::npos);
 }

@@ -22,6 +22,7 @@
 #include "input_error.h"
 #include "interrupt.h"
 #include "registry.h"
+#include "restitution_calibration.h"
 #include "report_writer.h"
 #include "run_engines.h"
 #include "scene_loader.h"
@@ -102,6 +103,7 @@ std::vector<std::string> report_parts(const Suite& suite, bool bench) {
   for (const auto& name : suite.scenes) parts.push_back("table:" + name);
   for (const auto& name : suite.sweep_scenes) parts.push_back("sweep:" + name);
   for (const auto& name : suite.stress_scenes) parts.push_back("stress:" + name);
+  parts.push_back("calibration");
   if (bench) parts.push_back("bench");
   return parts;
 }
@@ -286,6 +288,16 @@ void report(const ReportArgs& a) {
       write_frontier_file(path, run_frontier(scene, engines, o, run_context()));
       stop_if_interrupted();
       fmt::print(stderr, "stressed {}\n", name);
+    }
+    if (mine("calibration")) {
+      const std::string path = results_dir + "/calibration.json";
+      if (!reuse(path, fs::exists(path))) {
+        CalibrationOptions o;
+        o.isolation.timeout_s = suite.timeout_s;
+        write_calibration_file(path, run_calibration(engines, o, run_context()));
+        stop_if_interrupted();
+        fmt::print(stderr, "calibrated restitution\n");
+      }
     }
     const std::string bench_path = results_dir + "/bench.json", harness_path = results_dir + "/harness.json";
     if (a.no_bench) {
