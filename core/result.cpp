@@ -96,6 +96,7 @@ nlohmann::json to_json(const Result& r) {
   j["series"] = {{"t", r.series.t},         {"energy", r.series.energy}, {"com_x", r.series.com_x},
                  {"com_y", r.series.com_y}, {"pos_err", r.series.pos_err}, {"tracks", r.series.tracks},
                  {"final_pos", r.series.final_pos}, {"radius_mean", r.series.radius_mean},
+                 {"frame_t", r.series.frame_t}, {"frames", r.series.frames},
                  {"box", r.series.box ? nlohmann::json(*r.series.box) : nlohmann::json(nullptr)}};
   j["checksum"] = {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}};
   return j;
@@ -173,6 +174,7 @@ Result result_from_json(const nlohmann::json& j) {
     s.at("com_x").get_to(r.series.com_x), s.at("com_y").get_to(r.series.com_y);
     s.at("pos_err").get_to(r.series.pos_err), s.at("tracks").get_to(r.series.tracks);
     s.at("final_pos").get_to(r.series.final_pos);
+    if (s.contains("frames")) s.at("frame_t").get_to(r.series.frame_t), s.at("frames").get_to(r.series.frames);
     r.series.radius_mean = s.value("radius_mean", 0.0);
     if (s.contains("box") && !s["box"].is_null()) r.series.box = s["box"].get<std::array<double, 4>>();
   }

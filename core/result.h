@@ -51,6 +51,10 @@ struct Result {
     std::vector<double> t, energy, com_x, com_y, pos_err;
     std::vector<std::vector<std::array<double, 2>>> tracks;
     std::vector<std::array<double, 2>> final_pos;
+    // Every ball's position at evenly spaced times, for animations (RunOptions::frames; empty
+    // unless asked): frame_t[k] is the time of frames[k]; positions rounded to 0.1 mm.
+    std::vector<double> frame_t;
+    std::vector<std::vector<std::array<double, 2>>> frames;
     std::optional<std::array<double, 4>> box;  // container x0, y0, x1, y1 (m), for pictures
     double radius_mean = 0;                    // (m), for pictures
   } series;

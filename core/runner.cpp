@@ -110,8 +110,17 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   const long series_every = every * std::max(1L, r.steps / every / std::max(1, options.series_points));
   constexpr int kTracks = 4;
   r.series.tracks.resize(std::min(kTracks, scene.n()));
+  constexpr int kMaxFrameBalls = 1000;
+  const long frame_every =
+      options.frames > 0 && scene.n() <= kMaxFrameBalls ? every * std::max(1L, r.steps / every / options.frames) : 0;
   auto record = [&](long k) {
     if (reference) error->observe(state, ref_state);
+    if (frame_every && k % frame_every == 0) {
+      auto& frame = r.series.frames.emplace_back(scene.n());
+      for (int b = 0; b < scene.n(); ++b)
+        frame[b] = {std::round(state.pos(b, 0) * 1e4) / 1e4, std::round(state.pos(b, 1) * 1e4) / 1e4};
+      r.series.frame_t.push_back(state.t);
+    }
     if (k % series_every != 0 && k != r.steps) return;
     r.series.t.push_back(state.t);
     r.series.energy.push_back(metrics.summary().energy.final);

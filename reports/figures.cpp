@@ -105,6 +105,45 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
 }
 
 
+// The scene in motion, one panel per run (the thesis's port, ours, an external engine), as an
+// animated GIF (gnuplot's gif terminal): every ball at each frame of Result::series::frames.
+Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
+  const std::string base = slug(scene) + "-animation";
+  // As many frames as the longest run; a run that stopped early (diverged, failed) holds its last.
+  size_t frames = 0;
+  for (const Result* r : runs) frames = std::max(frames, r->series.frames.size());
+  std::ofstream gp(dir / (base + ".gp"));
+  gp << "set terminal gif animate delay 8 optimize size " << 320 * runs.size() << ",340 font 'sans,9'\n"
+     << "set output '" << base << ".gif'\nset size ratio -1\nunset key\nunset xtics\nunset ytics\n";
+  if (const auto& b = runs.front()->series.box)
+    gp << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\nset object 1 rect from {},{} to {},{} fs empty border "
+                      "rgb 'red' lw 2\n",
+                      (*b)[0], (*b)[2], (*b)[1], (*b)[3], (*b)[0], (*b)[1], (*b)[2], (*b)[3]);
+  for (const Result* r : runs) {
+    std::ofstream f(dir / fmt::format("{}-{}.dat", base, slug(run_label(*r))));
+    for (size_t k = 0; k < frames; ++k) {
+      for (const auto& p : r->series.frames[std::min(k, r->series.frames.size() - 1)]) f << p[0] << ' ' << p[1] << ' ' << r->series.radius_mean << '\n';
+      f << "\n\n";  // a gnuplot data block per frame
+    }
+  }
+  for (size_t k = 0; k < frames; ++k) {
+    gp << "set multiplot layout 1," << runs.size() << "\n";
+    for (const Result* r : runs) {
+      const size_t held = std::min(k, r->series.frames.size() - 1);
+      gp << fmt::format("set title '{} t = {:.1f} s{}'\nplot '{}-{}.dat' index {} using 1:2:3 with circles fs solid 0.6 "
+                        "lc rgb '#3060c0'\n",
+                        run_label(*r), r->series.frame_t[held], held < k ? " (" + r->status + ")" : "", base,
+                        slug(run_label(*r)), k);
+    }
+    gp << "unset multiplot\n";
+  }
+  gp.close();
+  run_gnuplot(dir / (base + ".gp"));
+  return {"animation", scene, "figures/" + base + ".gif",
+          fmt::format("The scene in motion ({} frames, animated GIF): the thesis's algorithm, ours and an external "
+                      "engine side by side; a run that stopped early holds its last frame, its status in its title.",
+                      frames)};
+}
 
 // gnuplot line style k: 8 colours, then the same colours dashed, so no two lines look alike.
 std::string style(int k) { return fmt::format("lc {} dt {}", 1 + k % 8, 1 + k / 8); }
@@ -268,6 +307,16 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
         if ((role_of(in, r->engine) == EngineRole::thesis || role_of(in, r->engine) == EngineRole::ours) &&
             !r->series.final_pos.empty()) pictured.push_back(r);
       if (!pictured.empty()) figures.push_back(scene_figure(scene, pictured, "."));
+      // Animated: the thesis's port and ours, with the first external engine that ran to the end.
+      std::vector<const Result*> animated;
+      for (const Result* r : pictured)
+        if (!r->series.frames.empty()) animated.push_back(r);
+      for (const Result* r : by_scene[scene])
+        if (role_of(in, r->engine) == EngineRole::external && r->status == "ok" && !r->series.frames.empty()) {
+          animated.push_back(r);
+          break;
+        }
+      if (animated.size() >= 2) figures.push_back(animation_figure(scene, animated, "."));
     }
     for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));
     for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f, "."));

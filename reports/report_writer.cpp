@@ -476,6 +476,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     put("\n");
     put_figures(put, figures, "energy", scene);
     put_figures(put, figures, "picture", scene);
+    put_figures(put, figures, "animation", scene);
   }
   for (const SweepResult& sw : in.sweeps) put_sweep(put, sw, figures);
   if (in.bench && !in.bench->rows.empty()) put_scaling(put, in, *in.bench, figures);

@@ -89,6 +89,16 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            "| exact | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
+  // The seed scenes in motion: an animated GIF each (one graphic control block per frame), under 2 MB.
+  for (const char* scene : {"seed-box", "seed-bowl"}) {
+    const std::string gif = slurp(out() / "figures" / (std::string(scene) + "-animation.gif"));
+    EXPECT_EQ(gif.rfind("GIF89a", 0), 0u) << scene;
+    size_t frames = 0;
+    for (size_t at = gif.find("\x21\xf9\x04"); at != std::string::npos; at = gif.find("\x21\xf9\x04", at + 1)) ++frames;
+    EXPECT_GE(frames, 10u) << scene;
+    EXPECT_LT(gif.size(), 2u << 20) << scene;
+    EXPECT_NE(md.find("figures/" + std::string(scene) + "-animation.gif"), std::string::npos) << scene;
+  }
   EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
   EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench
 
