@@ -46,6 +46,7 @@ nlohmann::json to_json(const Result& r) {
   j["engine_limits"] = r.engine_limits;
   j["scene"] = r.scene;
   j["scene_source"] = r.scene_source;
+  j["seed_offset"] = r.seed_offset;
   j["n"] = r.n;
   j["dt"] = r.dt;
   j["steps"] = r.steps;
@@ -110,6 +111,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.engine_limits = j.value("engine_limits", "");
   r.scene = j.at("scene");
   r.scene_source = j.value("scene_source", "");
+  r.seed_offset = j.value("seed_offset", int64_t{0});
   r.n = j.at("n");
   r.dt = j.at("dt");
   r.steps = j.at("steps");

@@ -1,6 +1,7 @@
 #pragma once
 // One run of one engine on one scene: metrics, timing, versions, settings. Written as one JSON
 // object; the report reads these files and nothing else.
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@ struct Result {
   std::string engine, engine_version, profile;
   std::string engine_limits;  // EngineInfo::limits: what in the engine shapes its results
   std::string scene, scene_source;
+  int64_t seed_offset = 0;  // the placement: added to the scene's random seeds (`run --seeds K`: 0 .. K-1)
   int n = 0;
   double dt = 0;
   long steps = 0;        // asked for

@@ -51,6 +51,7 @@ Result result_header(const Scene& scene, const EngineEntry& entry, const RunOpti
   r.engine_limits = entry.info.limits;
   r.profile = options.profile.empty() ? entry.info.profiles.front() : options.profile;
   r.scene = scene.name;
+  r.seed_offset = scene.seed_offset;
   r.scene_source = scene.source;
   r.n = scene.n();
   r.dt = scene.dt;

@@ -1,5 +1,6 @@
 #pragma once
 // A validated, immutable description of one ball scene: what every engine is asked to simulate.
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -44,6 +45,10 @@ struct Scene {
   State initial;               // t = 0
   nlohmann::json engine_settings = nlohmann::json::object();  // [settings.<engine>] tables
   std::map<std::string, int> setting_lines;  // "ENGINE.KEY" -> its line in the scene file, for messages
+  // Random placement: whether any [random] or [lattice] table draws balls, and the offset added to
+  // each such table's seed (`run --seeds K` runs offsets 0 .. K-1; 0 is the file as written).
+  bool random_placement = false;
+  int64_t seed_offset = 0;
 
   int n() const { return static_cast<int>(radius.size()); }
   long steps() const;          // duration / dt, rounded to the nearest whole step

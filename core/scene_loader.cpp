@@ -321,13 +321,13 @@ std::string printable(const std::string& text) {
   return out;
 }
 
-Scene parse_scene_text(const std::string& toml_text, const std::string& source);
+Scene parse_scene_text(const std::string& toml_text, const std::string& source, int64_t seed_offset);
 
 }  // namespace
 
-Scene parse_scene(const std::string& toml_text, const std::string& source) {
+Scene parse_scene(const std::string& toml_text, const std::string& source, int64_t seed_offset) {
   try {
-    return parse_scene_text(toml_text, source);
+    return parse_scene_text(toml_text, source, seed_offset);
   } catch (const InputError& e) {
     throw InputError(printable(e.what()));
   }
@@ -335,13 +335,34 @@ Scene parse_scene(const std::string& toml_text, const std::string& source) {
 
 namespace {
 
-Scene parse_scene_text(const std::string& toml_text, const std::string& source) {
+// Adds `offset` to the seed (default 1) of each table that draws balls; returns how many there are.
+int offset_seeds(toml::table& doc, int64_t offset) {
+  int tables = 0;
+  const auto shift = [&](toml::table* t) {
+    if (!t) return;
+    ++tables;
+    if (offset == 0) return;
+    const auto* seed = t->get("seed");
+    const int64_t base = seed && seed->is_integer() ? seed->as_integer()->get() : 1;
+    if (!seed || seed->is_integer()) t->insert_or_assign("seed", base + offset);  // another type: reported as written
+  };
+  shift(doc["lattice"].as_table());
+  if (toml::node* rnd = doc.get("random")) {
+    if (rnd->is_table()) shift(rnd->as_table());
+    else if (toml::array* a = rnd->as_array())
+      for (auto& e : *a) shift(e.as_table());
+  }
+  return tables;
+}
+
+Scene parse_scene_text(const std::string& toml_text, const std::string& source, int64_t seed_offset) {
   toml::table doc;
   try {
     doc = toml::parse(toml_text, source);
   } catch (const toml::parse_error& e) {
     throw InputError(fmt::format("{}:{}: TOML syntax error: {}", source, e.source().begin.line, e.description()));
   }
+  const bool random_placement = offset_seeds(doc, seed_offset) > 0;
   if (doc.empty())
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
@@ -350,6 +371,8 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source) 
 
   Scene s;
   s.source = source;
+  s.random_placement = random_placement;
+  s.seed_offset = seed_offset;
   s.name = top.string("name", std::filesystem::path(source).stem().string());
   // The name is used in default output paths (`sweep` writes sweep-NAME.json) and in reports: it
   // must stay one file name in the working folder.
@@ -454,7 +477,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source) 
 
 }  // namespace
 
-Scene load_scene_file(const std::string& path) {
+Scene load_scene_file(const std::string& path, int64_t seed_offset) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: scene file not found", path));
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, not a scene file", path));
@@ -463,7 +486,7 @@ Scene load_scene_file(const std::string& path) {
   std::stringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(fmt::format("{}: reading the scene file failed: {}", path, std::strerror(errno)));
-  return parse_scene(text.str(), path);
+  return parse_scene(text.str(), path, seed_offset);
 }
 
 std::string scenario_dir() {
@@ -480,15 +503,15 @@ std::vector<std::string> builtin_scene_names() {
   return names;
 }
 
-Scene load_scene(const std::string& name_or_path) {
+Scene load_scene(const std::string& name_or_path, int64_t seed_offset) {
   const bool looks_like_path = name_or_path.find('/') != std::string::npos ||
                                name_or_path.ends_with(".toml") || std::filesystem::exists(name_or_path);
-  if (looks_like_path) return load_scene_file(name_or_path);
+  if (looks_like_path) return load_scene_file(name_or_path, seed_offset);
   const auto names = builtin_scene_names();
   if (std::find(names.begin(), names.end(), name_or_path) == names.end())
     throw InputError(fmt::format("--scene: unknown scene '{}'{} (built-in scenes: {}; or give a path to a .toml file)",
                                  name_or_path, did_you_mean(name_or_path, names), fmt::join(names, ", ")));
-  return load_scene_file((std::filesystem::path(scenario_dir()) / (name_or_path + ".toml")).string());
+  return load_scene_file((std::filesystem::path(scenario_dir()) / (name_or_path + ".toml")).string(), seed_offset);
 }
 
 }  // namespace ballbench

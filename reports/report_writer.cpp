@@ -10,6 +10,7 @@
 
 #include "input_error.h"
 #include "json_value.h"
+#include "ensemble.h"
 #include "ordered_set.h"
 
 namespace ballbench {
@@ -310,6 +311,47 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
   }
 }
 
+// A seed scene over its placements (ensemble.h): each metric's mean with its interval, and how each
+// run compares with ours on the same placements. Nothing when the scene ran one placement.
+void put_ensemble(MarkdownBuffer& put, const ReportInputs& in, const std::string& scene) {
+  std::vector<Result> runs;
+  std::vector<int64_t> seeds;
+  for (const auto* list : {&in.results, &in.placements})
+    for (const Result& r : *list)
+      if (r.scene == scene) runs.push_back(r), add_once(seeds, r.seed_offset);
+  if (seeds.size() < 2) return;
+  std::string ours;
+  for (const Result& r : runs)
+    if (ours.empty() && role_of(in, r.engine) == EngineRole::ours) ours = run_label(r);
+  const auto rows = summarise_ensemble(runs, ours);
+  const auto& metrics = ensemble_metrics();
+  put("Over {} random placements (the scene's seeds offset by 0 .. {}; the table above is offset 0): each metric's mean "
+      "over the runs that ended ok, with its 95% confidence interval (percentile bootstrap, 2000 resamples). {}\n\n",
+      seeds.size(), seeds.size() - 1,
+      ours.empty() ? ""
+                   : fmt::format("Against `{}` on the same placements (paired): **+** significantly above, **-** "
+                                 "significantly below (the bootstrap interval of the mean difference leaves out 0), = "
+                                 "not significantly different.",
+                                 ours));
+  put("| engine | ok |");
+  for (const auto& m : metrics) put(" {} |", m.name);
+  put("\n|---|---:|");
+  for (size_t k = 0; k < metrics.size(); ++k) put("---|");
+  put("\n");
+  for (const EnsembleRow& row : rows) {
+    put("| {} | {} |", row.label, row.placements);
+    for (size_t k = 0; k < metrics.size(); ++k)
+      if (!row.metrics[k]) {
+        put(" - |");
+      } else {
+        const std::string& v = row.versus_ours[k];
+        put(" {}{} |", interval_text(*row.metrics[k]), v.empty() ? "" : v == "=" ? " =" : " **" + v + "**");
+      }
+    put("\n");
+  }
+  put("\n");
+}
+
 // Requested against effective restitution, per engine and profile (calibration_result.h).
 void put_calibration(MarkdownBuffer& put, const CalibrationResult& c) {
   put("## Restitution calibration\n\nThe restitution each engine delivers against the one the scene asks for: one ball "
@@ -413,7 +455,8 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
     } else if (name.starts_with("stress-")) {
       in.frontiers.push_back(read_frontier_file(f.string()));
     } else {
-      for (auto& r : read_results_file(f.string())) in.results.push_back(std::move(r));
+      for (auto& r : read_results_file(f.string()))
+        (r.seed_offset == 0 ? in.results : in.placements).push_back(std::move(r));
     }
   }
   return in;
@@ -474,6 +517,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
         "accuracy).\n\n");
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
+    put_ensemble(put, in, scene);
     put_figures(put, figures, "energy", scene);
     put_figures(put, figures, "picture", scene);
     put_figures(put, figures, "animation", scene);

@@ -86,7 +86,9 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            "## Restitution calibration", "| ball-wall 0.1 | ball-wall 1 | ball-wall 10 | ball-ball 0.1 |",
                            // the reference delivers what is asked, at every speed and on both contacts
                            "| exact | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 |",
-                           "| exact | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 |"})
+                           "| exact | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 |",
+                           // the seed scenes over three placements, with intervals
+                           "Over 3 random placements", "| exact | 3 |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
   // The seed scenes in motion: an animated GIF each (one graphic control block per frame), under 2 MB.

@@ -47,11 +47,13 @@ struct Suite {
   double bench_budget_s = 10;             // s a benchmark may run before it stops as failed, with its figure
   std::string harness_filter;             // of bench/ballbench_harness_benchmark (its own minimum times)
   double timeout_s = 600;                 // per engine run
+  int seeds = 1;                          // placements of each scene with random placement (ensemble.h)
 };
 
 Suite quick_suite() {
   Suite s;
   s.scenes = {"seed-box", "seed-bowl"};
+  s.seeds = 3;
   s.sweep_scenes = {"seed-box"};
   s.stress_scenes = {"seed-box"};
   s.stress_levels = 5;
@@ -71,6 +73,7 @@ Suite quick_suite() {
 Suite full_suite() {
   Suite s;
   s.scenes = {"seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile"};
+  s.seeds = 10;
   s.sweep_scenes = {"seed-box", "seed-bowl"};
   s.stress_scenes = {"seed-box", "seed-bowl"};
   s.stress_levels = 6;
@@ -111,7 +114,8 @@ std::vector<std::string> report_parts(const Suite& suite, bool bench) {
 // A results file holding exactly the runs a report makes of `scene` (every engine x profile),
 // left by an earlier report that stopped later on: reusing it resumes the report. Files are written
 // whole (write_results_file), so one that reads back is complete.
-bool complete_results(const std::string& path, const Scene& scene, const std::vector<const EngineEntry*>& engines) {
+bool complete_results(const std::string& path, const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                      int seeds) {
   if (!std::filesystem::exists(path)) return false;
   std::vector<Result> found;
   try {
@@ -120,12 +124,13 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
     return false;
   }
   std::vector<std::string> want, have;
-  for (const auto* e : engines)
-    for (const auto& p : profiles_for(*e, "all")) want.push_back(e->info.name + "/" + p);
+  for (int k = 0; k < seeds; ++k)
+    for (const auto* e : engines)
+      for (const auto& p : profiles_for(*e, "all")) want.push_back(fmt::format("{}/{}/{}", e->info.name, p, k));
   for (const auto& r : found) {
     if (r.status == "interrupted") return false;  // a report stopped in this part
     if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n()) return false;
-    have.push_back(r.engine + "/" + r.profile);
+    have.push_back(fmt::format("{}/{}/{}", r.engine, r.profile, r.seed_offset));
   }
   std::sort(want.begin(), want.end()), std::sort(have.begin(), have.end());
   return want == have;
@@ -253,12 +258,20 @@ void report(const ReportArgs& a) {
     for (const std::string& name : suite.scenes) {
       if (!mine("table:" + name)) continue;
       const Scene scene = load_scene(name);
+      const int seeds = scene.random_placement ? suite.seeds : 1;
       const std::string path = fmt::format("{}/{}.json", results_dir, name);
-      if (reuse(path, complete_results(path, scene, engines))) continue;
+      if (reuse(path, complete_results(path, scene, engines, seeds))) continue;
       RunOptions options;
       options.reference = reference_engine();  // error against `exact` in every row
       if (name.starts_with("seed-")) options.frames = 80;  // the thesis's scenes, animated
-      write_results_file(path, run_all(scene, engines, "all", options, false, isolation));
+      std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
+      // Further placements, for the ensemble table: without frames (the animation is of offset 0).
+      options.frames = 0;
+      for (int k = 1; k < seeds && !interrupt_signal(); ++k) {
+        auto more = run_all(load_scene(name, k), engines, "all", options, false, isolation);
+        runs.insert(runs.end(), more.begin(), more.end());
+      }
+      write_results_file(path, runs);
       stop_if_interrupted();
       fmt::print(stderr, "ran {}\n", name);
     }

@@ -29,6 +29,7 @@ struct RunArgs {
   bool quiet = false;
   bool no_reference = false;
   int sample_every = 1;
+  int seeds = 1;
   double trajectory_limit_gb = 10;
   Isolation isolation;
 };
@@ -148,8 +149,24 @@ void run(const RunArgs& a) {
   check_trajectory_size(scene, engines, a);
   if (!a.no_reference) options.reference = reference_engine();
   options.metrics.sample_every = a.sample_every;
-  const auto results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
-  print_table(results);
+  if (a.seeds > 1 && !scene.random_placement)
+    throw InputError(fmt::format("--seeds {}: {} has no random placement ([random] or [lattice]) to draw again",
+                                 a.seeds, scene.source));
+  if (a.seeds > 1 && !a.trajectory.empty())
+    throw InputError("--trajectory with --seeds: give one placement (a trajectory holds one run per engine and profile)");
+  std::vector<Result> results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
+  // Further placements: the same scene with its random seeds offset by 1 .. K-1.
+  for (int k = 1; k < a.seeds && !interrupt_signal(); ++k) {
+    Scene placed = load_scene(a.scene, k);
+    placed.dt = scene.dt, placed.duration = scene.duration;
+    auto more = run_all(placed, engines, a.profile, options, a.quiet, a.isolation, "");
+    results.insert(results.end(), more.begin(), more.end());
+  }
+  std::string ours;  // our solver's first run, if it ran: what the others are compared with
+  for (const Result& r : results)
+    if (ours.empty() && find_engine(r.engine).info.role == EngineRole::ours) ours = run_label(r);
+  if (a.seeds > 1) print_ensemble(results, a.seeds, ours);
+  else print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
   exit_if_interrupted(fmt::format("{} row(s) written{}, the run in progress marked interrupted", results.size(),
                                   a.json.empty() ? "" : fmt::format(" to the table and {}", a.json)));
@@ -182,6 +199,10 @@ void add_run(CLI::App& app) {
   cmd->add_option("--sample-every", a->sample_every,
                   "sampled metrics (energy, momentum, overlaps, sticking, error, checksums) see every K-th step "
                   "(default 1); tunnelling sees every step")
+      ->check(kPositiveCount);
+  cmd->add_option("--seeds", a->seeds,
+                  "run K random placements (the scene's seeds offset by 0 .. K-1) and print each metric's mean with "
+                  "its 95% bootstrap interval (default 1)")
       ->check(kPositiveCount);
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-reference", a->no_reference,

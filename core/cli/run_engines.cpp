@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "data_file.h"
+#include "ensemble.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "isolated_run.h"
@@ -131,6 +132,25 @@ void print_table(const std::vector<Result>& results) {
   if (!results.empty() && results.front().reference.available)
     fmt::print("pos.err: position RMS error against {} at the last step (m); horizon: first time it exceeded {:.3g} m\n",
                results.front().reference.reference, results.front().reference.horizon_tolerance);
+}
+
+void print_ensemble(const std::vector<Result>& results, int seeds, const std::string& ours) {
+  const auto rows = summarise_ensemble(results, ours);
+  const auto& metrics = ensemble_metrics();
+  fmt::print("{} placements of {}: mean [95% bootstrap interval] over the runs that ended ok{}\n", seeds,
+             results.empty() ? "" : results.front().scene,
+             ours.empty() ? "" : fmt::format("; +/-: significantly above/below {} on the same placements, =: not", ours));
+  fmt::print("{:<18} {:>3}", "engine", "ok");
+  for (const auto& m : metrics) fmt::print("  {:<31}", m.name);
+  fmt::print("\n");
+  for (const EnsembleRow& row : rows) {
+    fmt::print("{:<18} {:>3}", row.label, row.placements);
+    for (size_t k = 0; k < metrics.size(); ++k)
+      fmt::print("  {:<31}", row.metrics[k] ? interval_text(*row.metrics[k]) + " " + row.versus_ours[k] : "-");
+    fmt::print("\n");
+  }
+  for (const auto& r : results)
+    if (!r.error.empty()) fmt::print("{} (seed offset {}): {}\n", run_label(r), r.seed_offset, r.error);
 }
 
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile) {

@@ -45,6 +45,10 @@ nlohmann::json run_context();
 
 void print_table(const std::vector<Result>& results);
 
+// The results of `seeds` placements (ensemble.h): per engine and profile, each metric's mean with
+// its 95% bootstrap interval, and whether it differs significantly from the run labelled `ours`.
+void print_ensemble(const std::vector<Result>& results, int seeds, const std::string& ours);
+
 // "--set home.contact_iterations=4" -> overrides["home"]["contact_iterations"] = 4. The value is
 // read as JSON (numbers, true/false) and falls back to a plain string.
 void add_setting(nlohmann::json& overrides, const std::string& item);
