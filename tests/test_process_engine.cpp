@@ -114,12 +114,12 @@ TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
 
 TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   EngineEntry missing = process_engine_entry(spec({"no-such-program-for-ballbench"}));
-  EXPECT_TRUE(has(run_engine(box(), missing, steps(5)).error, "cannot start 'no-such-program-for-ballbench'"));
+  EXPECT_TRUE(has(run_engine(box(), missing, steps(5)).error, "'no-such-program-for-ballbench' is not found on PATH"));
   // Registered (an engines file): unavailable, its rows unsupported with the reason.
   ProcessEngineSpec named = spec({"no-such-program-for-ballbench"});
   named.name = "absent";
   const EngineEntry absent = process_engine_entry(named);
-  EXPECT_TRUE(has(absent.info.unavailable, "No such file or directory")) << absent.info.unavailable;
+  EXPECT_TRUE(has(absent.info.unavailable, "is not found on PATH")) << absent.info.unavailable;
   const Result r = run_engine(box(), absent, steps(5));
   EXPECT_EQ(r.status, "unsupported");
   EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
@@ -150,7 +150,7 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   const EngineEntry crash = misbehaving("crash"), hang = misbehaving("hang", 60);
   const std::vector<const EngineEntry*> engines{&find_engine("home"), &crash, &hang, &find_engine("home-seed")};
   // The hang outlives the run's own time limit: its row times out, as any engine's.
-  const auto results = cli::run_all(box(), engines, "", steps(20), true, {true, 2.0});
+  const auto results = cli::run_all(box(), engines, "", steps(20), true, {true, 1.0});
   ASSERT_EQ(results.size(), 4u);
   EXPECT_EQ(results[0].status, "ok");
   EXPECT_EQ(results[1].status, "failed");

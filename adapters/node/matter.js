@@ -24,6 +24,7 @@ function profile(name, M) {
     resting_threshold: M.Resolver._restingThresh,   // approach below it (units per 1/60 s) does not bounce: 2
     circle_max_sides: 25,                           // Bodies.circle's default: sides = min(this, radius in units)
     allow_sleep: false,                             // matter's default (enableSleeping false)
+    lock_rotation_without_friction: false,          // inertia Infinity when the scene has no friction
   };
   if (name === 'stock') return stock;
   if (name === 'tuned')
@@ -32,6 +33,12 @@ function profile(name, M) {
       velocity_iterations: 20,
       slop: 0.01,               // 0.1 mm at 100 units per metre
       resting_threshold: 0,     // every approaching contact bounces (as Box2D's tuned threshold 0)
+      // The maintainer's advice for elastic circles (matter-js issues 256, 361): without friction a
+      // disc's spin does not matter, but a polygon's off-centre contacts spin it, taking energy.
+      lock_rotation_without_friction: true,
+      circle_max_sides: 100,    // rounder balls, with length_scale 1000: a 0.1 m ball gets 100 sides
+      length_scale: 1000,
+      slop: 0.1,                // 0.1 mm at 1000 units per metre
     });
   throw new Error(`unknown profile '${name}'`);
 }
@@ -72,7 +79,8 @@ async function load(scene, profileName, overrides) {
     const r = b.radius[i], m = b.mass[i];
     const body = M.Bodies.circle(b.x[i] * L, b.y[i] * L, r * L, Object.assign({}, common), s.circle_max_sides);
     M.Body.setMass(body, m);
-    M.Body.setInertia(body, 0.5 * m * r * r * L * L);  // a solid disc, not matter's 4x polygon estimate
+    // A solid disc, not matter's 4x polygon estimate; or no spin at all (see the profile).
+    M.Body.setInertia(body, s.lock_rotation_without_friction && mu === 0 ? Infinity : 0.5 * m * r * r * L * L);
     // Velocity is the displacement per step: position - positionPrev, in units per step of dtMs.
     body.deltaTime = dtMs;
     body.positionPrev.x = body.position.x - b.vx[i] * scene.dt * L;
@@ -110,7 +118,7 @@ async function load(scene, profileName, overrides) {
         friction_per_body: mu,
         friction_static: 1,
         friction_air: 0,
-        moment_of_inertia: 'm r^2 / 2',
+        moment_of_inertia: s.lock_rotation_without_friction && mu === 0 ? 'Infinity (frictionless: no spin)' : 'm r^2 / 2',
       },
     }),
   };
@@ -132,7 +140,7 @@ serve({
       },
       profiles: ['tuned', 'stock'],
       settings_keys: ['length_scale', 'position_iterations', 'velocity_iterations', 'slop', 'resting_threshold',
-        'circle_max_sides', 'allow_sleep'],
+        'circle_max_sides', 'allow_sleep', 'lock_rotation_without_friction'],
       sweep_knobs: [{ key: 'velocity_iterations', values: [4, 10, 20] }, { key: 'position_iterations', values: [6, 20] }],
     };
   },

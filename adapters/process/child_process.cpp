@@ -68,7 +68,10 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     for (int fd = 3; fd < 1024; ++fd)
       if (fd != status[1]) ::close(fd);
     signal(SIGPIPE, SIG_DFL);
-    signal(SIGINT, SIG_IGN);  // the harness stops its runs at a step boundary; the engine must still answer
+    // Its own process group: a Ctrl-C at the terminal reaches the harness, which stops its runs at
+    // a step boundary, and not the engine, which must still answer until then (Node resets an
+    // ignored SIGINT at start-up, so ignoring it would not do).
+    ::setpgid(0, 0);
     int e = 0;
     if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) e = errno;
     if (e == 0) ::execvp(args[0], args.data()), e = errno;
@@ -89,6 +92,8 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     }
     exited_ = true, failed_ = true;
     close_fd(in_), close_fd(out_), close_fd(err_);
+    if (e == ENOENT && argv[0].find('/') == std::string::npos)
+      throw ChildProcessError(fmt::format("{}: cannot start it: '{}' is not found on PATH", label_, argv[0]));
     throw ChildProcessError(fmt::format("{}: cannot start '{}'{}: {}", label_, argv[0],
                                         cwd.empty() ? "" : fmt::format(" in {}", cwd), std::strerror(e)));
   }
