@@ -198,10 +198,16 @@ void ChildProcess::read_bytes(void* out, size_t n, Clock::time_point deadline) {
 }
 
 void ChildProcess::drain_stderr() {
-  if (err_ < 0) return;
   char buf[4096];
-  for (ssize_t n; (n = ::read(err_, buf, sizeof buf)) > 0 || (n < 0 && errno == EINTR);) {
-    if (n > 0) stderr_.append(buf, static_cast<size_t>(n));
+  while (err_ >= 0) {
+    const ssize_t n = ::read(err_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return;  // nothing more for now (non-blocking)
+    if (n == 0) {       // the child closed its stderr: stop polling it, or poll would spin on the hang-up
+      close_fd(err_);
+      return;
+    }
+    stderr_.append(buf, static_cast<size_t>(n));
     if (stderr_.size() > 2 * kStderrKeep) stderr_.erase(0, stderr_.size() - kStderrKeep);
   }
 }

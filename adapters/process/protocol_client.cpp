@@ -170,6 +170,9 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
     throw child_.failure(fmt::format("sent garbage in reply to '{}': {} in '{}'", op, e.what(), excerpt(reply.dump())));
   }
   if (n != n_) throw child_.failure(fmt::format("sent a state of {} balls in reply to '{}'; the scene has {}", n, op, n_));
+  constexpr size_t kMaxFields = 16;  // id, x, y, vx, vy and room for more (w, ...), not a memory bomb
+  if (fields.size() > kMaxFields)
+    throw child_.failure(fmt::format("sent a state of {} fields in reply to '{}' (at most {})", fields.size(), op, kMaxFields));
   const auto col = [&](const char* name) {
     return std::find(fields.begin(), fields.end(), name) - fields.begin();
   };
