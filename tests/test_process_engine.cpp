@@ -86,6 +86,25 @@ TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
 
+// A process serves one profile's scene after another's: module-wide settings (matter's resting
+// threshold, planck's velocity threshold) must not carry over from the profile before.
+TEST(ProcessEngine, AProfileAfterAnotherInTheSameProcessHasItsOwnSettings) {
+  for (const auto& name : engine_names()) {
+    if (is_builtin_engine(name)) continue;
+    const EngineEntry& e = find_engine(name);
+    if (!e.info.unavailable.empty() || e.info.profiles.size() < 2) continue;
+    const std::string& first = e.info.profiles[0], & second = e.info.profiles[1];
+    const EngineEntry fresh = process_engine_entry(spec({"node", kSource + "/adapters/node/" + name + ".js"}));
+    const nlohmann::json alone = fresh.create(box(), second, {})->settings();
+    e.create(box(), first, {});  // the registry's process: first one profile, then the other
+    nlohmann::json after = e.create(box(), second, {})->settings();
+    after.erase("process");
+    nlohmann::json want = alone;
+    want.erase("process");
+    EXPECT_EQ(after, want) << name << ": " << second << " after " << first;
+  }
+}
+
 TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
   const Result r = run_engine(box(), misbehaving("crash"), steps(10));
   EXPECT_EQ(r.status, "failed");

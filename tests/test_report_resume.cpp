@@ -57,7 +57,9 @@ radius = 0.1
 
   // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
   int report(const std::string& args = "") {
-    const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI +
+    // BALLBENCH_ENGINES empty: the built-in engines only, as each run of an engine in another
+    // process starts that process (test_process_engine.cpp covers those).
+    const std::string cmd = "BALLBENCH_ENGINES= BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI +
                             " report --no-bench --out " + out().string() + " " + args + " >/dev/null 2>" +
                             (root_ / "err.txt").string();
     const int rc = std::system(cmd.c_str());

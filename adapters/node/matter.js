@@ -21,7 +21,7 @@ function profile(name, M) {
     position_iterations: engine.positionIterations, // 6
     velocity_iterations: engine.velocityIterations, // 4
     slop: body.slop,                                // overlap left alone (units): 0.05
-    resting_threshold: M.Resolver._restingThresh,   // approach below it (units per 1/60 s) does not bounce: 2
+    resting_threshold: moduleDefaults.restingThresh, // approach below it (units per 1/60 s) does not bounce: 2
     circle_max_sides: 25,                           // Bodies.circle's default: sides = min(this, radius in units)
     allow_sleep: false,                             // matter's default (enableSleeping false)
     lock_rotation_without_friction: false,          // inertia Infinity when the scene has no friction
@@ -44,9 +44,13 @@ function profile(name, M) {
 }
 
 let M = null;
+let moduleDefaults = null;  // module-wide constants as shipped, read before any world changes them
 
 async function load(scene, profileName, overrides) {
-  if (!M) M = require(PACKAGE);
+  if (!M) {
+    M = require(PACKAGE);
+    moduleDefaults = { restingThresh: M.Resolver._restingThresh };
+  }
   const s = applySettings('matter', profile(profileName, M), overrides);
   for (const key of ['length_scale', 'position_iterations', 'velocity_iterations', 'circle_max_sides'])
     if (!(s[key] > 0)) throw new SettingsError(`settings.matter.${key}: must be > 0`);

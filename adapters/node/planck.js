@@ -18,7 +18,7 @@ function profile(name, P) {
   const stock = {
     velocity_iterations: w.m_velocityIterations,        // 8
     position_iterations: w.m_positionIterations,        // 3
-    restitution_threshold: P.Settings.velocityThreshold, // approach below it does not bounce (m/s): 1
+    restitution_threshold: moduleDefaults.velocityThreshold, // approach below it does not bounce (m/s): 1
     bullets: false,                                     // CCD between dynamic bodies
     continuous_physics: w.m_continuousPhysics,          // CCD against static walls: on
     warm_starting: w.m_warmStarting,
@@ -31,9 +31,13 @@ function profile(name, P) {
 }
 
 let P = null;
+let moduleDefaults = null;  // module-wide settings as shipped, read before any world changes them
 
 async function load(scene, profileName, overrides) {
-  if (!P) P = require(PACKAGE);
+  if (!P) {
+    P = require(PACKAGE);
+    moduleDefaults = { velocityThreshold: P.Settings.velocityThreshold };
+  }
   const s = applySettings('planck', profile(profileName, P), overrides);
   if (!(s.velocity_iterations >= 1) || !(s.position_iterations >= 0))
     throw new SettingsError('settings.planck.velocity_iterations/position_iterations: must be >= 1 and >= 0');
