@@ -178,6 +178,17 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   EXPECT_EQ(results[3].status, "ok");
 }
 
+// The project's engines.toml: the Node engines appear in `ballbench list` with their pinned
+// versions, or, where Node or `npm ci` is missing, as unavailable with the reason.
+TEST(EnginesFile, TheProjectsNodeEnginesAreListedWithTheirVersions) {
+  const auto list = testing::run_cli("list");
+  EXPECT_EQ(list.status, 0) << list.err;
+  for (const auto& [name, version] : {std::pair{"rapier", "0.21.0"}, {"matter", "0.20.0"}, {"planck", "1.5.0"}}) {
+    const std::string line = row(list.out.substr(list.out.find("engines:")), std::string("  ") + name);
+    EXPECT_TRUE(has(line, version) || has(line, "unavailable: ")) << list.out;
+  }
+}
+
 std::string write_file(const std::string& name, const std::string& text) {
   const std::string path = (std::filesystem::temp_directory_path() / name).string();
   std::ofstream(path) << text;
