@@ -106,8 +106,6 @@ const std::map<std::string, std::map<Case, Expectation>>& table() {
         {Case::WallBounceLossy, {kDoubleRun, "measured 0.833: as above", true}},
         {Case::HeadOn, {kDoubleRun, "measured 0.085 m/s off eq. 11-12: as above", true}},
         {Case::Drop, {1e-12, "Verlet, velocity first: the Euler offset, then round-off; measured 8.1e-14"}}}},
-      // planck is Box2D 2.x in double: as shipped it ignores restitution below 1 m/s, as Box2D does.
-      {"planck/stock", {{Case::WallBounceLossy, {kDoubleRun, "restitution threshold 1 m/s: the ball stops at the wall", true}}}},
       {"matter/tuned",
        {{Case::WallBounceLossy, {1e-12, "no spin, 100-sided balls; measured 2.4e-14 (positions scaled by 1000)"}},
         {Case::Drop, {1e-12, "Verlet, velocity first: the Euler offset, then round-off; measured 1.4e-13"}}}},
@@ -280,6 +278,8 @@ INSTANTIATE_TEST_SUITE_P(Engines, Conformance, ::testing::ValuesIn(all_params())
 // case, so one process serves them all (a Node engine starts in ~0.1 to 0.4 s). Listed here rather
 // than from the registry: listing profiles needs each engine's handshake, which every test process
 // would then pay. The Python template engine is run through `process:CMD`, as a user would.
+// planck (adapters/node/) is left out for the suite's time (~10 s of process round trips); its
+// figures, measured by adding it here, are in adapters/node/README.md.
 const std::string kExampleEngine = "process:python3 " BALLBENCH_SOURCE_DIR "/adapters/process/example_engine.py";
 
 class ProcessConformance : public ::testing::TestWithParam<std::pair<std::string, std::string>> {};
@@ -299,9 +299,7 @@ INSTANTIATE_TEST_SUITE_P(Processes, ProcessConformance,
                                            std::pair{std::string("rapier"), std::string("tuned")},
                                            std::pair{std::string("rapier"), std::string("stock")},
                                            std::pair{std::string("matter"), std::string("tuned")},
-                                           std::pair{std::string("matter"), std::string("stock")},
-                                           std::pair{std::string("planck"), std::string("tuned")},
-                                           std::pair{std::string("planck"), std::string("stock")}),
+                                           std::pair{std::string("matter"), std::string("stock")}),
                          [](const auto& info) {
                            const std::string engine = info.param.first.rfind("process:", 0) == 0 ? "example" : info.param.first;
                            return engine + "_" + info.param.second;

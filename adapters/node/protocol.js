@@ -10,9 +10,11 @@ const PROTOCOL = 1;
 // A bad setting: the user's error, reported as such by the harness.
 class SettingsError extends Error {}
 
+// One write per reply: each write to the pipe wakes the harness, and a reply in two writes costs
+// two wake-ups.
 function send(reply, block) {
-  process.stdout.write(JSON.stringify(reply) + '\n');
-  if (block) process.stdout.write(block);
+  const line = Buffer.from(JSON.stringify(reply) + '\n');
+  process.stdout.write(block ? Buffer.concat([line, block]) : line);
 }
 
 // Settings of a profile with the overrides applied; each override must exist and keep the type.
