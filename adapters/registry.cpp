@@ -1,6 +1,9 @@
 #include "registry.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -11,13 +14,16 @@
 #include "chipmunk/chipmunk_engine.h"
 #include "input_error.h"
 #include "ode/ode_engine.h"
+#include "process/engines_file.h"
+#include "process/process_engine.h"
 #include "solver/exact.h"
 #include "solver/home.h"
 #include "solver/home_seed.h"
 
 namespace ballbench {
+namespace {
 
-const std::vector<EngineEntry>& engine_registry() {
+const std::vector<EngineEntry>& builtin_engines() {
   static const std::vector<EngineEntry> engines = {
       home_seed_engine(),
       home_engine(),
@@ -30,26 +36,136 @@ const std::vector<EngineEntry>& engine_registry() {
   return engines;
 }
 
+std::vector<std::string>& user_engines_files() {
+  static std::vector<std::string> files;
+  return files;
+}
+
+// Built-ins, then one entry per engines-file engine, filled in from its handshake on first lookup.
+struct Registry {
+  std::vector<EngineEntry> entries;        // never resized after construction: pointers stay valid
+  size_t builtins = 0;
+  std::vector<ProcessEngineSpec> external;  // entries[builtins + k] is external[k]'s
+  std::vector<bool> resolved;
+  std::deque<std::pair<std::string, EngineEntry>> commands;  // `process:CMD` entries, by CMD as typed
+
+  Registry() {
+    entries = builtin_engines();
+    builtins = entries.size();
+    std::vector<std::string> files;
+    const char* env = std::getenv("BALLBENCH_ENGINES");
+    if (env) {
+      if (*env) files.push_back(env);
+    } else if (std::error_code ec; std::filesystem::exists(BALLBENCH_ENGINES_FILE, ec)) {
+      files.push_back(BALLBENCH_ENGINES_FILE);
+    }
+    for (const auto& f : user_engines_files()) files.push_back(f);
+    for (const auto& f : files)
+      for (auto& spec : read_engines_file(f)) {
+        const auto clash = std::find_if(entries.begin(), entries.end(), [&](const EngineEntry& e) { return e.info.name == spec.name; });
+        if (clash != entries.end())
+          throw InputError(fmt::format("{}: engine.name: '{}' is already an engine's name", spec.source, spec.name));
+        EngineEntry placeholder;
+        placeholder.info.name = spec.name;
+        entries.push_back(std::move(placeholder));
+        external.push_back(std::move(spec));
+      }
+    resolved.assign(external.size(), false);
+  }
+
+  void resolve(const std::vector<size_t>& which) {
+    std::vector<ProcessEngineSpec> specs;
+    for (size_t k : which) specs.push_back(external[k]);
+    std::vector<EngineEntry> made = process_engine_entries(specs);
+    for (size_t j = 0; j < which.size(); ++j) entries[builtins + which[j]] = std::move(made[j]), resolved[which[j]] = true;
+  }
+  void resolve_all() {
+    std::vector<size_t> which;
+    for (size_t k = 0; k < external.size(); ++k)
+      if (!resolved[k]) which.push_back(k);
+    if (!which.empty()) resolve(which);
+  }
+};
+
+bool& registry_built() {
+  static bool built = false;
+  return built;
+}
+
+Registry& registry() {
+  static Registry r = [] {
+    Registry made;
+    registry_built() = true;
+    return made;
+  }();
+  return r;
+}
+
+const EngineEntry& find_command_engine(const std::string& text) {
+  Registry& reg = registry();
+  for (const auto& [typed, entry] : reg.commands)
+    if (typed == text) return entry;
+  EngineEntry e = process_engine_entry(parse_process_engine(text));
+  for (const auto& name : engine_names())
+    if (name == e.info.name)
+      throw InputError(fmt::format("--engine '{}': the process calls itself '{}', already an engine's name", text, name));
+  reg.commands.emplace_back(text, std::move(e));
+  return reg.commands.back().second;
+}
+
+}  // namespace
+
+const std::vector<EngineEntry>& engine_registry() {
+  Registry& reg = registry();
+  reg.resolve_all();
+  return reg.entries;
+}
+
+std::vector<std::string> engine_names() {
+  std::vector<std::string> names;
+  for (const auto& e : registry().entries) names.push_back(e.info.name);
+  for (const auto& [typed, e] : registry().commands) names.push_back(e.info.name);
+  return names;
+}
+
+bool is_builtin_engine(const std::string& name) {
+  const auto& b = builtin_engines();
+  return std::any_of(b.begin(), b.end(), [&](const EngineEntry& e) { return e.info.name == name; });
+}
+
+void use_engines_file(const std::string& path) {
+  if (registry_built()) throw InputError(fmt::format("--engines {}: given after the engines were read", path));
+  user_engines_files().push_back(path);
+}
+
 const EngineEntry* reference_engine() {
-  for (const auto& e : engine_registry())
-    if (e.info.role == EngineRole::reference) return &e;
+  Registry& reg = registry();
+  for (size_t i = 0; i < reg.builtins; ++i)
+    if (reg.entries[i].info.role == EngineRole::reference) return &reg.entries[i];
   return nullptr;
 }
 
 std::map<std::string, EngineRole> engine_roles() {
+  // The built-ins only: an engine of an engines file is external (the default), and reading its
+  // role must not start its process for the handshake.
   std::map<std::string, EngineRole> roles;
-  for (const auto& e : engine_registry()) roles[e.info.name] = e.info.role;
+  for (const auto& e : builtin_engines()) roles[e.info.name] = e.info.role;
   return roles;
 }
 
 const EngineEntry& find_engine(const std::string& name) {
-  const auto& all = engine_registry();
-  const auto it = std::find_if(all.begin(), all.end(), [&](const EngineEntry& e) { return e.info.name == name; });
-  if (it != all.end()) return *it;
-  std::vector<std::string> names;
-  for (const auto& e : all) names.push_back(e.info.name);
-  throw InputError(fmt::format("--engine: unknown engine '{}'{} (known: {}, or all)", name, did_you_mean(name, names),
-                               fmt::join(names, ", ")));
+  if (name.rfind("process:", 0) == 0) return find_command_engine(name);
+  Registry& reg = registry();
+  for (size_t i = 0; i < reg.entries.size(); ++i) {
+    if (reg.entries[i].info.name != name) continue;
+    if (i >= reg.builtins && !reg.resolved[i - reg.builtins]) reg.resolve({i - reg.builtins});
+    return reg.entries[i];
+  }
+  for (const auto& [typed, e] : reg.commands)  // a `process:CMD` engine named before, by the name it gave
+    if (e.info.name == name) return e;
+  const std::vector<std::string> names = engine_names();
+  throw InputError(fmt::format("--engine: unknown engine '{}'{} (known: {}, process:CMD, or all)", name,
+                               did_you_mean(name, names), fmt::join(names, ", ")));
 }
 
 std::vector<const EngineEntry*> parse_engine_list(const std::string& list) {

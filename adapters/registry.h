@@ -1,6 +1,9 @@
 #pragma once
-// Every engine the harness knows: our own solvers and the adapters. Adding an engine is one folder
-// under adapters/ and one line in registry.cpp.
+// Every engine the harness knows: our own solvers and the adapters (adding one is one folder under
+// adapters/ and one line in registry.cpp), then the external engines of the engines files
+// (adapters/process/engines_file.h): the project's engines.toml and one a user passes with
+// --engines. The registry is built once, on first use; an external engine's process is started
+// for its handshake only when its entry is first looked up.
 #include <map>
 #include <string>
 #include <vector>
@@ -9,16 +12,30 @@
 
 namespace ballbench {
 
+// Every engine, built-ins first; the external ones' handshakes are made here (all at once).
 const std::vector<EngineEntry>& engine_registry();
+
+// Every engine's name, without starting any process.
+std::vector<std::string> engine_names();
+
+// True for our solvers and the adapters linked into ballbench; false for engines in processes.
+bool is_builtin_engine(const std::string& name);
+
+// Adds a user's engines file (--engines FILE) to the project's; call it before the registry's
+// first use (a later call is an InputError). BALLBENCH_ENGINES, if set, replaces the project's
+// file ("" for none).
+void use_engines_file(const std::string& path);
 
 // The engine errors are measured against (role `reference`: `exact`, event-driven), or null if
 // none is built in.
 const EngineEntry* reference_engine();
 
-// Engine name -> role, for the report (which reads result files and knows engines only by name).
+// Engine name -> role of the built-ins, for the report (which reads result files and knows engines
+// only by name); every other engine is external.
 std::map<std::string, EngineRole> engine_roles();
 
-// By name; throws InputError naming the known engines.
+// By name, or `process:CMD` for a command speaking adapters/process/PROTOCOL.md; throws
+// InputError naming the known engines.
 const EngineEntry& find_engine(const std::string& name);
 
 // "home,box2d" or "all" -> entries, in the order given; throws InputError for an unknown name or

@@ -37,9 +37,11 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "process/process_engine.h"
 #include "registry.h"
 #include "scaled_scene.h"
 #include "settled_pile.h"
@@ -53,6 +55,9 @@ namespace {
 // 49 us per ball-step at 10^4): 10^5 would take minutes per benchmark.
 int max_balls(const std::string& engine, const std::string& profile) {
   if (engine == "home-seed") return 1000;
+  // Engines in other processes (adapters/process/, the Node engines): 10^3, as each costs a process
+  // start and tens of microseconds per ball-step, which the report's bench run would pay many times.
+  if (!is_builtin_engine(engine)) return 1000;
   if (engine == "home") return 1'000'000;
   if (engine == "ode" && profile == "stock") return 10'000;
   return 100'000;
@@ -171,6 +176,7 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
     return;
   }
   const auto timed_start = Clock::now();
+  const std::optional<double> own_before = engine->own_step_seconds();
   long steps = 0;
   for (auto _ : state) {
     try {
@@ -205,6 +211,10 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
                                                             benchmark::Counter::kInvert);
   state.counters["balls_per_s"] = benchmark::Counter(n, benchmark::Counter::kIsIterationInvariantRate);
   state.counters["steps_per_s"] = benchmark::Counter(1.0, benchmark::Counter::kIsIterationInvariantRate);
+  // An engine in another process: its own step time as that process measured it, beside the
+  // harness's, which adds the pipe (compare pipe/noop, the pipe alone).
+  if (const auto own_after = engine->own_step_seconds(); own_before && own_after && steps > 0)
+    state.counters["engine_process_ns_per_ball_step"] = (*own_after - *own_before) * 1e9 / (static_cast<double>(steps) * n);
   state.counters["peak_rss_bytes_per_ball"] = peak_resident_bytes() / n;
   state.counters["engine_bytes_per_ball"] = (resident_bytes() - resident_before) / n;
   if (options.settle) {
@@ -223,6 +233,7 @@ void register_benchmarks() {
         ->UseRealTime();
   };
   for (const auto& e : engine_registry()) {
+    if (!e.info.unavailable.empty()) continue;  // an engine process that cannot run here (no Node)
     benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
     for (const auto& profile : e.info.profiles)
       for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
@@ -236,7 +247,8 @@ void register_benchmarks() {
   // model, it does not finish a step of a pile at rest (100 balls: no step in 100 s).
   for (const auto& e : engine_registry())
     for (const auto& profile : e.info.profiles) {
-      if (e.info.name == "exact") continue;
+      // Not engines in other processes: settling a pile takes them most of the budget (see max_balls).
+      if (e.info.name == "exact" || !is_builtin_engine(e.info.name)) continue;
       for (int n = 100; n <= max_piled_balls(e.info.name, profile, 10'000, 100); n *= 10)
         add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n,
             {.settle = true}, nlohmann::json::object())
@@ -271,6 +283,22 @@ void register_benchmarks() {
         {.warm_up = 0, .check_divergence = true},
         {{"resting", "soft"}})
         ->Iterations(kFluidSteps);
+  // The engine process protocol's own cost: a Node process engine that moves nothing
+  // (adapters/node/noop.js), so its time per step is the request, the reply and the state block
+  // through the pipes, to read beside the Node engines' (engine_process_ns_per_ball_step is their
+  // own step alone). Not in the registry, and named pipe/ rather than step/: it is not an engine,
+  // so the report's scaling tables, which read step/ and pour/, leave it out of their ratios.
+  static const EngineEntry noop = [] {
+    ProcessEngineSpec spec;
+    spec.name = "pipe";
+    spec.command = {"node", "adapters/node/noop.js"};
+    spec.cwd = BALLBENCH_SOURCE_DIR;
+    spec.source = "step_benchmark";
+    return process_engine_entry(spec);
+  }();
+  if (noop.info.unavailable.empty())
+    for (int n = 10; n <= 1000; n *= 10)
+      add(fmt::format("pipe/noop/default/gas/{}", n), &noop, "default", gas_scene, n, {}, nlohmann::json::object())->MinTime(0.2);
   constexpr int kPourSteps = 100;  // one second of the scaled bowl (dt 0.01)
   add("pour/home/default/bowl/1000000", &find_engine("home"), "default", bowl_scene, 1'000'000, {.warm_up = 0},
       nlohmann::json::object())

@@ -17,6 +17,7 @@ const char* role_name(EngineRole role) {
 }
 
 std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
+  if (!info.unavailable.empty()) return fmt::format("{} is unavailable here: {}", info.name, info.unavailable);
   const SceneFeatures f = scene.features();
   std::vector<std::string> missing;
   if (!f.walls && !info.caps.open_space) missing.push_back("open space (no container)");

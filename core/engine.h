@@ -3,6 +3,7 @@
 // An engine never reports metrics; the harness computes them from the states it reads back.
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,10 @@ class Engine {
   // For 3D engines held to the plane: the largest |z| position or velocity over all balls now
   // (m or m/s). The runner tracks its maximum; 2D engines have none.
   virtual double out_of_plane() const { return 0.0; }
+  // For engines in another process (adapters/process/): the step time that process measured
+  // around its own step calls, summed since the engine was built (s). The harness's own timing of
+  // step() adds the pipe; engines in this process have none.
+  virtual std::optional<double> own_step_seconds() const { return std::nullopt; }
 };
 
 // An accuracy knob `ballbench sweep` varies: a settings key and the values it tries, one at a time,
@@ -66,6 +71,7 @@ struct EngineInfo {
   std::string summary;     // one line for `ballbench list`
   std::string limits;      // what in the engine shapes results (clamps, slops, precision), for the report
   EngineRole role = EngineRole::external;
+  std::string unavailable;  // why it cannot run on this machine (say, its runtime is missing), or ""
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
   std::vector<SweepKnob> sweep_knobs;             // what trades its run time for accuracy

@@ -1,5 +1,6 @@
 #include "result.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -59,6 +60,10 @@ nlohmann::json to_json(const Result& r) {
   j["ns_per_step"] = r.ns_per_step;
   j["ns_per_ball_step"] = r.ns_per_ball_step;
   j["harness_s"] = r.harness_s;
+  if (r.engine_process_s) {
+    j["engine_process_s"] = *r.engine_process_s;
+    j["ns_per_ball_step_process"] = *r.engine_process_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n);
+  }
   j["out_of_plane_max"] = r.out_of_plane_max;
   j["samples"] = m.samples;
   j["energy"] = {{"initial", m.energy.initial},
@@ -125,6 +130,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.ns_per_step = j.at("ns_per_step");
   r.ns_per_ball_step = j.at("ns_per_ball_step");
   r.harness_s = j.value("harness_s", 0.0);
+  if (j.contains("engine_process_s")) r.engine_process_s = j.at("engine_process_s").get<double>();
   r.out_of_plane_max = j.value("out_of_plane_max", 0.0);
   MetricsSummary& m = r.metrics;
   m.samples = j.value("samples", 0L);

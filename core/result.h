@@ -36,6 +36,10 @@ struct Result {
   double ns_per_step = 0;
   double ns_per_ball_step = 0;
   double harness_s = 0;         // reading states, metrics and trajectory output (s)
+  // Engines in another process (adapters/process/): their step time as that process measured it
+  // around its own step calls (s), beside engine_s, which adds the pipe. JSON "engine_process_s"
+  // and "ns_per_ball_step_process", present only for such engines.
+  std::optional<double> engine_process_s;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;
   ReferenceErrorSummary reference;  // error against `exact`, when it ran alongside

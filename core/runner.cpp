@@ -227,6 +227,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     for (int b = 0; b < scene.n(); ++b) r.series.final_pos.push_back({state.pos(b, 0), state.pos(b, 1)});
   r.checksum_final = checksum_hex(final_sum), r.checksum_trajectory = checksum_hex(trajectory_sum);
   r.engine_s = engine_s;
+  r.engine_process_s = engine->own_step_seconds();
   r.harness_s = std::max(0.0, seconds_since(harness_start) - engine_s);
   const long stepped = std::max(1L, r.steps_done);
   r.ns_per_step = engine_s * 1e9 / stepped;

@@ -7,7 +7,7 @@ BALLBENCH_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
   libbox2d-dev libbullet-dev libchipmunk-dev libode-dev libxxhash-dev
-  gnuplot-nox python3 python3-pandas
+  gnuplot-nox python3 python3-pandas nodejs
 )
 
 # CI only (.ci/run): clang and its runtime libraries for the libFuzzer target (tests/fuzz/). The
@@ -30,6 +30,29 @@ ballbench_install_packages() {
   [ "$(id -u)" -ne 0 ] && sudo="sudo"
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+}
+
+# ballbench_install_node_engines: the Node engines' packages (adapters/node/package-lock.json) by
+# `npm ci`, skipped when that lock file is what was installed last. npm comes with NodeSource's
+# nodejs; Debian's nodejs needs Debian's npm, installed only where no npm is found (it conflicts
+# with NodeSource's). Without node, npm or the registry the build goes on: those engines are then
+# listed as unavailable, with the reason.
+ballbench_install_node_engines() {
+  local dir stamp
+  dir="$(dirname "${BASH_SOURCE[0]}")/../adapters/node"
+  stamp="$dir/node_modules/.ballbench-installed"
+  command -v npm >/dev/null || (ballbench_install_packages npm) || true
+  if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
+    echo "node or npm not found: the Node engines (adapters/node/) will be listed as unavailable" >&2
+    return 0
+  fi
+  cmp -s "$dir/package-lock.json" "$stamp" && return 0
+  echo "installing the Node engines' packages: npm ci in adapters/node" >&2
+  if (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error >&2); then
+    cp "$dir/package-lock.json" "$stamp"
+  else
+    echo "npm ci failed in adapters/node: the Node engines will be listed as unavailable" >&2
+  fi
 }
 
 # ballbench_build PRESET: configure and build with a CMake preset (see CMakePresets.json).

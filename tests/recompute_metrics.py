@@ -135,6 +135,9 @@ def main():
     bad = []
     for r in results:
         label = r["engine"] if r["profile"] == "default" else f'{r["engine"]}/{r["profile"]}'
+        if r["status"] == "unsupported":  # never ran (say, a Node engine without Node): no trajectory
+            print(f"{label}: unsupported, nothing to check ({r['error']})")
+            continue
         steps = runs[label]
         samples = [steps[k] for k in sorted(steps)]
         if len(samples) != r["steps_done"] + 1 or any(len(s) != len(radii) for s in samples):

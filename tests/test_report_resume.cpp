@@ -59,9 +59,11 @@ radius = 0.1
   // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
   int report(const std::string& args = "") { return command("report --no-bench --out " + out().string() + " " + args); }
   // Runs `ballbench ARGS` on the stand-in scenes; returns the exit status, stderr in err_.
+  // BALLBENCH_ENGINES empty: the built-in engines only, as each run of an engine in another process
+  // starts that process (test_process_engine.cpp covers those).
   int command(const std::string& args) {
-    const std::string cmd = "BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " + BALLBENCH_CLI + " " +
-                            args + " >/dev/null 2>" + (root_ / "err.txt").string();
+    const std::string cmd = "BALLBENCH_ENGINES= BALLBENCH_SCENARIOS=" + (root_ / "scenarios").string() + " " +
+                            BALLBENCH_CLI + " " + args + " >/dev/null 2>" + (root_ / "err.txt").string();
     const int rc = std::system(cmd.c_str());
     err_ = slurp(root_ / "err.txt");
     return WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc);

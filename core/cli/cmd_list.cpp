@@ -20,9 +20,14 @@ void list() {
     }
   }
   fmt::print("engines:\n");
-  for (const auto& e : engine_registry())
+  for (const auto& e : engine_registry()) {
+    if (!e.info.unavailable.empty()) {
+      fmt::print("  {:<12} {:<14} unavailable: {}\n", e.info.name, "-", e.info.unavailable);
+      continue;
+    }
     fmt::print("  {:<12} {:<14} {:<9} profiles: {:<14} {}\n", e.info.name, e.info.version, role_name(e.info.role),
                fmt::format("{}", fmt::join(e.info.profiles, ",")), e.info.summary);
+  }
 }
 
 }  // namespace

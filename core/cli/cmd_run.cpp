@@ -39,8 +39,7 @@ struct RunArgs {
 // engine left out of this run, and it is found before the first run rather than after. Each named
 // engine is built on a one-ball copy of the scene, which reads (so checks) its settings as a run would.
 void check_settings(const Scene& scene, const nlohmann::json& overrides) {
-  std::vector<std::string> names;
-  for (const auto& e : engine_registry()) names.push_back(e.info.name);
+  const std::vector<std::string> names = engine_names();
   std::vector<const EngineEntry*> named;
   const auto known = [&](const std::string& name, const std::string& where) {
     const auto it = std::find(names.begin(), names.end(), name);

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "input_error.h"
 #include "interrupt.h"
+#include "registry.h"
 #include "run_engines.h"
 
 namespace ballbench::cli {
@@ -25,6 +26,15 @@ void exit_if_interrupted(const std::string& kept) {
 int main(int argc, char** argv) {
   CLI::App app{"ballbench: compare 2D ball physics engines on identical scenes"};
   app.require_subcommand(1);
+  // Options of the app are also taken after the subcommand's name (`ballbench run --engines F ...`).
+  app.fallthrough();
+  app.add_option_function<std::vector<std::string>>(
+      "--engines",
+      [](const std::vector<std::string>& files) {
+        for (const auto& f : files) ballbench::use_engines_file(f);
+      },
+      "an engines file (TOML, adapters/process/README.md) naming external engines to add to the project's "
+      "engines.toml (repeatable)");
   ballbench::cli::set_command_line(argc, argv);
   ballbench::cli::add_list(app);
   ballbench::cli::add_run(app);

@@ -1,0 +1,120 @@
+'use strict';
+// The engine's side of ballbench's engine process protocol (adapters/process/PROTOCOL.md), shared
+// by the drivers here: JSON requests, one a line, on stdin; JSON replies, one a line, on stdout,
+// each state reply followed by its block of little-endian doubles. Nothing else may be written to
+// stdout, so console.log is sent to stderr, which the harness keeps for its error messages.
+console.log = console.info = console.warn = console.error;
+
+const PROTOCOL = 1;
+
+// A bad setting: the user's error, reported as such by the harness.
+class SettingsError extends Error {}
+
+// One write per reply: each write to the pipe wakes the harness, and a reply in two writes costs
+// two wake-ups.
+function send(reply, block) {
+  const line = Buffer.from(JSON.stringify(reply) + '\n');
+  process.stdout.write(block ? Buffer.concat([line, block]) : line);
+}
+
+// Settings of a profile with the overrides applied; each override must exist and keep the type.
+function applySettings(engine, defaults, overrides) {
+  const out = Object.assign({}, defaults);
+  for (const [key, value] of Object.entries(overrides || {})) {
+    if (!(key in defaults))
+      throw new SettingsError(`settings.${engine}.${key}: unknown setting (known: ${Object.keys(defaults).join(', ')})`);
+    if (typeof value !== typeof defaults[key])
+      throw new SettingsError(`settings.${engine}.${key}: expected a ${typeof defaults[key]}, got ${JSON.stringify(value)}`);
+    if (typeof value === 'number' && !Number.isFinite(value))
+      throw new SettingsError(`settings.${engine}.${key}: must be finite`);
+    out[key] = value;
+  }
+  return out;
+}
+
+// The state block: n ids, then n x, n y, n vx, n vy (doubles, little-endian: the machine's order).
+function stateReply(world, extra) {
+  const n = world.n;
+  const block = new Float64Array(5 * n);
+  for (let i = 0; i < n; ++i) block[i] = i;  // bodies are kept in scene order
+  world.read(block.subarray(n, 2 * n), block.subarray(2 * n, 3 * n), block.subarray(3 * n, 4 * n), block.subarray(4 * n));
+  const reply = Object.assign({ ok: true }, extra, { state: { n, t: world.t, fields: ['id', 'x', 'y', 'vx', 'vy'] } });
+  return [reply, Buffer.from(block.buffer, block.byteOffset, block.byteLength)];
+}
+
+// driver: { hello(): handshake fields, or throws (unavailable); async load(scene, profile,
+// settings): a world { n, t, step(dt), read(x, y, vx, vy), settings } }.
+function serve(driver) {
+  let world = null;
+  const handle = async (msg) => {
+    switch (msg.op) {
+      case 'hello': {
+        let info;
+        try {
+          info = driver.hello();
+        } catch (e) {
+          return send({ ok: false, kind: 'unavailable', error: e.message });
+        }
+        return send(Object.assign({ ok: true, protocol: PROTOCOL, state_fields: ['id', 'x', 'y', 'vx', 'vy'] }, info));
+      }
+      case 'scene':
+        world = null;
+        world = await driver.load(msg.scene, msg.profile, msg.settings || {});
+        return send({ ok: true, settings: world.settings });
+      case 'step': {
+        if (!world) throw new Error('step before any scene');
+        const t0 = process.hrtime.bigint();
+        world.step(msg.dt);
+        const stepS = Number(process.hrtime.bigint() - t0) * 1e-9;  // the engine's own step call only
+        world.t += msg.dt;
+        if (!msg.read) return send({ ok: true, step_s: stepS });
+        return send(...stateReply(world, { step_s: stepS }));
+      }
+      case 'read':
+        if (!world) throw new Error('read before any scene');
+        return send(...stateReply(world, {}));
+      default:
+        throw new Error(`unknown request '${msg.op}'`);
+    }
+  };
+  let pending = '';
+  let queue = Promise.resolve();
+  process.stdin.on('data', (chunk) => {
+    pending += chunk.toString('utf8');
+    let end;
+    while ((end = pending.indexOf('\n')) >= 0) {
+      const line = pending.slice(0, end);
+      pending = pending.slice(end + 1);
+      queue = queue.then(async () => {
+        let msg;
+        try {
+          msg = JSON.parse(line);
+        } catch (e) {
+          return send({ ok: false, error: `request is not JSON: ${e.message}` });
+        }
+        try {
+          await handle(msg);
+        } catch (e) {
+          send({ ok: false, kind: e instanceof SettingsError ? 'settings' : 'engine', error: e.message || String(e) });
+        }
+      });
+    }
+  });
+  process.stdin.on('end', () => queue.then(() => process.exit(0)));
+}
+
+// Four static walls of half-thickness w around the box, inner faces on its bounds, as the
+// Chipmunk and Box2D adapters build them: thick, so a fast ball is pushed back in, not out.
+function wallRects(container) {
+  const [x0, y0] = container.min, [x1, y1] = container.max;
+  const w = Math.max(1, 0.5 * Math.max(x1 - x0, y1 - y0));
+  const cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), hx = 0.5 * (x1 - x0) + 2 * w, hy = 0.5 * (y1 - y0) + 2 * w;
+  return {
+    halfThickness: w,
+    rects: [  // centre x, centre y, half width, half height
+      [cx, y0 - w, hx, w], [cx, y1 + w, hx, w], [x0 - w, cy, w, hy], [x1 + w, cy, w, hy],
+    ],
+  };
+}
+
+module.exports = { serve, applySettings, SettingsError, wallRects };

@@ -1,0 +1,244 @@
+#include "child_process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "isolated_run.h"
+
+namespace ballbench {
+namespace {
+
+constexpr size_t kStderrKeep = 4096;  // bytes of the child's stderr kept for error messages
+constexpr auto kExitGrace = std::chrono::milliseconds(500);  // for a child told to stop (stdin closed)
+
+int ms_until(ChildProcess::Clock::time_point deadline) {
+  const auto left =
+      std::chrono::duration_cast<std::chrono::milliseconds>(deadline - ChildProcess::Clock::now()).count() + 1;
+  return static_cast<int>(std::clamp<long long>(left, 0, 60'000));
+}
+
+void close_fd(int& fd) {
+  if (fd >= 0) ::close(fd);
+  fd = -1;
+}
+
+std::string join_argv(const std::vector<std::string>& argv) { return fmt::format("{}", fmt::join(argv, " ")); }
+
+}  // namespace
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::string& cwd)
+    : label_(fmt::format("`{}`", join_argv(argv))) {
+  if (argv.empty() || argv[0].empty()) throw ChildProcessError("process engine: empty command");
+  int in[2], out[2], err[2], status[2];
+  if (::pipe2(in, O_CLOEXEC) != 0) throw ChildProcessError(fmt::format("{}: pipe: {}", label_, std::strerror(errno)));
+  if (::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0 || ::pipe2(status, O_CLOEXEC) != 0) {
+    const int e = errno;
+    for (int fd : {in[0], in[1]}) ::close(fd);
+    throw ChildProcessError(fmt::format("{}: pipe: {}", label_, std::strerror(e)));
+  }
+  std::vector<char*> args;
+  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  const pid_t parent = ::getpid();
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) {
+    const int e = errno;
+    for (int fd : {in[0], in[1], out[0], out[1], err[0], err[1], status[0], status[1]}) ::close(fd);
+    throw ChildProcessError(fmt::format("{}: fork: {}", label_, std::strerror(e)));
+  }
+  if (pid == 0) {
+    // Dies with the thread that started it, so a killed or crashed harness leaves no engine behind.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
+    ::dup2(in[0], STDIN_FILENO), ::dup2(out[1], STDOUT_FILENO), ::dup2(err[1], STDERR_FILENO);
+    // Nothing else of the harness's is inherited (another engine's pipes would keep it open).
+    for (int fd = 3; fd < 1024; ++fd)
+      if (fd != status[1]) ::close(fd);
+    signal(SIGPIPE, SIG_DFL);
+    // Its own process group: a Ctrl-C at the terminal reaches the harness, which stops its runs at
+    // a step boundary, and not the engine, which must still answer until then (Node resets an
+    // ignored SIGINT at start-up, so ignoring it would not do).
+    ::setpgid(0, 0);
+    int e = 0;
+    if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) e = errno;
+    if (e == 0) ::execvp(args[0], args.data()), e = errno;
+    [[maybe_unused]] const ssize_t w = ::write(status[1], &e, sizeof e);
+    ::_exit(127);
+  }
+  pid_ = pid, owner_ = parent;
+  ::close(in[0]), ::close(out[1]), ::close(err[1]), ::close(status[1]);
+  in_ = in[1], out_ = out[0], err_ = err[0];
+  // The status pipe closes at exec (end of file) or carries the errno of a failed chdir or exec.
+  int e = 0;
+  ssize_t got;
+  while ((got = ::read(status[0], &e, sizeof e)) < 0 && errno == EINTR) {
+  }
+  ::close(status[0]);
+  if (got == sizeof e) {
+    while (::waitpid(pid_, &wait_status_, 0) < 0 && errno == EINTR) {
+    }
+    exited_ = true, failed_ = true;
+    close_fd(in_), close_fd(out_), close_fd(err_);
+    if (e == ENOENT && argv[0].find('/') == std::string::npos)
+      throw ChildProcessError(fmt::format("{}: cannot start it: '{}' is not found on PATH", label_, argv[0]));
+    throw ChildProcessError(fmt::format("{}: cannot start '{}'{}: {}", label_, argv[0],
+                                        cwd.empty() ? "" : fmt::format(" in {}", cwd), std::strerror(e)));
+  }
+  ::fcntl(err_, F_SETFL, O_NONBLOCK);
+}
+
+ChildProcess::~ChildProcess() {
+  if (owner_ != ::getpid()) {  // a fork's copy: the child belongs to the process that started it
+    close_fd(in_), close_fd(out_), close_fd(err_);
+    return;
+  }
+  close_fd(in_);
+  if (pid_ > 0 && !exited_) {
+    const auto until = Clock::now() + kExitGrace;
+    while (::waitpid(pid_, &wait_status_, WNOHANG) == 0 && Clock::now() < until)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (::waitpid(pid_, &wait_status_, WNOHANG) == 0) {
+      ::kill(pid_, SIGKILL);
+      while (::waitpid(pid_, &wait_status_, 0) < 0 && errno == EINTR) {
+      }
+    }
+  }
+  close_fd(out_), close_fd(err_);
+}
+
+bool ChildProcess::usable() const { return owner_ == ::getpid() && !failed_ && !exited_; }
+
+void ChildProcess::write(const std::string& bytes, Clock::time_point deadline) {
+  // A child that exited raises SIGPIPE on the write, which would end the harness: it is blocked
+  // for this thread and a pending one taken back, so the write fails with EPIPE instead.
+  sigset_t pipe_set, old;
+  sigemptyset(&pipe_set);
+  sigaddset(&pipe_set, SIGPIPE);
+  pthread_sigmask(SIG_BLOCK, &pipe_set, &old);
+  const char* p = bytes.data();
+  size_t left = bytes.size();
+  int error = 0;
+  while (left > 0 && error == 0) {
+    pollfd fds[2] = {{in_, POLLOUT, 0}, {err_, POLLIN, 0}};
+    const int ready = ::poll(fds, 2, ms_until(deadline));
+    if (ready < 0 && errno != EINTR) error = errno;
+    if (fds[1].revents) drain_stderr();
+    if (ready == 0 && Clock::now() >= deadline) error = ETIMEDOUT;
+    if (ready <= 0 || !(fds[0].revents & (POLLOUT | POLLERR | POLLHUP))) continue;
+    const ssize_t n = ::write(in_, p, std::min<size_t>(left, 1 << 16));
+    if (n < 0 && errno != EINTR && errno != EAGAIN) error = errno;
+    if (n > 0) p += n, left -= static_cast<size_t>(n);
+  }
+  timespec zero{0, 0};
+  while (sigtimedwait(&pipe_set, nullptr, &zero) > 0) {
+  }
+  pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  if (error == ETIMEDOUT) throw failure("stopped reading its input (no request taken within the time limit)");
+  if (error != 0) throw failure(fmt::format("cannot be written to ({})", std::strerror(error)));
+}
+
+void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for) {
+  for (;;) {
+    if (Clock::now() >= deadline) throw failure(fmt::format("sent no {} within the time limit", waiting_for));
+    pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
+    const int ready = ::poll(fds, 2, ms_until(deadline));
+    if (ready < 0 && errno != EINTR) throw failure(fmt::format("cannot be read ({})", std::strerror(errno)));
+    if (ready <= 0) continue;
+    if (fds[1].revents) drain_stderr();
+    if (!fds[0].revents) continue;
+    char buf[1 << 16];
+    const ssize_t n = ::read(out_, buf, sizeof buf);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n <= 0) {
+      // End of its output: it exited or is exiting. A moment for its last stderr and its status.
+      const auto until = Clock::now() + kExitGrace;
+      while (!exited_ && Clock::now() < until) {
+        drain_stderr();
+        if (::waitpid(pid_, &wait_status_, WNOHANG) == pid_) exited_ = true;
+        else std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      }
+      drain_stderr();
+      throw failure(fmt::format("closed its output before sending a {}", waiting_for));
+    }
+    inbox_.append(buf, static_cast<size_t>(n));
+    return;
+  }
+}
+
+std::string ChildProcess::read_line(Clock::time_point deadline, size_t max_bytes) {
+  size_t end;
+  while ((end = inbox_.find('\n')) == std::string::npos) {
+    if (inbox_.size() > max_bytes)
+      throw failure(fmt::format("sent garbage: a reply line longer than {} bytes, starting '{}'", max_bytes,
+                                inbox_.substr(0, 60)));
+    pump(deadline, "reply");
+  }
+  std::string line = inbox_.substr(0, end);
+  inbox_.erase(0, end + 1);
+  return line;
+}
+
+void ChildProcess::read_bytes(void* out, size_t n, Clock::time_point deadline) {
+  while (inbox_.size() < n) pump(deadline, "state");
+  std::memcpy(out, inbox_.data(), n);
+  inbox_.erase(0, n);
+}
+
+void ChildProcess::drain_stderr() {
+  char buf[4096];
+  while (err_ >= 0) {
+    const ssize_t n = ::read(err_, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return;  // nothing more for now (non-blocking)
+    if (n == 0) {       // the child closed its stderr: stop polling it, or poll would spin on the hang-up
+      close_fd(err_);
+      return;
+    }
+    stderr_.append(buf, static_cast<size_t>(n));
+    if (stderr_.size() > 2 * kStderrKeep) stderr_.erase(0, stderr_.size() - kStderrKeep);
+  }
+}
+
+std::string ChildProcess::stderr_tail() {
+  drain_stderr();
+  std::string s = stderr_.size() > kStderrKeep ? stderr_.substr(stderr_.size() - kStderrKeep) : stderr_;
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
+  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.erase(0, 1);
+  std::string out;
+  for (char c : s) {
+    if (c == '\n') out += " | ";
+    else if (c != '\r') out += c;
+  }
+  return out;
+}
+
+std::string ChildProcess::exit_description() {
+  if (!exited_ && pid_ > 0 && ::waitpid(pid_, &wait_status_, WNOHANG) == pid_) exited_ = true;
+  if (!exited_) return "";
+  if (WIFSIGNALED(wait_status_)) return fmt::format(" (killed by {})", signal_description(WTERMSIG(wait_status_)));
+  if (WIFEXITED(wait_status_)) return fmt::format(" (exited with status {})", WEXITSTATUS(wait_status_));
+  return "";
+}
+
+ChildProcessError ChildProcess::failure(const std::string& what) {
+  failed_ = true;
+  const std::string how = exit_description();
+  const std::string err = stderr_tail();
+  return ChildProcessError(
+      fmt::format("engine process {} {}{}{}", label_, what, how, err.empty() ? "" : "; its stderr: " + err));
+}
+
+}  // namespace ballbench

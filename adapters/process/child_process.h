@@ -1,0 +1,68 @@
+#pragma once
+// A command run as a child process with pipes on its stdin, stdout and stderr: what a process
+// engine (PROTOCOL.md) runs in. Reads wait at most until a deadline, so a child that hangs is an
+// error, not a hang; its stderr is kept (the last few kilobytes) for the error message. POSIX and
+// Linux (prctl: the child is killed when the thread that started it dies).
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace ballbench {
+
+// The child misbehaved: it exited, closed its output, sent no reply in time, or sent what the
+// protocol does not allow. The message says which, with the child's last stderr lines.
+class ChildProcessError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class ChildProcess {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  // Starts argv[0] (looked up on PATH) with `argv` in the folder `cwd` ("" = this process's).
+  // Throws ChildProcessError if it cannot be started (the program is missing or not executable).
+  ChildProcess(const std::vector<std::string>& argv, const std::string& cwd);
+  // Closes its stdin (a conforming engine exits at end of input), waits a moment, then kills it.
+  // In a forked copy of the process that started it, only the descriptors are closed.
+  ~ChildProcess();
+  ChildProcess(const ChildProcess&) = delete;
+  ChildProcess& operator=(const ChildProcess&) = delete;
+
+  // Everything written, or ChildProcessError (the child exited or stopped reading past `deadline`).
+  void write(const std::string& bytes, Clock::time_point deadline);
+  // One line without its '\n', at most `max_bytes` long (longer is garbage).
+  std::string read_line(Clock::time_point deadline, size_t max_bytes);
+  // Exactly `n` bytes into `out`.
+  void read_bytes(void* out, size_t n, Clock::time_point deadline);
+
+  // True if this process started it (not a fork's inherited copy) and it has not failed.
+  bool usable() const;
+  // "`node adapters/node/rapier.js`": how errors name it.
+  const std::string& label() const { return label_; }
+  // The end of what the child wrote on stderr so far, trimmed, with line breaks as " | ".
+  std::string stderr_tail();
+  // An error naming the child, `what` happened, and how it ended (exit status or signal) if it
+  // has, with its stderr: the one message every failure here carries.
+  ChildProcessError failure(const std::string& what);
+
+ private:
+  void pump(Clock::time_point deadline, const char* waiting_for);  // reads whatever arrives next
+  void drain_stderr();
+  std::string exit_description();
+
+  std::string label_;
+  pid_t pid_ = -1;
+  pid_t owner_ = -1;  // the process that started it
+  int in_ = -1, out_ = -1, err_ = -1;
+  bool failed_ = false, exited_ = false;
+  int wait_status_ = 0;
+  std::string inbox_;   // stdout read but not yet taken
+  std::string stderr_;  // the last kStderrKeep bytes of stderr
+};
+
+}  // namespace ballbench

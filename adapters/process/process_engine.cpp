@@ -1,0 +1,175 @@
+#include "process_engine.h"
+
+#include <algorithm>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+#include "protocol_client.h"
+
+namespace ballbench {
+namespace {
+
+// The processes of one engine entry that finished a run and wait for the next scene.
+struct ProcessPool {
+  ProcessEngineSpec spec;
+  std::vector<std::string> settings_keys;
+  std::vector<std::unique_ptr<ProtocolClient>> idle;
+
+  std::unique_ptr<ProtocolClient> take() {
+    while (!idle.empty()) {
+      std::unique_ptr<ProtocolClient> c = std::move(idle.back());
+      idle.pop_back();
+      if (c->usable()) return c;  // a fork's inherited copy is not: that process belongs to the parent
+    }
+    auto c = std::make_unique<ProtocolClient>(spec.command, spec.cwd, spec.timeout_s);
+    c->send_hello();
+    c->hello_reply();
+    return c;
+  }
+};
+
+class ProcessEngine final : public Engine {
+ public:
+  ProcessEngine(std::shared_ptr<ProcessPool> pool, std::unique_ptr<ProtocolClient> client, nlohmann::json settings)
+      : pool_(std::move(pool)), client_(std::move(client)), settings_(std::move(settings)) {}
+
+  ~ProcessEngine() override {
+    if (!broken_ && client_->usable()) pool_->idle.push_back(std::move(client_));
+  }
+  ProcessEngine(const ProcessEngine&) = delete;
+  ProcessEngine& operator=(const ProcessEngine&) = delete;
+
+  void step(double dt) override {
+    try {
+      own_s_ += client_->step(dt, state_);
+      have_state_ = true;
+    } catch (...) {
+      broken_ = true;  // the process is in an unknown state: never reused
+      throw;
+    }
+  }
+
+  void read(State& out) const override {
+    if (!have_state_) {
+      try {
+        client_->read(state_);
+      } catch (...) {
+        broken_ = true;
+        throw;
+      }
+      have_state_ = true;
+    }
+    out = state_;
+  }
+
+  nlohmann::json settings() const override {
+    nlohmann::json s = settings_;
+    // How the harness reached it: the command and the protocol are part of what produced the result.
+    s["process"] = {{"command", pool_->spec.command},
+                    {"cwd", pool_->spec.cwd},
+                    {"protocol", kProtocolVersion},
+                    {"reply_timeout_s", pool_->spec.timeout_s}};
+    return s;
+  }
+
+  std::optional<double> own_step_seconds() const override { return own_s_; }
+
+ private:
+  std::shared_ptr<ProcessPool> pool_;
+  std::unique_ptr<ProtocolClient> client_;
+  nlohmann::json settings_;
+  mutable State state_;  // the state after the last step: each step's reply carries it
+  mutable bool have_state_ = false, broken_ = false;
+  double own_s_ = 0;
+};
+
+std::string display_name(const ProcessEngineSpec& spec) {
+  if (!spec.name.empty()) return spec.name;
+  return fmt::format("process:{}", fmt::join(spec.command, " "));
+}
+
+// An entry for an engine whose process could not start or answer.
+EngineEntry broken_entry(const ProcessEngineSpec& spec, const std::string& why) {
+  EngineEntry e;
+  e.info.name = display_name(spec);
+  e.info.version = "-";
+  e.info.summary = fmt::format("external engine process ({})", spec.source);
+  e.info.profiles = {"default"};
+  // A registered engine that cannot run here (say, Node is not installed) is listed as unavailable
+  // and its rows are unsupported; one named on the command line is a failed row with the reason.
+  if (!spec.name.empty()) e.info.unavailable = why;
+  e.create = [why](const Scene&, const std::string&, const nlohmann::json&) -> std::unique_ptr<Engine> {
+    throw std::runtime_error(why);
+  };
+  return e;
+}
+
+EngineEntry working_entry(const ProcessEngineSpec& spec, Handshake h, std::unique_ptr<ProtocolClient> first) {
+  auto pool = std::make_shared<ProcessPool>();
+  pool->spec = spec;
+  pool->settings_keys = h.settings_keys;
+  pool->idle.push_back(std::move(first));
+  EngineEntry e;
+  e.info = std::move(h.info);
+  if (!spec.name.empty()) e.info.name = spec.name;
+  const std::string name = e.info.name;
+  const std::vector<std::string> profiles = e.info.profiles;
+  e.create = [pool, name, profiles](const Scene& scene, const std::string& profile, const nlohmann::json& settings) {
+    if (std::find(profiles.begin(), profiles.end(), profile) == profiles.end())
+      throw InputError(fmt::format("{}: unknown profile '{}' (known: {})", name, profile, fmt::join(profiles, ", ")));
+    for (const auto& [key, value] : settings.items())
+      if (std::find(pool->settings_keys.begin(), pool->settings_keys.end(), key) == pool->settings_keys.end())
+        throw InputError(fmt::format("settings.{}.{}: unknown setting{} (known: {})", name, key,
+                                     did_you_mean(key, pool->settings_keys), fmt::join(pool->settings_keys, ", ")));
+    std::unique_ptr<ProtocolClient> client = pool->take();
+    nlohmann::json effective = client->load_scene(scene, profile, settings);
+    return std::unique_ptr<Engine>(std::make_unique<ProcessEngine>(pool, std::move(client), std::move(effective)));
+  };
+  return e;
+}
+
+}  // namespace
+
+std::vector<EngineEntry> process_engine_entries(const std::vector<ProcessEngineSpec>& specs) {
+  std::vector<std::unique_ptr<ProtocolClient>> clients(specs.size());
+  std::vector<std::string> errors(specs.size());
+  for (size_t k = 0; k < specs.size(); ++k) {
+    try {
+      clients[k] = std::make_unique<ProtocolClient>(specs[k].command, specs[k].cwd, specs[k].timeout_s);
+      clients[k]->send_hello();
+    } catch (const std::exception& e) {
+      errors[k] = e.what();
+    }
+  }
+  std::vector<EngineEntry> out;
+  for (size_t k = 0; k < specs.size(); ++k) {
+    if (errors[k].empty()) {
+      try {
+        Handshake h = clients[k]->hello_reply();
+        out.push_back(working_entry(specs[k], std::move(h), std::move(clients[k])));
+        continue;
+      } catch (const std::exception& e) {
+        errors[k] = e.what();
+      }
+    }
+    out.push_back(broken_entry(specs[k], errors[k]));
+  }
+  return out;
+}
+
+EngineEntry process_engine_entry(const ProcessEngineSpec& spec) { return process_engine_entries({spec}).front(); }
+
+ProcessEngineSpec parse_process_engine(const std::string& text) {
+  ProcessEngineSpec spec;
+  std::istringstream in(text.substr(text.find(':') + 1));
+  for (std::string word; in >> word;) spec.command.push_back(word);
+  if (spec.command.empty()) throw InputError(fmt::format("--engine '{}': no command after 'process:'", text));
+  spec.source = "--engine";
+  return spec;
+}
+
+}  // namespace ballbench

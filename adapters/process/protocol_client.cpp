@@ -1,0 +1,203 @@
+#include "protocol_client.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "the protocol's doubles are little-endian, as this machine's");
+
+constexpr size_t kMaxReplyLine = 1 << 20;  // a handshake or settings reply; states come as binary blocks
+
+std::vector<double> column(const Eigen::Ref<const Eigen::VectorXd>& v) { return {v.data(), v.data() + v.size()}; }
+
+std::string excerpt(const std::string& s) {
+  std::string out = s.substr(0, 80);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20) c = '?';
+  return s.size() > 80 ? out + "..." : out;
+}
+
+// Capabilities by the keys the handshake uses; an unknown key is an error (a typo would silently
+// keep a default).
+Capabilities capabilities_from(const nlohmann::json& j) {
+  Capabilities c;
+  const std::pair<const char*, bool*> keys[] = {
+      {"open_space", &c.open_space},         {"gravity", &c.gravity},
+      {"per_ball_radius", &c.per_ball_radius}, {"per_ball_mass", &c.per_ball_mass},
+      {"any_restitution", &c.any_restitution}, {"friction", &c.friction},
+      {"continuous_collision", &c.continuous_collision}, {"deterministic", &c.deterministic}};
+  if (!j.is_object()) throw std::runtime_error("'capabilities' is not an object");
+  for (const auto& [key, value] : j.items()) {
+    const auto it = std::find_if(std::begin(keys), std::end(keys), [&](const auto& k) { return key == k.first; });
+    if (it == std::end(keys)) throw std::runtime_error(fmt::format("unknown capability '{}'", key));
+    if (!value.is_boolean()) throw std::runtime_error(fmt::format("capability '{}' is not true or false", key));
+    *it->second = value.get<bool>();
+  }
+  return c;
+}
+
+std::vector<std::string> strings_from(const nlohmann::json& j, const char* what, bool allow_empty) {
+  if (!j.is_array() || (!allow_empty && j.empty())) throw std::runtime_error(fmt::format("'{}' is not a list of names", what));
+  std::vector<std::string> out;
+  for (const auto& s : j) {
+    if (!s.is_string() || s.get<std::string>().empty()) throw std::runtime_error(fmt::format("'{}' holds a non-name", what));
+    out.push_back(s.get<std::string>());
+  }
+  return out;
+}
+
+}  // namespace
+
+ProtocolClient::ProtocolClient(const std::vector<std::string>& argv, const std::string& cwd, double timeout_s)
+    : child_(argv, cwd), timeout_s_(timeout_s) {}
+
+void ProtocolClient::send_hello() {
+  const nlohmann::json hello = {{"op", "hello"}, {"protocol", kProtocolVersion}};
+  child_.write(hello.dump() + "\n", ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                                                    std::chrono::duration<double>(timeout_s_)));
+}
+
+Handshake ProtocolClient::hello_reply() {
+  const nlohmann::json j = reply("hello");
+  try {
+    if (j.value("protocol", -1) != kProtocolVersion)
+      throw std::runtime_error(fmt::format("it speaks protocol version {}, the harness {}", j.value("protocol", nlohmann::json()).dump(), kProtocolVersion));
+    Handshake h;
+    h.info.name = j.at("name").get<std::string>();
+    h.info.version = j.at("version").get<std::string>();
+    h.info.summary = j.value("summary", "");
+    h.info.limits = j.value("limits", "");
+    h.info.caps = capabilities_from(j.at("capabilities"));
+    h.info.profiles = strings_from(j.at("profiles"), "profiles", false);
+    h.settings_keys = strings_from(j.value("settings_keys", nlohmann::json::array()), "settings_keys", true);
+    for (const auto& k : j.value("sweep_knobs", nlohmann::json::array()))
+      h.info.sweep_knobs.push_back({k.at("key").get<std::string>(), k.at("values")});
+    const auto fields = strings_from(j.value("state_fields", nlohmann::json::array({"id", "x", "y", "vx", "vy"})), "state_fields", false);
+    for (const char* need : {"id", "x", "y", "vx", "vy"})
+      if (std::find(fields.begin(), fields.end(), need) == fields.end())
+        throw std::runtime_error(fmt::format("'state_fields' lacks '{}'", need));
+    if (h.info.name.empty() || h.info.name.find_first_of(" ,.=:/") != std::string::npos)
+      throw std::runtime_error(fmt::format("name '{}' is empty or holds one of ' ,.=:/'", h.info.name));
+    return h;
+  } catch (const nlohmann::json::exception& e) {
+    throw child_.failure(fmt::format("sent a handshake the harness cannot read: {}", e.what()));
+  } catch (const ChildProcessError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw child_.failure(fmt::format("sent a handshake the harness cannot use: {}", e.what()));
+  }
+}
+
+nlohmann::json ProtocolClient::load_scene(const Scene& scene, const std::string& profile, const nlohmann::json& settings) {
+  nlohmann::json container = {{"kind", scene.container.kind == ContainerKind::Box ? "box" : "none"}};
+  if (scene.container.kind == ContainerKind::Box)
+    container["min"] = {scene.container.min.x(), scene.container.min.y()},
+    container["max"] = {scene.container.max.x(), scene.container.max.y()};
+  const nlohmann::json balls = {{"n", scene.n()},
+                                {"x", column(scene.initial.pos.col(0))},
+                                {"y", column(scene.initial.pos.col(1))},
+                                {"vx", column(scene.initial.vel.col(0))},
+                                {"vy", column(scene.initial.vel.col(1))},
+                                {"radius", column(scene.radius)},
+                                {"mass", column(scene.mass)}};
+  const nlohmann::json message = {
+      {"op", "scene"},
+      {"profile", profile},
+      {"settings", settings.is_object() ? settings : nlohmann::json::object()},
+      {"scene",
+       {{"name", scene.name},
+        {"dt", scene.dt},
+        {"gravity", {scene.gravity.x(), scene.gravity.y()}},
+        {"restitution", scene.restitution},
+        {"friction", scene.friction},
+        {"container", container},
+        {"balls", balls}}}};
+  n_ = scene.n();
+  const nlohmann::json j = request(message, "scene");
+  return j.value("settings", nlohmann::json::object());
+}
+
+double ProtocolClient::step(double dt, State& out) {
+  const nlohmann::json j = request({{"op", "step"}, {"dt", dt}, {"read", true}}, "step");
+  const auto it = j.find("step_s");
+  if (it == j.end() || !it->is_number() || !(it->get<double>() >= 0))
+    throw child_.failure(fmt::format("sent garbage in reply to 'step': no step time 'step_s' >= 0 in '{}'", excerpt(j.dump())));
+  read_state(j, out, "step");
+  return it->get<double>();
+}
+
+void ProtocolClient::read(State& out) { read_state(request({{"op", "read"}}, "read"), out, "read"); }
+
+nlohmann::json ProtocolClient::request(const nlohmann::json& message, const char* op) {
+  const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                                          std::chrono::duration<double>(timeout_s_));
+  child_.write(message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n", deadline);
+  return reply(op);
+}
+
+nlohmann::json ProtocolClient::reply(const char* op) {
+  const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                                          std::chrono::duration<double>(timeout_s_));
+  const std::string line = child_.read_line(deadline, kMaxReplyLine);
+  const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("ok") || !j["ok"].is_boolean())
+    throw child_.failure(fmt::format("sent garbage in reply to '{}': '{}' is not a JSON object with \"ok\"", op, excerpt(line)));
+  if (j["ok"].get<bool>()) return j;
+  const std::string error = j.value("error", "(no message)"), kind = j.value("kind", "engine");
+  if (kind == "settings") throw InputError(error);  // the user's settings: "settings.ENGINE.KEY: why"
+  throw std::runtime_error(fmt::format("engine process {} refused '{}': {}", child_.label(), op, error));
+}
+
+void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const char* op) {
+  const auto it = reply.find("state");
+  std::vector<std::string> fields;
+  long n = -1;
+  double t = NAN;
+  try {
+    if (it == reply.end()) throw std::runtime_error("no 'state'");
+    n = it->at("n").get<long>();
+    t = it->at("t").get<double>();
+    fields = strings_from(it->at("fields"), "fields", false);
+  } catch (const std::exception& e) {
+    throw child_.failure(fmt::format("sent garbage in reply to '{}': {} in '{}'", op, e.what(), excerpt(reply.dump())));
+  }
+  if (n != n_) throw child_.failure(fmt::format("sent a state of {} balls in reply to '{}'; the scene has {}", n, op, n_));
+  constexpr size_t kMaxFields = 16;  // id, x, y, vx, vy and room for more (w, ...), not a memory bomb
+  if (fields.size() > kMaxFields)
+    throw child_.failure(fmt::format("sent a state of {} fields in reply to '{}' (at most {})", fields.size(), op, kMaxFields));
+  const auto col = [&](const char* name) {
+    return std::find(fields.begin(), fields.end(), name) - fields.begin();
+  };
+  for (const char* need : {"id", "x", "y", "vx", "vy"})
+    if (col(need) == static_cast<long>(fields.size()))
+      throw child_.failure(fmt::format("sent a state without '{}' in reply to '{}'", need, op));
+  block_.resize(fields.size() * static_cast<size_t>(n));
+  const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
+                                                          std::chrono::duration<double>(timeout_s_));
+  child_.read_bytes(block_.data(), block_.size() * sizeof(double), deadline);
+  out.t = t;
+  out.resize(static_cast<int>(n));
+  const double* ids = block_.data() + col("id") * n;
+  const double *x = block_.data() + col("x") * n, *y = block_.data() + col("y") * n;
+  const double *vx = block_.data() + col("vx") * n, *vy = block_.data() + col("vy") * n;
+  std::vector<char> seen(static_cast<size_t>(n), 0);
+  for (long k = 0; k < n; ++k) {
+    const double id = ids[k];
+    if (!(id >= 0 && id < static_cast<double>(n) && id == std::floor(id)) || seen[static_cast<size_t>(id)])
+      throw child_.failure(
+          fmt::format("sent garbage in reply to '{}': ball id {} at row {} is not a new index below {}", op, id, k, n));
+    const long i = static_cast<long>(id);
+    seen[static_cast<size_t>(i)] = 1;
+    out.pos(i, 0) = x[k], out.pos(i, 1) = y[k], out.vel(i, 0) = vx[k], out.vel(i, 1) = vy[k];
+  }
+}
+
+}  // namespace ballbench

@@ -1,0 +1,245 @@
+// Engines in other processes (adapters/process/): the Python template engine through the
+// protocol, and test-only engine processes that crash, hang, send garbage or refuse, each of which
+// must be one clear error in its own row, never a hang, while other rows complete.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <stdlib.h>
+
+#include "cli_runner.h"
+#include "input_error.h"
+#include "isolated_run.h"
+#include "process/engines_file.h"
+#include "process/process_engine.h"
+#include "registry.h"
+#include "run_engines.h"
+#include "scene_loader.h"
+
+namespace ballbench {
+namespace {
+
+const std::string kSource = BALLBENCH_SOURCE_DIR;
+const std::string kExample = kSource + "/adapters/process/example_engine.py";
+const std::string kMisbehaving = kSource + "/tests/process_engines/misbehaving_engine.py";
+
+ProcessEngineSpec spec(std::vector<std::string> command, double timeout_s = 20) {
+  ProcessEngineSpec s;
+  s.name = "";
+  s.command = std::move(command);
+  s.timeout_s = timeout_s;
+  s.source = "test";
+  return s;
+}
+
+EngineEntry misbehaving(const std::string& mode, double timeout_s = 20) {
+  return process_engine_entry(spec({"python3", kMisbehaving, mode}, timeout_s));
+}
+
+const Scene& box() {
+  static const Scene s = load_scene("seed-box");
+  return s;
+}
+
+RunOptions steps(long n) {
+  RunOptions o;
+  o.steps = n;
+  return o;
+}
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The table row of `engine` in `ballbench run`'s output, or "".
+std::string row(const std::string& out, const std::string& engine) {
+  std::istringstream in(out);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind(engine + " ", 0) == 0) return line;
+  return "";
+}
+
+TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
+  const EngineEntry e = process_engine_entry(spec({"python3", kExample}));
+  ASSERT_TRUE(e.info.unavailable.empty()) << e.info.unavailable;
+  EXPECT_EQ(e.info.name, "example");  // named on the command line: the name its handshake gives
+  EXPECT_EQ(e.info.version, "1.0");
+  EXPECT_FALSE(e.info.caps.friction);
+  const Result r = run_engine(box(), e, steps(40));
+  EXPECT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.steps_done, 40);
+  EXPECT_EQ(r.settings["pair_passes"], 1);
+  EXPECT_EQ(r.settings["process"]["protocol"], 1);
+  // The engine's own step time, beside the harness's, which adds the pipe.
+  ASSERT_TRUE(r.engine_process_s.has_value());
+  EXPECT_GT(*r.engine_process_s, 0);
+  // Seed-box's balls move, and the figures come from the states read back.
+  EXPECT_GT(r.metrics.energy.initial, 0);
+  EXPECT_EQ(r.metrics.samples, 41);
+}
+
+TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
+  const EngineEntry e = process_engine_entry(spec({"python3", kExample}));
+  const Result a = run_engine(box(), e, steps(20)), b = run_engine(box(), e, steps(20));
+  EXPECT_EQ(a.status, "ok") << a.error;
+  // A new scene replaces the world: the same run twice gives the same trajectory.
+  EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
+}
+
+// A process serves one profile's scene after another's: module-wide settings (matter's resting
+// threshold, planck's velocity threshold) must not carry over from the profile before.
+TEST(ProcessEngine, AProfileAfterAnotherInTheSameProcessHasItsOwnSettings) {
+  for (const std::string name : {"matter", "planck"}) {  // the drivers that set module-wide values
+    const EngineEntry& e = find_engine(name);
+    if (!e.info.unavailable.empty() || e.info.profiles.size() < 2) continue;
+    const std::string& first = e.info.profiles[0], & second = e.info.profiles[1];
+    const EngineEntry fresh = process_engine_entry(spec({"node", kSource + "/adapters/node/" + name + ".js"}));
+    const nlohmann::json alone = fresh.create(box(), second, {})->settings();
+    e.create(box(), first, {});  // the registry's process: first one profile, then the other
+    nlohmann::json after = e.create(box(), second, {})->settings();
+    after.erase("process");
+    nlohmann::json want = alone;
+    want.erase("process");
+    EXPECT_EQ(after, want) << name << ": " << second << " after " << first;
+  }
+}
+
+TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
+  const Result r = run_engine(box(), misbehaving("crash"), steps(10));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_TRUE(has(r.error, "step 3 threw")) << r.error;
+  EXPECT_TRUE(has(r.error, "exited with status 3")) << r.error;
+  EXPECT_TRUE(has(r.error, "the misbehaving engine fell over")) << r.error;  // its stderr
+  EXPECT_EQ(r.steps_done, 2);
+}
+
+TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
+  const Result r = run_engine(box(), misbehaving("hang", 0.5), steps(10));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_TRUE(has(r.error, "sent no reply within the time limit")) << r.error;
+}
+
+TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
+  for (const auto& [mode, says] : {std::pair{"garbage", "sent garbage in reply to 'step': 'this is not json'"},
+                                   {"short-block", "closed its output before sending a state"},
+                                   {"bad-ids", "ball id 0 at row 1 is not a new index"},
+                                   {"error", "refused 'step': the solver lost track of ball 7"}}) {
+    const Result r = run_engine(box(), misbehaving(mode), steps(10));
+    EXPECT_EQ(r.status, "failed") << mode;
+    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
+  }
+}
+
+TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
+  EngineEntry missing = process_engine_entry(spec({"no-such-program-for-ballbench"}));
+  EXPECT_TRUE(has(run_engine(box(), missing, steps(5)).error, "'no-such-program-for-ballbench' is not found on PATH"));
+  // Registered (an engines file): unavailable, its rows unsupported with the reason.
+  ProcessEngineSpec named = spec({"no-such-program-for-ballbench"});
+  named.name = "absent";
+  const EngineEntry absent = process_engine_entry(named);
+  EXPECT_TRUE(has(absent.info.unavailable, "is not found on PATH")) << absent.info.unavailable;
+  const Result r = run_engine(box(), absent, steps(5));
+  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
+  for (const auto& [mode, says] : {std::pair{"unavailable", "the frobnicator library is not installed"},
+                                   {"protocol-2", "speaks protocol version 2"},
+                                   {"no-hello", "refusing to start"}}) {
+    ProcessEngineSpec s = spec({"python3", kMisbehaving, mode});
+    s.name = "m";
+    EXPECT_TRUE(has(process_engine_entry(s).info.unavailable, says)) << mode << ": " << process_engine_entry(s).info.unavailable;
+  }
+}
+
+TEST(ProcessEngine, SettingsErrorsAreTheUsersErrors) {
+  const EngineEntry e = misbehaving("none");
+  RunOptions o = steps(5);
+  o.overrides = {{"levle", 1}};
+  try {
+    run_engine(box(), e, o);
+    FAIL() << "no InputError";
+  } catch (const InputError& err) {
+    EXPECT_TRUE(has(err.what(), "settings.misbehaving.levle: unknown setting, did you mean 'level'?")) << err.what();
+  }
+  o.overrides = {{"level", 5}};  // refused by the engine itself
+  EXPECT_THROW(run_engine(box(), e, o), InputError);
+}
+
+TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
+  const EngineEntry crash = misbehaving("crash"), hang = misbehaving("hang", 60);
+  const std::vector<const EngineEntry*> engines{&find_engine("home"), &crash, &hang, &find_engine("home-seed")};
+  // The hang outlives the run's own time limit: its row times out, as any engine's.
+  const auto results = cli::run_all(box(), engines, "", steps(20), true, {true, 1.0});
+  ASSERT_EQ(results.size(), 4u);
+  EXPECT_EQ(results[0].status, "ok");
+  EXPECT_EQ(results[1].status, "failed");
+  EXPECT_TRUE(has(results[1].error, "the misbehaving engine fell over")) << results[1].error;
+  EXPECT_EQ(results[2].status, "timed out");
+  EXPECT_EQ(results[3].status, "ok");
+}
+
+// The project's engines.toml: the Node engines appear in `ballbench list` with their pinned
+// versions, or, where Node or `npm ci` is missing, as unavailable with the reason.
+TEST(EnginesFile, TheProjectsNodeEnginesAreListedWithTheirVersions) {
+  const auto list = testing::run_cli("list");
+  EXPECT_EQ(list.status, 0) << list.err;
+  for (const auto& [name, version] : {std::pair{"rapier", "0.21.0"}, {"matter", "0.20.0"}, {"planck", "1.5.0"}}) {
+    const std::string line = row(list.out.substr(list.out.find("engines:")), std::string("  ") + name);
+    EXPECT_TRUE(has(line, version) || has(line, "unavailable: ")) << list.out;
+  }
+}
+
+std::string write_file(const std::string& name, const std::string& text) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(EnginesFile, ReadsEnginesAndRefusesMistakesWithTheirLine) {
+  const std::string good = write_file("bb_engines_good.toml", "[[engine]]\nname = \"ex\"\ncommand = [\"python3\", \"x.py\"]\ntimeout_s = 5\n");
+  const auto specs = read_engines_file(good);
+  ASSERT_EQ(specs.size(), 1u);
+  EXPECT_EQ(specs[0].name, "ex");
+  EXPECT_EQ(specs[0].command, (std::vector<std::string>{"python3", "x.py"}));
+  EXPECT_EQ(specs[0].cwd, std::filesystem::temp_directory_path().string());
+  EXPECT_EQ(specs[0].timeout_s, 5);
+  for (const auto& [text, says] :
+       {std::pair{"[[engine]]\nname = \"ex\"\ncommand = [\"a\"]\ncomand = 1\n", ":4: engine.comand: unknown key"},
+        {"[[engine]]\nname = \"ex\"\n", "engine.command: missing"},
+        {"[[engine]]\nname = \"ex\"\ncommand = [\"a\"]\n[[engine]]\nname = \"ex\"\ncommand = [\"b\"]\n", "'ex' is named twice"},
+        {"[[engine]]\nname = \"a b\"\ncommand = [\"a\"]\n", ":2: engine.name: expected a name"},
+        {"[[engine]]\nname = \"ex\"\ncommand = []\n", ":3: engine.command: expected a list of strings"},
+        {"[[engine]\n", ":1: "}}) {
+    const std::string bad = write_file("bb_engines_bad.toml", text);
+    try {
+      read_engines_file(bad);
+      ADD_FAILURE() << "no InputError for: " << text;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(has(e.what(), says)) << e.what();
+    }
+  }
+  EXPECT_THROW(read_engines_file("/no/such/engines.toml"), InputError);
+}
+
+// Through the binary: --engines FILE joins `list` and `run`, and a broken engine's row says why.
+TEST(EnginesFile, AUsersFileJoinsListAndRun) {
+  const std::string file = write_file("bb_engines_cli.toml",
+                                      "[[engine]]\nname = \"example\"\ncommand = [\"python3\", \"" + kExample + "\"]\n"
+                                      "[[engine]]\nname = \"crashing\"\ncommand = [\"python3\", \"" + kMisbehaving + "\", \"crash\"]\n");
+  ::setenv("BALLBENCH_ENGINES", "", 1);  // without the project's engines.toml: only this file's
+  auto list = testing::run_cli("--engines " + file + " list");
+  EXPECT_EQ(list.status, 0) << list.err;
+  EXPECT_TRUE(has(list.out, "example      1.0")) << list.out;
+  auto run = testing::run_cli("run --engines " + file + " --scene seed-box --engine home,example,crashing --steps 20 --quiet --no-reference");
+  EXPECT_EQ(run.status, 1) << run.err;  // a failed row
+  EXPECT_TRUE(has(run.out, "crashing: building the world failed") || has(run.out, "crashing: step 3 threw")) << run.out;
+  EXPECT_TRUE(has(run.out, "the misbehaving engine fell over")) << run.out;
+  EXPECT_TRUE(has(row(run.out, "example"), " ok ")) << run.out;
+  EXPECT_TRUE(has(row(run.out, "home"), " ok ")) << run.out;
+  auto bad = testing::run_cli("--engines /no/such/file.toml list");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_TRUE(has(bad.err, "ballbench: error: /no/such/file.toml: engines file not found")) << bad.err;
+  ::unsetenv("BALLBENCH_ENGINES");
+}
+
+}  // namespace
+}  // namespace ballbench
