@@ -17,8 +17,8 @@ namespace {
 constexpr double kDt = 0.01, kContactAt = 0.045;
 constexpr long kSteps = 20;
 
-// A ball at `speed` meeting the wall x = 5.
-Scene wall_scene(double e, double speed) {
+// The scene with restitution e and the given balls ([[ball]] tables).
+Scene calibration_scene(double e, const std::string& balls, const std::string& source) {
   return parse_scene(fmt::format(R"(
 dt = {}
 duration = {}
@@ -26,39 +26,24 @@ restitution = {}
 [container]
 min = [-5.0, -5.0]
 max = [5.0, 5.0]
-[[ball]]
-pos = [{}, 0.0]
-vel = [{}, 0.0]
-radius = 0.1
-mass = 1.0
-)",
-                                 kDt, kDt * kSteps, e, 4.9 - speed * kContactAt, speed),
-                     "calibration: ball-wall");
+{})",
+                                 kDt, kDt * kSteps, e, balls),
+                     source);
+}
+
+std::string ball(double x, double vx) {
+  return fmt::format("[[ball]]\npos = [{}, 0.0]\nvel = [{}, 0.0]\nradius = 0.1\nmass = 1.0\n", x, vx);
+}
+
+// A ball at `speed` meeting the wall x = 5.
+Scene wall_scene(double e, double speed) {
+  return calibration_scene(e, ball(4.9 - speed * kContactAt, speed), "calibration: ball-wall");
 }
 
 // Two equal balls approaching at `speed`, head-on.
 Scene pair_scene(double e, double speed) {
   const double x = 0.1 + 0.5 * speed * kContactAt;
-  return parse_scene(fmt::format(R"(
-dt = {}
-duration = {}
-restitution = {}
-[container]
-min = [-5.0, -5.0]
-max = [5.0, 5.0]
-[[ball]]
-pos = [{}, 0.0]
-vel = [{}, 0.0]
-radius = 0.1
-mass = 1.0
-[[ball]]
-pos = [{}, 0.0]
-vel = [{}, 0.0]
-radius = 0.1
-mass = 1.0
-)",
-                                 kDt, kDt * kSteps, e, -x, 0.5 * speed, x, -0.5 * speed),
-                     "calibration: ball-ball");
+  return calibration_scene(e, ball(-x, 0.5 * speed) + ball(x, -0.5 * speed), "calibration: ball-ball");
 }
 
 }  // namespace
