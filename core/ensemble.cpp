@@ -64,6 +64,9 @@ std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, 
     if (!by_label.contains(label)) labels.push_back(label);
     if (r.status == "ok") by_label[label].push_back(&r);
   }
+  std::map<int64_t, const Result*> ours_at;  // our run on each placement
+  if (!ours.empty())
+    for (const Result* o : by_label[ours]) ours_at[o->seed_offset] = o;
   const auto& metrics = ensemble_metrics();
   std::vector<EnsembleRow> rows;
   for (const std::string& label : labels) {
@@ -80,11 +83,10 @@ std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, 
       std::vector<double> differences;
       if (!ours.empty() && label != ours)
         for (const Result* r : runs)
-          for (const Result* o : by_label[ours])
-            if (o->seed_offset == r->seed_offset) {
-              const auto a = m.read(*r), b = m.read(*o);
-              if (a && b) differences.push_back(*a - *b);
-            }
+          if (const auto o = ours_at.find(r->seed_offset); o != ours_at.end()) {
+            const auto a = m.read(*r), b = m.read(*o->second);
+            if (a && b) differences.push_back(*a - *b);
+          }
       std::string verdict;
       if (differences.size() >= 2) {
         const Interval d = bootstrap_mean(differences);

@@ -168,6 +168,11 @@ SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std
   return out;
 }
 
+std::string sweep_csv_path(const std::string& json_path) {
+  if (json_path.size() > 5 && json_path.ends_with(".json")) return json_path.substr(0, json_path.size() - 5) + ".csv";
+  return json_path + ".csv";
+}
+
 void write_sweep_files(const SweepResult& s, const std::string& json_path, const std::string& csv_path) {
   if (!json_path.empty()) write_file_atomically(json_path, to_json(s).dump(2) + "\n", "the sweep results");
   if (!csv_path.empty()) write_file_atomically(csv_path, sweep_csv(s), "the sweep CSV");

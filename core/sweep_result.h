@@ -62,6 +62,9 @@ nlohmann::json to_json(const SweepResult& s);
 SweepResult sweep_from_json(const nlohmann::json& j);
 std::string sweep_csv(const SweepResult& s);
 
+// The sweep's CSV beside its JSON: "s.json" -> "s.csv", any other name -> NAME.csv.
+std::string sweep_csv_path(const std::string& json_path);
+
 void write_sweep_files(const SweepResult& s, const std::string& json_path, const std::string& csv_path);
 SweepResult read_sweep_file(const std::string& path);
 

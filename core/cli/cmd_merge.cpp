@@ -27,9 +27,7 @@ void merge_sweeps(const MergeArgs& a) {
   std::vector<SweepResult> shards;
   for (const auto& path : a.shards) shards.push_back(read_sweep_file(path));
   const SweepResult merged = merge_sweep_shards(shards, a.shards);
-  const std::string csv = !a.csv.empty()              ? a.csv
-                          : a.out.ends_with(".json") ? a.out.substr(0, a.out.size() - 5) + ".csv"
-                                                      : a.out + ".csv";
+  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
   write_sweep_files(merged, a.out, csv);
   fmt::print("merged {} shards ({} points) into {} and {}\n", shards.size(), merged.points.size(), a.out, csv);
 }

@@ -39,8 +39,7 @@ void sweep(SweepArgs& a) {
     a.json = a.options.shard.all() ? fmt::format("sweep-{}.json", scene.name)
                                    : fmt::format("sweep-{}.shard{}of{}.json", scene.name, a.options.shard.index,
                                                  a.options.shard.count);
-  if (a.csv.empty()) a.csv = a.json.size() > 5 && a.json.ends_with(".json") ? a.json.substr(0, a.json.size() - 5) + ".csv"
-                                                                            : a.json + ".csv";
+  if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
   // Checked before the sweep (it takes minutes), as `run` checks its outputs.
   if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
   check_writable(a.json, "the sweep's results", true);

@@ -11,14 +11,11 @@ namespace ballbench::cli {
 Shard parse_shard(const std::string& text, const std::string& option) {
   Shard s;
   const char* const end = text.data() + text.size();
-  const auto [slash, e1] = std::from_chars(text.data(), end, s.index);
-  const bool ok = e1 == std::errc() && slash != end && *slash == '/' &&
-                  [&] {
-                    const auto [tail, e2] = std::from_chars(slash + 1, end, s.count);
-                    return e2 == std::errc() && tail == end;
-                  }() &&
-                  s.count >= 1 && s.index >= 1 && s.index <= s.count;
-  if (!ok) throw InputError(fmt::format("{} {}: expected I/N with whole numbers 1 <= I <= N, e.g. 2/3", option, text));
+  const auto first = std::from_chars(text.data(), end, s.index);
+  const bool slash = first.ec == std::errc() && first.ptr != end && *first.ptr == '/';
+  const auto second = slash ? std::from_chars(first.ptr + 1, end, s.count) : first;
+  if (!slash || second.ec != std::errc() || second.ptr != end || s.count < 1 || s.index < 1 || s.index > s.count)
+    throw InputError(fmt::format("{} {}: expected I/N with whole numbers 1 <= I <= N, e.g. 2/3", option, text));
   return s;
 }
 
