@@ -138,9 +138,11 @@ TEST_F(ReportResume, FullRunsEveryPartOfTheCompleteEvidence) {
     text.replace(text.find("seed-box"), 8, name);
     std::ofstream(root_ / "scenarios" / (std::string(name) + ".toml")) << text;
   }
-  ASSERT_EQ(report("--full"), 0) << err_;
+  // Two placements of each scene instead of the full suite's ten: the parts are what is checked.
+  ASSERT_EQ(report("--full --seeds 2"), 0) << err_;
   const std::string md = slurp(out() / "REPORT.md");
-  for (const char* want : {"## Scene `pile`", "## Work against precision: `seed-bowl`", "## Stability frontier: `seed-bowl`"})
+  for (const char* want : {"## Scene `pile`", "## Work against precision: `seed-bowl`", "## Stability frontier: `seed-bowl`",
+                           "Over 2 random placements"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_NE(slurp(out() / "results" / "run.json").find("\"suite\": \"full\""), std::string::npos);
   // A quick report afresh leaves none of the full one's parts behind.
@@ -158,6 +160,9 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
   ASSERT_EQ(report(), 0) << err_;
   EXPECT_TRUE(ran("seed-box")) << err_;
   EXPECT_TRUE(reused("seed-bowl")) << err_;
+  // Nor do results of another number of placements.
+  ASSERT_EQ(report("--seeds 2"), 0) << err_;
+  EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
 }
 
 // A report run as two shards (on two machines, say), merged: every part's result file and a
@@ -166,7 +171,7 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
 TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   const fs::path one = root_ / "shard1", two = root_ / "shard2", merged = root_ / "merged";
   for (const auto& [dir, which] : {std::pair{one, "1/2"}, std::pair{two, "2/2"}}) {
-    ASSERT_EQ(command("report --no-bench --out " + dir.string() + " --shard " + which), 0) << err_;
+    ASSERT_EQ(command("report --no-bench --seeds 2 --out " + dir.string() + " --shard " + which), 0) << err_;
     EXPECT_FALSE(fs::exists(dir / "REPORT.md")) << which;
   }
   EXPECT_EQ(command("merge --out " + merged.string() + " " + one.string()), 2);

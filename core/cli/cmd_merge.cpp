@@ -49,6 +49,7 @@ ReportShard read_report_shard(const std::string& folder) {
   if (!s.context.contains("shard") || !s.context.contains("parts"))
     throw InputError(fmt::format("merge: {}: not a report shard (its run.json has no shard; it is a whole report)", path));
   s.plan = {{"suite", s.context.value("suite", "")},
+            {"seeds", s.context.value("seeds", 0)},
             {"parts", s.context.at("parts")},
             {"engines", s.context.value("engines", nlohmann::json::object())}};
   s.index = s.context.at("shard").at("index").get<int>();
@@ -69,8 +70,8 @@ void merge_reports(const MergeArgs& a) {
   for (size_t k = 0; k < shards.size(); ++k) {
     const ReportShard& s = shards[k];
     if (s.plan != first.plan || s.count != first.count)
-      throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, parts, engine versions or "
-                                   "shard count differ)",
+      throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, placements, parts, engine "
+                                   "versions or shard count differ)",
                                    a.shards[k], a.shards.front()));
     if (s.index < 1 || s.index > s.count)
       throw InputError(fmt::format("merge: {}: shard {}/{} is not a shard", a.shards[k], s.index, s.count));

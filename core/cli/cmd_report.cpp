@@ -29,6 +29,7 @@
 #include "shard.h"
 #include "stability_frontier.h"
 #include "sweep.h"
+#include "validators.h"
 
 namespace ballbench::cli {
 namespace {
@@ -97,6 +98,7 @@ struct ReportArgs {
   bool no_bench = false;
   std::string bench_binary;  // default: beside this executable's build tree
   std::string shard;         // "I/N": run only that share of the parts, render nothing
+  int seeds = 0;             // placements of each seed scene; 0: the suite's
 };
 
 // The report's parts in run order, each a results file (or, for "bench", the step and harness
@@ -223,7 +225,8 @@ void report(const ReportArgs& a) {
   // --out that cannot hold them is one line, not an error from deep inside after the runs.
   for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
-  const Suite suite = a.full ? full_suite() : quick_suite();
+  Suite suite = a.full ? full_suite() : quick_suite();
+  if (a.seeds > 0) suite.seeds = a.seeds;
   const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
   const std::vector<std::string> parts = report_parts(suite, !a.no_bench);
   const auto mine = [&](const std::string& part) {
@@ -336,6 +339,7 @@ void report(const ReportArgs& a) {
     }
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";
+    context["seeds"] = suite.seeds;
     context["scenes"] = suite.scenes;  // the report's order
     context["parts"] = parts;
     context["engines"] = nlohmann::json::object();  // name -> version: shards of one report agree
@@ -378,6 +382,11 @@ void add_report(CLI::App& app) {
                   "harness benchmark is taken from the same folder")
       ->excludes(render_only)
       ->excludes(no_bench);
+  cmd->add_option("--seeds", a->seeds,
+                  "random placements of each scene with random placement, for its ensemble table (default: 3 quick, "
+                  "10 full)")
+      ->check(kPositiveCount)
+      ->excludes(render_only);
   cmd->add_option("--shard", a->shard,
                   "run only shard I of N of the report's parts (I/N, e.g. 2/3; the benchmarks are one part), on one "
                   "machine each; `ballbench merge --out DIR FOLDER...` joins the shards' --out folders and renders "
