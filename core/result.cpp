@@ -10,6 +10,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "json_layout.h"
 #include "json_value.h"
 
 namespace ballbench {
@@ -214,7 +215,7 @@ Result result_from_json(const nlohmann::json& j) {
 void write_results_file(const std::string& path, const std::vector<Result>& results) {
   nlohmann::json arr = nlohmann::json::array();
   for (const auto& r : results) arr.push_back(to_json(r));
-  write_file_atomically(path, arr.dump(2) + "\n", "the results file");
+  write_file_atomically(path, json_layout(arr) + "\n", "the results file");
 }
 
 std::vector<Result> read_results_file(const std::string& path) {

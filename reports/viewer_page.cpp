@@ -65,9 +65,19 @@ nlohmann::json run_json(const Result& r) {
 
 }  // namespace
 
-int viewer_frames(int n, int runs, long steps) {
-  const double per_frame = kViewerBytesPerBallFrame * std::max(1, n) * std::max(1, runs);
-  return static_cast<int>(std::clamp(std::floor(kViewerFrameBudget / per_frame), 1.0, static_cast<double>(std::max(1L, steps))));
+int viewer_frames(const Scene& scene, int runs) {
+  // Digits of the widest coordinate: the container's, and a ball that left it by up to a diameter
+  // before its run stopped; 7 digits (+-999 m) in open space. Then its sign and comma.
+  double digits = 7;
+  if (scene.container.kind == ContainerKind::Box && scene.n() > 0) {
+    const double reach = std::max(scene.container.min.cwiseAbs().maxCoeff(), scene.container.max.cwiseAbs().maxCoeff()) +
+                         2 * scene.radius.maxCoeff();
+    digits = std::floor(std::log10(std::max(1.0, reach / kUnit))) + 1;
+  }
+  constexpr double kFrameBytes = 24;  // a frame's brackets and its time
+  const double per_frame = std::max(1, runs) * (scene.n() * 2 * (digits + 2) + kFrameBytes);
+  return static_cast<int>(
+      std::clamp(std::floor(kViewerFrameBudget / per_frame), 1.0, static_cast<double>(std::max(1L, scene.steps()))));
 }
 
 std::string viewer_page(const std::vector<const Result*>& runs) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "result.h"
+#include "scene.h"
 
 namespace ballbench {
 
@@ -16,13 +17,11 @@ namespace ballbench {
 // most kEventsKept per run), energy series and the page itself the rest.
 inline constexpr double kViewerPageBytes = 4e6;
 inline constexpr double kViewerFrameBudget = 3.5e6;
-// One ball in one frame on the page: two coordinates in units of 0.1 mm, each at most 7 digits with
-// its sign and comma (boxes up to +-999 m).
-inline constexpr double kViewerBytesPerBallFrame = 18;
 
-// RunOptions::frames for `runs` runs of `n` balls over `steps` steps on one page: as many as the
-// frame budget holds, at most one per step.
-int viewer_frames(int n, int runs, long steps);
+// RunOptions::frames for `runs` runs of `scene` on one page: as many as the frame budget holds (a
+// frame costs every ball's two coordinates, whole numbers of 0.1 mm as wide as the container
+// makes them), at most one per step.
+int viewer_frames(const Scene& scene, int runs);
 
 // The page for `runs`: every run of one scene, some with frames. Throws InputError when they are
 // of different scenes or none has frames.

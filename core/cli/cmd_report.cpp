@@ -271,7 +271,7 @@ void report(const ReportArgs& a) {
       options.reference = reference_engine();  // error against `exact` in every row
       // The thesis's scenes, animated and in the viewer: as many frames as a page of every run holds.
       if (name.starts_with("seed-"))
-        options.frames = viewer_frames(scene.n(), static_cast<int>(run_count(engines, "all")), scene.steps());
+        options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
       std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of
       // offset 0).
