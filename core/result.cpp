@@ -10,6 +10,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "json_layout.h"
 #include "json_value.h"
 
 namespace ballbench {
@@ -25,6 +26,18 @@ nlohmann::json nulls_to_nan(nlohmann::json j) {
   else if (j.is_array())
     for (auto& x : j) x = x.is_null() ? nlohmann::json(std::nan("")) : nulls_to_nan(std::move(x));
   return j;
+}
+
+nlohmann::json event_json(const Event& e) {
+  nlohmann::json j = {{"kind", event_kind_name(e.kind)}, {"step", e.step}, {"t", e.t}, {"i", e.i}};
+  if (e.j >= 0) j["j"] = e.j;
+  j["x"] = e.x, j["y"] = e.y;
+  return j;
+}
+
+Event event_from_json(const nlohmann::json& j) {
+  return {event_kind_from_name(j.at("kind").get<std::string>()), j.at("step").get<long>(), num(j.at("t")),
+          j.at("i").get<int>(), j.value("j", -1), num(j.at("x")), num(j.at("y"))};
 }
 
 nlohmann::json vec(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
@@ -76,6 +89,8 @@ nlohmann::json to_json(const Result& r) {
   j["tunnelling"] = {{"wall", m.tunnelling_wall}, {"pair", m.tunnelling_pair}};
   j["sticking"] = {{"wall", m.sticking_wall}, {"pair", m.sticking_pair}};
   j["penetration"] = {{"max", m.penetration_max}, {"mean", m.penetration_mean}};
+  j["events"] = nlohmann::json::array();
+  for (const Event& e : r.events) j["events"].push_back(event_json(e));
   j["metrics_config"] = {{"contact_tolerance", r.metrics_config.contact_tolerance},
                          {"stuck_samples", r.metrics_config.stuck_samples},
                          {"divergence_energy_factor", r.metrics_config.divergence_energy_factor},
@@ -102,7 +117,7 @@ nlohmann::json to_json(const Result& r) {
   j["series"] = {{"t", r.series.t},         {"energy", r.series.energy}, {"com_x", r.series.com_x},
                  {"com_y", r.series.com_y}, {"pos_err", r.series.pos_err}, {"tracks", r.series.tracks},
                  {"final_pos", r.series.final_pos}, {"radius_mean", r.series.radius_mean},
-                 {"frame_t", r.series.frame_t}, {"frames", r.series.frames},
+                 {"frame_t", r.series.frame_t}, {"frames", r.series.frames}, {"radius", r.series.radius},
                  {"box", r.series.box ? nlohmann::json(*r.series.box) : nlohmann::json(nullptr)}};
   j["checksum"] = {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}};
   return j;
@@ -149,6 +164,9 @@ Result result_from_json(const nlohmann::json& j) {
   m.sticking_pair = j.at("sticking").at("pair");
   m.penetration_max = num(j.at("penetration").at("max"));
   m.penetration_mean = num(j.at("penetration").at("mean"));
+  // Results files written before events were recorded have none: their counts stand alone.
+  if (j.contains("events"))
+    for (const auto& e : j.at("events")) r.events.push_back(event_from_json(e));
   if (j.contains("metrics_config")) {
     const auto& c = j["metrics_config"];
     r.metrics_config.contact_tolerance = c.at("contact_tolerance");
@@ -183,6 +201,7 @@ Result result_from_json(const nlohmann::json& j) {
     s.at("pos_err").get_to(r.series.pos_err), s.at("tracks").get_to(r.series.tracks);
     s.at("final_pos").get_to(r.series.final_pos);
     if (s.contains("frames")) s.at("frame_t").get_to(r.series.frame_t), s.at("frames").get_to(r.series.frames);
+    if (s.contains("radius")) s.at("radius").get_to(r.series.radius);
     r.series.radius_mean = s.value("radius_mean", 0.0);
     if (s.contains("box") && !s["box"].is_null()) r.series.box = s["box"].get<std::array<double, 4>>();
   }
@@ -196,7 +215,7 @@ Result result_from_json(const nlohmann::json& j) {
 void write_results_file(const std::string& path, const std::vector<Result>& results) {
   nlohmann::json arr = nlohmann::json::array();
   for (const auto& r : results) arr.push_back(to_json(r));
-  write_file_atomically(path, arr.dump(2) + "\n", "the results file");
+  write_file_atomically(path, json_layout(arr) + "\n", "the results file");
 }
 
 std::vector<Result> read_results_file(const std::string& path) {

@@ -10,6 +10,7 @@
 
 #include <array>
 
+#include "metrics/events.h"
 #include "metrics/metrics.h"
 #include "metrics/reference_error.h"
 
@@ -42,6 +43,9 @@ struct Result {
   std::optional<double> engine_process_s;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;
+  // Where and when: the run's first kEventsKept tunnelling and sticking events (metrics/events.h),
+  // in the order counted; metrics' counts are the totals.
+  std::vector<Event> events;
   ReferenceErrorSummary reference;  // error against `exact`, when it ran alongside
   // Kolmogorov-Smirnov statistic of the final speeds against the Rayleigh law, and its 1% critical
   // value; only for scenes where it means something (metrics/speed_distribution.h).
@@ -61,6 +65,7 @@ struct Result {
     // unless asked): frame_t[k] is the time of frames[k]; positions rounded to 0.1 mm.
     std::vector<double> frame_t;
     std::vector<std::vector<std::array<double, 2>>> frames;
+    std::vector<double> radius;  // every ball's radius (m), with frames
     std::optional<std::array<double, 4>> box;  // container x0, y0, x1, y1 (m), for pictures
     double radius_mean = 0;                    // (m), for pictures
   } series;

@@ -112,8 +112,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   constexpr int kTracks = 4;
   r.series.tracks.resize(std::min(kTracks, scene.n()));
   constexpr int kMaxFrameBalls = 1000;
-  const long frame_every =
-      options.frames > 0 && scene.n() <= kMaxFrameBalls ? every * std::max(1L, r.steps / every / options.frames) : 0;
+  // Every ceil(samples / frames)-th sample: at most frames + 1 of them, step 0 included.
+  const long frame_every = options.frames > 0 && scene.n() <= kMaxFrameBalls
+                               ? every * std::max(1L, (r.steps / every + options.frames - 1) / options.frames)
+                               : 0;
+  if (frame_every) r.series.radius.assign(scene.radius.data(), scene.radius.data() + scene.n());
   auto record = [&](long k) {
     if (reference) error->observe(state, ref_state);
     if (frame_every && k % frame_every == 0) {
@@ -205,6 +208,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     final_sum = state_checksum(state), trajectory_sum = chain_checksum(trajectory_sum, final_sum);
   }
   r.metrics = metrics.summary();
+  r.events = metrics.events();
   if (speed_distribution_applies(scene)) {
     r.speed_ks = rayleigh_ks_statistic(state);
     r.speed_ks_critical = rayleigh_ks_critical(scene.n());

@@ -25,8 +25,9 @@ struct RunOptions {
   const EngineEntry* reference = nullptr;
   // Points kept in Result::series (energy, centre of mass, a few tracks) for the report's figures.
   int series_points = 300;
-  // Whole-scene frames kept in Result::series for animations (0: none); only for scenes of at most
-  // 1000 balls, whose frames stay small.
+  // Whole-scene frames kept in Result::series for animations and the trajectory viewer (0: none):
+  // about this many, every k-th sampled step; only for scenes of at most 1000 balls, whose frames
+  // stay small.
   int frames = 0;
   // Called now and then with (steps done, steps total), for progress on long runs.
   std::function<void(long, long)> progress;

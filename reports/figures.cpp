@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 
+#include "data_file.h"
 #include "ordered_set.h"
+#include "viewer_page.h"
 
 namespace ballbench {
 namespace {
@@ -106,12 +108,16 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
 
 
 // The scene in motion, one panel per run (the thesis's port, ours, an external engine), as an
-// animated GIF (gnuplot's gif terminal): every ball at each frame of Result::series::frames.
+// animated GIF (gnuplot's gif terminal): every ball at each of about kGifFrames frames taken evenly
+// from Result::series::frames (which hold more, for the viewer).
 Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
   const std::string base = slug(scene) + "-animation";
+  constexpr size_t kGifFrames = 80;  // 8 s at 10 frames per second, and the GIF under 2 MB
   // As many frames as the longest run; a run that stopped early (diverged, failed) holds its last.
-  size_t frames = 0;
-  for (const Result* r : runs) frames = std::max(frames, r->series.frames.size());
+  size_t recorded = 0;
+  for (const Result* r : runs) recorded = std::max(recorded, r->series.frames.size());
+  const size_t stride = std::max<size_t>(1, (recorded + kGifFrames - 1) / kGifFrames);
+  const size_t frames = (recorded + stride - 1) / stride;  // GIF frame k shows recorded frame k * stride
   std::ofstream gp(dir / (base + ".gp"));
   gp << "set terminal gif animate delay 8 optimize size " << 320 * runs.size() << ",340 font 'sans,9'\n"
      << "set output '" << base << ".gif'\nset size ratio -1\nunset key\nunset xtics\nunset ytics\n";
@@ -122,17 +128,18 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
   for (const Result* r : runs) {
     std::ofstream f(dir / fmt::format("{}-{}.dat", base, slug(run_label(*r))));
     for (size_t k = 0; k < frames; ++k) {
-      for (const auto& p : r->series.frames[std::min(k, r->series.frames.size() - 1)]) f << p[0] << ' ' << p[1] << ' ' << r->series.radius_mean << '\n';
+      for (const auto& p : r->series.frames[std::min(k * stride, r->series.frames.size() - 1)])
+        f << p[0] << ' ' << p[1] << ' ' << r->series.radius_mean << '\n';
       f << "\n\n";  // a gnuplot data block per frame
     }
   }
   for (size_t k = 0; k < frames; ++k) {
     gp << "set multiplot layout 1," << runs.size() << "\n";
     for (const Result* r : runs) {
-      const size_t held = std::min(k, r->series.frames.size() - 1);
+      const size_t held = std::min(k * stride, r->series.frames.size() - 1);
       gp << fmt::format("set title '{} t = {:.1f} s{}'\nplot '{}-{}.dat' index {} using 1:2:3 with circles fs solid 0.6 "
                         "lc rgb '#3060c0'\n",
-                        run_label(*r), r->series.frame_t[held], held < k ? " (" + r->status + ")" : "", base,
+                        run_label(*r), r->series.frame_t[held], held < k * stride ? " (" + r->status + ")" : "", base,
                         slug(run_label(*r)), k);
     }
     gp << "unset multiplot\n";
@@ -143,6 +150,21 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
           fmt::format("The scene in motion ({} frames, animated GIF): the thesis's algorithm, ours and an external "
                       "engine side by side; a run that stopped early holds its last frame, its status in its title.",
                       frames)};
+}
+
+// The trajectory viewer (viewer_page.h): every run of the scene that has frames, on one page.
+Figure viewer_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
+  const std::string file = slug(scene) + "-viewer.html";
+  const std::string page = viewer_page(runs);
+  write_file_atomically((dir / file).string(), page, "the viewer page");
+  size_t frames = 0;
+  for (const Result* r : runs) frames = std::max(frames, r->series.frames.size());
+  return {"viewer", scene, "figures/" + file,
+          fmt::format("every engine and profile side by side, {} frames ({:.1f} MB, opens offline in any browser): "
+                      "play, pause, scrub and speed, the tracks of four balls, every tunnelling and sticking event "
+                      "marked where and when it happened (click one in the list to jump there), energy over time "
+                      "under the playback",
+                      frames, static_cast<double>(page.size()) / 1e6)};
 }
 
 // gnuplot line style k: 8 colours, then the same colours dashed, so no two lines look alike.
@@ -317,6 +339,8 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
           break;
         }
       if (animated.size() >= 2) figures.push_back(animation_figure(scene, animated, "."));
+      if (std::any_of(by_scene[scene].begin(), by_scene[scene].end(), [](const Result* r) { return !r->series.frames.empty(); }))
+        figures.push_back(viewer_figure(scene, by_scene[scene], "."));
     }
     for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));
     for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f, "."));

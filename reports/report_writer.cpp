@@ -131,6 +131,12 @@ void put_figures(MarkdownBuffer& put, const std::vector<Figure>& figures, const 
     if (f.kind == kind && f.scene == scene) put("![{}]({})\n\n*{}*\n\n", f.caption, f.file, f.caption);
 }
 
+// The scene's trajectory viewer page, as a link (a page, not a picture).
+void put_viewer(MarkdownBuffer& put, const std::vector<Figure>& figures, const std::string& scene) {
+  for (const Figure& f : figures)
+    if (f.kind == "viewer" && f.scene == scene) put("**Trajectory viewer**: [{}]({}): {}.\n\n", f.file, f.file, f.caption);
+}
+
 void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Figure>& figures) {
   put("## Work against precision: `{}`\n\n", sw.scene);
   put("`ballbench sweep` on {} balls: every engine and profile at several step sizes, and with each of its own "
@@ -517,6 +523,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
         "accuracy).\n\n");
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
+    put_viewer(put, figures, scene);
     put_ensemble(put, in, scene);
     put_figures(put, figures, "energy", scene);
     put_figures(put, figures, "picture", scene);

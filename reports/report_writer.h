@@ -35,10 +35,11 @@ EngineRole role_of(const ReportInputs& in, const std::string& engine);
 
 // A figure drawn for the report (figures.h).
 struct Figure {
-  std::string kind;     // "energy", "picture", "animation" (per scene), "work-precision", "frontier" (per scene),
-                        // "scaling"
+  std::string kind;     // "energy", "picture", "animation", "viewer" (per scene), "work-precision", "frontier" (per
+                        // scene), "scaling"
   std::string scene;    // "" for scaling
-  std::string file;     // relative to the report's folder: figures/NAME.png (an animation: NAME.gif)
+  std::string file;     // relative to the report's folder: figures/NAME.png (an animation: NAME.gif; the viewer:
+                        // SCENE-viewer.html)
   std::string caption;
 };
 

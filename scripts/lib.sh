@@ -8,6 +8,7 @@ BALLBENCH_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
   libbox2d-dev libbullet-dev libchipmunk-dev libode-dev libxxhash-dev
   gnuplot-nox python3 python3-pandas nodejs
+  chromium
 )
 
 # CI only (.ci/run): clang and its runtime libraries for the libFuzzer target (tests/fuzz/). The

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -136,21 +137,27 @@ TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
 // skipped: their chords stay farther apart than (1 - tolerance) (r_i + r_j) for any tolerance
 // above -1, so they cannot count (the tests use -0.05 .. 0.3). This keeps the O(n^2) reference
 // quick under the sanitizers.
-int brute_force_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance) {
+// The pairs (i < j, ordered by i then j) that pass through each other.
+std::vector<std::array<int, 2>> brute_force_pairs(const State& prev, const State& cur, const Eigen::VectorXd& radius,
+                                                  double tolerance) {
   EXPECT_GT(tolerance, -1.0);
   const auto apart = [&](int i, int j, int axis, double gap) {
     const double lo_i = std::min(prev.pos(i, axis), cur.pos(i, axis)), hi_i = std::max(prev.pos(i, axis), cur.pos(i, axis));
     const double lo_j = std::min(prev.pos(j, axis), cur.pos(j, axis)), hi_j = std::max(prev.pos(j, axis), cur.pos(j, axis));
     return lo_i - hi_j > gap || lo_j - hi_i > gap;
   };
-  int count = 0;
+  std::vector<std::array<int, 2>> pairs;
   for (int i = 0; i < cur.n(); ++i)
     for (int j = i + 1; j < cur.n(); ++j) {
       const double rs = radius(i) + radius(j);
       if (apart(i, j, 0, 2 * rs) || apart(i, j, 1, 2 * rs)) continue;
-      count += passes_through(prev, cur, i, j, rs, tolerance);
+      if (passes_through(prev, cur, i, j, rs, tolerance)) pairs.push_back({i, j});
     }
-  return count;
+  return pairs;
+}
+
+int brute_force_passthroughs(const State& prev, const State& cur, const Eigen::VectorXd& radius, double tolerance) {
+  return static_cast<int>(brute_force_pairs(prev, cur, radius, tolerance).size());
 }
 
 // Random motion that puts every branch of the search to work: unequal radii, balls kicked to high
@@ -286,8 +293,10 @@ TEST(Tunnelling, TheListedSearchCountsExactlyTheBruteForcePassThroughs) {
   long total = 0;
   for (const double tolerance : {0.02, 0.0, 0.3, -0.05}) {
     std::vector<int> want_pair, want_wall;
+    std::vector<std::vector<std::array<int, 2>>> want_pairs;  // which pairs, for the events
     for (const auto& [before, after] : steps) {
-      want_pair.push_back(brute_force_passthroughs(before, after, motion.radius(), tolerance));
+      want_pairs.push_back(brute_force_pairs(before, after, motion.radius(), tolerance));
+      want_pair.push_back(static_cast<int>(want_pairs.back().size()));
       want_wall.push_back(wall_escapes(before, after, motion.box()));
       total += want_pair.back();
     }
@@ -303,6 +312,13 @@ TEST(Tunnelling, TheListedSearchCountsExactlyTheBruteForcePassThroughs) {
                                             << ", allowance " << tuning.allowance_radii << ", rebuild share "
                                             << tuning.rebuild_share;
           ASSERT_EQ(got.wall, want_wall[k]) << "step " << k + 1;
+          // The events: the same pairs in the same order on any number of parts, and the balls
+          // that escaped.
+          ASSERT_EQ(check.pair_hits(), want_pairs[k]) << threads << " parts, step " << k + 1;
+          ASSERT_EQ(check.wall_hits().size(), static_cast<size_t>(want_wall[k])) << "step " << k + 1;
+          for (int i : check.wall_hits())
+            ASSERT_TRUE(!beyond_wall(steps[k].first.pos.row(i).transpose(), motion.box()) &&
+                        beyond_wall(steps[k].second.pos.row(i).transpose(), motion.box()));
         }
         if (tuning.rebuild_share < 1) {
           EXPECT_GT(check.rebuilds(), 2) << "the list was never rebuilt";

@@ -14,6 +14,7 @@
 #include <set>
 
 #include "result.h"
+#include "viewer_page.h"
 
 namespace ballbench {
 namespace {
@@ -102,6 +103,12 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
     EXPECT_GE(frames, 10u) << scene;
     EXPECT_LT(gif.size(), 2u << 20) << scene;
     EXPECT_NE(md.find("figures/" + std::string(scene) + "-animation.gif"), std::string::npos) << scene;
+    // And in the viewer (tests/test_viewer.cpp loads one in a browser), linked under its table.
+    const fs::path viewer = out() / "figures" / (std::string(scene) + "-viewer.html");
+    ASSERT_TRUE(fs::exists(viewer)) << scene;
+    EXPECT_LT(static_cast<double>(fs::file_size(viewer)), kViewerPageBytes) << scene;
+    EXPECT_NE(slurp(viewer).find("\"scene\":\"" + std::string(scene) + "\""), std::string::npos) << scene;
+    EXPECT_NE(md.find("**Trajectory viewer**: [figures/" + std::string(scene) + "-viewer.html]"), std::string::npos) << scene;
   }
   EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
   EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench

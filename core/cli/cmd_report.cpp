@@ -30,6 +30,7 @@
 #include "stability_frontier.h"
 #include "sweep.h"
 #include "validators.h"
+#include "viewer_page.h"
 
 namespace ballbench::cli {
 namespace {
@@ -271,9 +272,12 @@ void report(const ReportArgs& a) {
       if (reuse(path, complete_results(path, scene, engines, seeds))) continue;
       RunOptions options;
       options.reference = reference_engine();  // error against `exact` in every row
-      if (name.starts_with("seed-")) options.frames = 80;  // the thesis's scenes, animated
+      // The thesis's scenes, animated and in the viewer: as many frames as a page of every run holds.
+      if (name.starts_with("seed-"))
+        options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
       std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
-      // Further placements, for the ensemble table: without frames (the animation is of offset 0).
+      // Further placements, for the ensemble table: without frames (the animation and the viewer are of
+      // offset 0).
       options.frames = 0;
       for (int k = 1; k < seeds && !interrupt_signal(); ++k) {
         auto more = run_all(load_scene(name, k), engines, "all", options, false, isolation);

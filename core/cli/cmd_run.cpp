@@ -30,6 +30,7 @@ struct RunArgs {
   bool no_reference = false;
   int sample_every = 1;
   int seeds = 1;
+  int frames = 0;
   double trajectory_limit_gb = 10;
   Isolation isolation;
 };
@@ -118,8 +119,7 @@ void check_outputs(const Scene& scene, const RunArgs& a) {
 void check_trajectory_size(const Scene& scene, const std::vector<const EngineEntry*>& engines, const RunArgs& a) {
   if (a.trajectory.empty()) return;
   constexpr double kBytesPerRow = 110;  // measured: 500-ball pile, home-seed and home
-  size_t runs = 0;
-  for (const EngineEntry* e : engines) runs += profiles_for(*e, a.profile).size();
+  const size_t runs = run_count(engines, a.profile);
   const double steps = static_cast<double>(a.steps ? *a.steps : scene.steps());
   const double rows = (steps + 1) * scene.n() * static_cast<double>(runs), gb = rows * kBytesPerRow / 1e9;
   if (gb > a.trajectory_limit_gb)
@@ -148,6 +148,7 @@ void run(const RunArgs& a) {
   check_trajectory_size(scene, engines, a);
   if (!a.no_reference) options.reference = reference_engine();
   options.metrics.sample_every = a.sample_every;
+  options.frames = a.frames;
   if (a.seeds > 1 && !scene.random_placement)
     throw InputError(fmt::format("--seeds {}: {} has no random placement ([random] or [lattice]) to draw again",
                                  a.seeds, scene.source));
@@ -202,6 +203,10 @@ void add_run(CLI::App& app) {
   cmd->add_option("--seeds", a->seeds,
                   "run K random placements (the scene's seeds offset by 0 .. K-1) and print each metric's mean with "
                   "its 95% bootstrap interval (default 1)")
+      ->check(kPositiveCount);
+  cmd->add_option("--frames", a->frames,
+                  "keep about N evenly spaced frames of every ball's position in the JSON (scenes of at most 1000 "
+                  "balls), for `ballbench view`")
       ->check(kPositiveCount);
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   cmd->add_flag("--no-reference", a->no_reference,

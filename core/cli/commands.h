@@ -15,6 +15,7 @@ void add_regress(CLI::App& app);
 void add_stress(CLI::App& app);
 void add_sweep(CLI::App& app);
 void add_merge(CLI::App& app);
+void add_view(CLI::App& app);
 
 // Renders OUT/REPORT.md and OUT/figures from OUT/results (`report`, and `merge` of report shards).
 void render_report_folder(const std::string& out);

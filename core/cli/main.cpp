@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   ballbench::cli::add_stress(app);
   ballbench::cli::add_sweep(app);
   ballbench::cli::add_merge(app);
+  ballbench::cli::add_view(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {

@@ -160,6 +160,12 @@ std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& p
   return {mine.front()};
 }
 
+size_t run_count(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
+  size_t runs = 0;
+  for (const EngineEntry* e : engines) runs += profiles_for(*e, profile).size();
+  return runs;
+}
+
 void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
   if (profile.empty() || profile == "all") return;
   std::vector<std::string> known;

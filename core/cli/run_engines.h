@@ -18,6 +18,9 @@ namespace ballbench::cli {
 // engine's tuned profile while our solvers, which have one profile, run theirs).
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile);
 
+// The runs run_all makes of one scene: every engine x profiles_for(engine, profile).
+size_t run_count(const std::vector<const EngineEntry*>& engines, const std::string& profile);
+
 // Throws InputError if no engine in `engines` has `profile`.
 void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile);
 

@@ -70,6 +70,11 @@ void MetricsAccumulator::observe(const State& s) {
     }
   }
   sticking_.observe(deep_, deep_leaving_, deep_in_wall_, wall_leaving_);
+  for (int i : sticking_.counted_walls()) keep({EventKind::StickWall, motion_steps_, s.t, i, -1, s.pos(i, 0), s.pos(i, 1)});
+  for (const auto& [i, j] : sticking_.counted_pairs()) {
+    const Eigen::Vector2d mid = 0.5 * (s.pos.row(i) + s.pos.row(j)).transpose();
+    keep({EventKind::StickPair, motion_steps_, s.t, i, j, mid.x(), mid.y()});
+  }
   m_.sticking_pair = sticking_.pair_events();
   m_.sticking_wall = sticking_.wall_events();
   m_.penetration_mean = penetration_count_ ? penetration_sum_ / penetration_count_ : 0.0;
@@ -77,11 +82,28 @@ void MetricsAccumulator::observe(const State& s) {
 }
 
 bool MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
+  ++motion_steps_;
   const StepTunnelling t = tunnelling_.step(prev, cur);
   left_container_ = !t.contained;
   m_.tunnelling_wall += t.wall;
   m_.tunnelling_pair += t.pair;
+  for (int i : tunnelling_.wall_hits()) {
+    const Eigen::Vector2d at = wall_crossing(prev.pos.row(i).transpose(), cur.pos.row(i).transpose(), scene_.container);
+    keep({EventKind::TunnelWall, motion_steps_, cur.t, i, -1, at.x(), at.y()});
+  }
+  for (const auto& [i, j] : tunnelling_.pair_hits()) {
+    const Eigen::Vector2d d0 = (prev.pos.row(i) - prev.pos.row(j)).transpose();
+    const Eigen::Vector2d d1 = (cur.pos.row(i) - cur.pos.row(j)).transpose();
+    const double s = closest_approach_fraction(d0, d1);
+    const Eigen::Vector2d mid =
+        0.5 * ((1 - s) * (prev.pos.row(i) + prev.pos.row(j)) + s * (cur.pos.row(i) + cur.pos.row(j))).transpose();
+    keep({EventKind::TunnelPair, motion_steps_, cur.t, i, j, mid.x(), mid.y()});
+  }
   return t.finite;
+}
+
+void MetricsAccumulator::keep(const Event& e) {
+  if (events_.size() < kEventsKept) events_.push_back(e);
 }
 
 bool MetricsAccumulator::energy_blew_up() const {

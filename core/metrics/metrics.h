@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "metrics/events.h"
 #include "metrics/sticking.h"
 #include "metrics/tunnelling.h"
 #include "overlap.h"
@@ -71,12 +72,19 @@ class MetricsAccumulator {
   // The energy of the last sample exceeded the divergence bound.
   bool energy_blew_up() const;
   const MetricsSummary& summary() const { return m_; }
+  // The first kEventsKept tunnelling and sticking events, in the order counted (step by step; in a
+  // step, wall escapes, pass-throughs, then the sample's stuck balls and pairs). A step is the
+  // number of observe_motion() calls so far.
+  const std::vector<Event>& events() const { return events_; }
 
  private:
   const Scene& scene_;
   MetricsConfig cfg_;
   MetricsSummary m_;
   bool left_container_ = false;
+  long motion_steps_ = 0;
+  std::vector<Event> events_;
+  void keep(const Event& e);
   StickingTracker sticking_;
   OverlapScratch overlap_scratch_;
   TunnellingCheck tunnelling_;

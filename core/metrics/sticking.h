@@ -5,6 +5,7 @@
 // step or two; a pair that was placed overlapping (the thesis's random placement) and is moving
 // apart is leaving, not stuck, however deep it started (measured: seed-box's pair 4-5 starts 0.12 m
 // deep and parts at 0.85 m/s, 11 samples, in `exact` too).
+#include <array>
 #include <unordered_map>
 #include <vector>
 
@@ -26,6 +27,10 @@ class StickingTracker {
 
   int pair_events() const { return pair_events_; }
   int wall_events() const { return wall_events_; }
+  // The episodes the last observe() counted: pairs (i < j, in the order of deep_pairs) and balls
+  // (in ball order).
+  const std::vector<std::array<int, 2>>& counted_pairs() const { return counted_pairs_; }
+  const std::vector<int>& counted_walls() const { return counted_walls_; }
 
  private:
   int max_samples_;
@@ -35,6 +40,8 @@ class StickingTracker {
   // Advances one run by a sample; counts the episode when it is due.
   int advance(int run, bool leaving, int& events) const;
   int pair_events_ = 0, wall_events_ = 0;
+  std::vector<std::array<int, 2>> counted_pairs_;
+  std::vector<int> counted_walls_;
 };
 
 }  // namespace ballbench

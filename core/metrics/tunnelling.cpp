@@ -17,11 +17,23 @@ int wall_escapes(const State& prev, const State& cur, const Container& box) {
   return count;
 }
 
-double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
+Eigen::Vector2d wall_crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Container& box) {
+  double s = 1;
+  for (int k = 0; k < 2; ++k) {
+    if (b[k] < box.min[k] && a[k] >= box.min[k]) s = std::min(s, (box.min[k] - a[k]) / (b[k] - a[k]));
+    if (b[k] > box.max[k] && a[k] <= box.max[k]) s = std::min(s, (box.max[k] - a[k]) / (b[k] - a[k]));
+  }
+  return a + s * (b - a);
+}
+
+double closest_approach_fraction(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
   const Eigen::Vector2d w = d1 - d0;
   const double ww = w.squaredNorm();
-  const double s = ww > 0 ? std::clamp(-d0.dot(w) / ww, 0.0, 1.0) : 0.0;
-  return (d0 + s * w).norm();
+  return ww > 0 ? std::clamp(-d0.dot(w) / ww, 0.0, 1.0) : 0.0;
+}
+
+double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
+  return (d0 + closest_approach_fraction(d0, d1) * (d1 - d0)).norm();
 }
 
 bool passes_through(const State& prev, const State& cur, int i, int j, double rs, double tolerance) {
@@ -90,11 +102,18 @@ StepTunnelling TunnellingCheck::step(const State& prev, const State& cur) {
   const bool listed = built_ && ref_.rows() == n;
   if (static_cast<int>(rec_.size()) < 4 * n + 4) rec_.resize(4 * n + 4);
   if (static_cast<int>(is_escaped_.size()) < n) is_escaped_.assign(n, 0);
+  wall_hits_.clear(), pair_hits_.clear();
   const Sweep sw = sweep(prev, cur, listed);
   if (!sw.finite) return {false, sw.contained, 0, 0};
   StepTunnelling out;
   out.contained = sw.contained;
   out.wall = sw.wall;
+  // Which balls escaped: a second look, on the rare steps with an escape, spares the sweep a branch
+  // per ball. In ball order, as many as the sweep counted (the same test).
+  if (sw.wall > 0)
+    for (int i = 0; i < n; ++i)
+      if (!beyond_wall(prev.pos.row(i).transpose(), box_) && beyond_wall(cur.pos.row(i).transpose(), box_))
+        wall_hits_.push_back(i);
   if (n < 2 || never_ || sw.step2_max < mover2_) return out;  // no step long enough for a pass-through
   if (!listed || static_cast<double>(escaped_.size()) > rebuild_share_ * n) {
     rebuild(prev, cur, std::sqrt(sw.step2_sum / n));
@@ -102,8 +121,17 @@ StepTunnelling TunnellingCheck::step(const State& prev, const State& cur) {
   for (int e : escaped_) is_escaped_[e] = 1;
   pool_.run([&](int p) { parts_[p].pairs = count_listed(prev, cur, parts_[p]); });
   out.pair = count_escaped(prev, cur);
-  for (const Part& part : parts_) out.pair += part.pairs;
+  for (const Part& part : parts_) {
+    out.pair += part.pairs;
+    pair_hits_.insert(pair_hits_.end(), part.hits.begin(), part.hits.end());
+  }
   for (int e : escaped_) is_escaped_[e] = 0;
+  // Which part found a pair depends on the number of parts: sorted, the list does not.
+  if (!pair_hits_.empty()) {
+    for (auto& h : pair_hits_)
+      if (h[0] > h[1]) std::swap(h[0], h[1]);
+    std::sort(pair_hits_.begin(), pair_hits_.end());
+  }
   return out;
 }
 
@@ -274,15 +302,15 @@ int TunnellingCheck::count_listed(const State& prev, const State& cur, Part& par
     // positive tolerance; without one, every pair goes on).
     m += !line_filter_ || (ww >= chord2_ * rs2 && (d0x * d0x + d0y * d0y) * ww - dw * dw < close2_ * rs2 * ww);
   }
-  int count = 0;
+  part.hits.clear();
   for (size_t k = 0; k < m; ++k) {
     const int i = list[survivors[k]][0], j = list[survivors[k]][1];
     // A pair with an escaped ball is judged by count_escaped() instead. The survivors passed this
     // loop's filters already: the definition decides.
     if (!is_escaped_[i] && !is_escaped_[j] && passes_through(prev, cur, i, j, radius_[i] + radius_[j], tolerance_))
-      ++count;
+      part.hits.push_back({i, j});
   }
-  return count;
+  return static_cast<int>(part.hits.size());
 }
 
 int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
@@ -305,7 +333,7 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
         const double dx = mx - sx[b], dy = my - sy[b], near = reach_ * (re + sr[b]) + slack;
         if (dx * dx + dy * dy >= near * near) continue;  // the reference is too far from e's path
         const int j = ball[b];
-        if (!is_escaped_[j] && judge(prev, cur, e, j, re + radius_[j])) ++count;
+        if (!is_escaped_[j] && judge(prev, cur, e, j, re + radius_[j])) pair_hits_.push_back({e, j}), ++count;
       }
     };
     grid_.for_each_within_range(mx, my, reach_ * (re + r_max_) + slack, against);
@@ -316,7 +344,7 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
     for (int a = 0; a < m; ++a)
       for (int b = a + 1; b < m; ++b) {
         const int i = escaped_[a], j = escaped_[b];
-        if (judge(prev, cur, i, j, radius_[i] + radius_[j])) ++count;
+        if (judge(prev, cur, i, j, radius_[i] + radius_[j])) pair_hits_.push_back({i, j}), ++count;
       }
     return count;
   }
@@ -328,7 +356,7 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
   escaped_grid_.build(escaped_mid_, 2.0 * reach_ * r_max_ + dmax);
   escaped_grid_.for_each_candidate_pair([&](int a, int b) {
     const int i = escaped_[a], j = escaped_[b];
-    if (judge(prev, cur, i, j, radius_[i] + radius_[j])) ++count;
+    if (judge(prev, cur, i, j, radius_[i] + radius_[j])) pair_hits_.push_back({i, j}), ++count;
   });
   return count;
 }

@@ -20,8 +20,13 @@ int wall_escapes(const State& prev, const State& cur, const Container& box);
 // Is a centre strictly outside the box?
 bool beyond_wall(const Eigen::Vector2d& p, const Container& box);
 
-// Closest approach over s in [0, 1] of d0 + s (d1 - d0), the relative position moving linearly.
+// Where the straight step from a (inside the box) to b (beyond it) first crosses a wall.
+Eigen::Vector2d wall_crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Container& box);
+
+// Closest approach over s in [0, 1] of d0 + s (d1 - d0), the relative position moving linearly,
+// and the s where it happens.
 double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1);
+double closest_approach_fraction(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1);
 
 // A pair passes through: apart in both samples (distance >= r_i + r_j) and its relative motion,
 // taken as a straight line between the samples, came closer than
@@ -88,6 +93,12 @@ class TunnellingCheck {
 
   StepTunnelling step(const State& prev, const State& cur);
 
+  // The events the last step() counted, as many as its counts: the balls that escaped the box (in
+  // ball order) and the pairs that passed through (i < j, ordered by i then j, whatever the number
+  // of parts that found them).
+  const std::vector<int>& wall_hits() const { return wall_hits_; }
+  const std::vector<std::array<int, 2>>& pair_hits() const { return pair_hits_; }
+
   long rebuilds() const { return rebuilds_; }  // list builds so far (for tests and benchmarks)
   // Allowance as a multiple of the largest radius, and the share of escaped balls that triggers
   // a rebuild. Measured defaults (bench/harness_benchmark.cpp); tests vary them.
@@ -102,7 +113,8 @@ class TunnellingCheck {
     double step2_sum = 0;  // the sum of every ball's step squared
   };
   // What one part of the team holds: its pairs of the list (those whose first ball lies in its
-  // rows of the grid), its escaped balls of this step (in ball order), its scratch.
+  // rows of the grid), its escaped balls of this step (in ball order), its pass-throughs among its
+  // listed pairs this step, its scratch.
   struct Part {
     std::vector<std::array<int, 2>> list;
     size_t listed = 0;  // pairs in list (its size is only capacity)
@@ -110,6 +122,7 @@ class TunnellingCheck {
     std::vector<int> escaped;
     Sweep sweep;
     int pairs = 0;  // pass-throughs among its listed pairs, this step
+    std::vector<std::array<int, 2>> hits;  // those pairs
   };
   Sweep sweep(const State& prev, const State& cur, bool contained);
   void rebuild(const State& prev, const State& cur, double step_rms);
@@ -145,6 +158,8 @@ class TunnellingCheck {
   // per ball for the pair filters, which reach balls at random.
   std::vector<double> rec_;
   std::vector<int> escaped_;        // the balls not contained in this step, in ball order
+  std::vector<int> wall_hits_;
+  std::vector<std::array<int, 2>> pair_hits_;
   std::vector<char> is_escaped_;    // by ball
   UniformGrid escaped_grid_;
   Eigen::MatrixX2d escaped_mid_;

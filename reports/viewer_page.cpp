@@ -1,0 +1,123 @@
+#include "viewer_page.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "input_error.h"
+
+namespace ballbench {
+
+extern const std::string_view kViewerTemplate;  // viewer/viewer.html (viewer_template.cpp, generated)
+
+namespace {
+
+constexpr double kUnit = 1e-4;  // frames are rounded to 0.1 mm (runner.cpp): whole numbers of this
+constexpr int kTracks = 4;      // balls whose paths the page draws, as the report's pictures do
+
+long fixed(double v) { return std::lround(v / kUnit); }
+
+// Six significant digits: what a line on a 200-pixel chart can show, at a third of the bytes.
+double short_number(double v) { return std::isfinite(v) ? std::stod(fmt::format("{:.6g}", v)) : v; }
+
+std::string label(const Result& r) {
+  const std::string l = run_label(r);
+  return r.seed_offset == 0 ? l : fmt::format("{} (placement {})", l, r.seed_offset);
+}
+
+nlohmann::json run_json(const Result& r) {
+  nlohmann::json frames = nlohmann::json::array();
+  for (const auto& frame : r.series.frames) {
+    std::vector<long> flat;
+    flat.reserve(2 * frame.size());
+    for (const auto& p : frame) flat.push_back(fixed(p[0])), flat.push_back(fixed(p[1]));
+    frames.push_back(std::move(flat));
+  }
+  std::vector<double> energy;
+  for (double e : r.series.energy) energy.push_back(short_number(e));
+  nlohmann::json events = nlohmann::json::array();
+  for (const Event& e : r.events) {
+    nlohmann::json j = {{"kind", event_kind_name(e.kind)}, {"step", e.step}, {"t", short_number(e.t)}, {"i", e.i},
+                        {"x", fixed(e.x) * kUnit}, {"y", fixed(e.y) * kUnit}};
+    if (e.j >= 0) j["j"] = e.j;
+    events.push_back(std::move(j));
+  }
+  const MetricsSummary& m = r.metrics;
+  return {{"label", label(r)},
+          {"engine", r.engine},
+          {"profile", r.profile},
+          {"status", r.status},
+          {"error", r.error},
+          {"frame_t", r.series.frame_t},
+          {"frames", std::move(frames)},
+          {"t", r.series.t},
+          {"energy", std::move(energy)},
+          {"e0", m.energy.initial},
+          {"events", std::move(events)},
+          {"totals",
+           {{"tunnel-wall", m.tunnelling_wall},
+            {"tunnel-pair", m.tunnelling_pair},
+            {"stick-wall", m.sticking_wall},
+            {"stick-pair", m.sticking_pair}}}};
+}
+
+}  // namespace
+
+int viewer_frames(const Scene& scene, int runs) {
+  // Digits of the widest coordinate: the container's, and a ball that left it by up to a diameter
+  // before its run stopped; 7 digits (+-999 m) in open space. Then its sign and comma.
+  double digits = 7;
+  if (scene.container.kind == ContainerKind::Box && scene.n() > 0) {
+    const double reach = std::max(scene.container.min.cwiseAbs().maxCoeff(), scene.container.max.cwiseAbs().maxCoeff()) +
+                         2 * scene.radius.maxCoeff();
+    digits = std::floor(std::log10(std::max(1.0, reach / kUnit))) + 1;
+  }
+  constexpr double kFrameBytes = 24;  // a frame's brackets and its time
+  const double per_frame = std::max(1, runs) * (scene.n() * 2 * (digits + 2) + kFrameBytes);
+  return static_cast<int>(
+      std::clamp(std::floor(kViewerFrameBudget / per_frame), 1.0, static_cast<double>(std::max(1L, scene.steps()))));
+}
+
+std::string viewer_page(const std::vector<const Result*>& runs) {
+  if (runs.empty()) throw InputError("no runs to show");
+  const Result* shown = nullptr;  // the first run with frames: the scene's geometry
+  for (const Result* r : runs) {
+    if (r->scene != runs.front()->scene || r->n != runs.front()->n)
+      throw InputError(fmt::format("runs of different scenes ({} with {} balls, {} with {}): a page shows one scene",
+                                   runs.front()->scene, runs.front()->n, r->scene, r->n));
+    if (!shown && !r->series.frames.empty()) shown = r;
+  }
+  if (!shown) throw InputError("no run has frames to show");
+  const Result& s = *shown;
+  std::vector<double> radius = s.series.radius;
+  if (static_cast<int>(radius.size()) != s.n) radius.assign(s.n, s.series.radius_mean);  // files without radii
+  nlohmann::json data = {{"scene", s.scene},
+                         {"source", s.scene_source},
+                         {"n", s.n},
+                         {"dt", s.dt},
+                         {"steps", s.steps},
+                         {"box", s.series.box ? nlohmann::json(*s.series.box) : nlohmann::json(nullptr)},
+                         {"radius", radius},
+                         {"unit", kUnit},
+                         {"tracks", kTracks},
+                         {"runs", nlohmann::json::array()}};
+  for (const Result* r : runs) data["runs"].push_back(run_json(*r));
+  // Inside <script>, "</script>" in a string (an error message) would end the element: '<' is
+  // written as its JSON escape, which JSON.parse reads back as '<'.
+  std::string json = data.dump();
+  std::string escaped;
+  escaped.reserve(json.size());
+  for (char c : json)
+    if (c == '<') escaped += "\\u003c";
+    else escaped += c;
+  constexpr std::string_view kMarker = "@BALLBENCH_VIEWER_DATA@";
+  const size_t at = kViewerTemplate.find(kMarker);
+  std::string page(kViewerTemplate.substr(0, at));
+  page += escaped;
+  page += kViewerTemplate.substr(at + kMarker.size());
+  return page;
+}
+
+}  // namespace ballbench

@@ -1,0 +1,336 @@
+// Events recorded where and when, and the trajectory viewer: its page size, `ballbench view`'s
+// errors, and the page loaded in headless Chromium (skipped where Chromium is absent).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.h"
+#include "input_error.h"
+#include "metrics/metrics.h"
+#include "registry.h"
+#include "result.h"
+#include "run_engines.h"
+#include "runner.h"
+#include "scene_loader.h"
+#include "viewer_page.h"
+
+namespace ballbench {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_cli;
+using testing::slurp;
+
+// A folder of its own per test process, removed at the end.
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("ballbench_viewer." + std::to_string(::getpid()));
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+TEST(Events, RoundTripThroughTheResultsJson) {
+  Result r;
+  r.engine = "e", r.engine_version = "1", r.scene = "s";
+  r.events = {{EventKind::TunnelWall, 3, 0.03, 7, -1, 5.0, 1.25},
+              {EventKind::TunnelPair, 4, 0.04, 1, 2, -0.5, 0.125},
+              {EventKind::StickWall, 10, 0.1, 0, -1, 4.9, -3.0},
+              {EventKind::StickPair, 11, 0.11, 3, 9, 0.0, 0.0}};
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j.at("events").at(1).at("kind"), "tunnel-pair");
+  EXPECT_FALSE(j.at("events").at(0).contains("j"));  // a wall event has no partner
+  // Through text, as a results file holds it.
+  const Result back = result_from_json(nlohmann::json::parse(j.dump()));
+  EXPECT_EQ(back.events, r.events);
+  nlohmann::json bad = j;
+  bad["events"][0]["kind"] = "tunnel-floor";
+  EXPECT_THROW(result_from_json(bad), InputError);
+}
+
+// A ball fast enough to cross the right wall (x = 5) in one step, and two balls that swap places
+// in one step, under an engine without continuous collision detection (Chipmunk2D): each is
+// caught in the step it happens, where it happens.
+TEST(Events, AFastBallThroughAWallAndAPairPassingThroughAreRecordedWhereAndWhen) {
+  const Scene scene = parse_scene(R"(
+name = "fast"
+dt = 0.01
+duration = 0.03
+gravity = [0.0, 0.0]
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [4.0, 1.0]
+vel = [130.0, 0.0]
+radius = 0.25
+mass = 1.0
+[[ball]]
+pos = [-0.6, -2.0]
+vel = [120.0, 0.0]
+radius = 0.25
+mass = 1.0
+[[ball]]
+pos = [0.6, -2.0]
+vel = [-120.0, 0.0]
+radius = 0.25
+mass = 1.0
+)",
+                                  "fast.toml");
+  const Result r = run_engine(scene, find_engine("chipmunk"), {});
+  ASSERT_EQ(r.metrics.tunnelling_wall, 1) << r.status << " " << r.error;
+  ASSERT_EQ(r.metrics.tunnelling_pair, 1);
+  ASSERT_EQ(r.events.size(), 2u);
+  const Event& wall = r.events[0];
+  EXPECT_EQ(wall.kind, EventKind::TunnelWall);
+  EXPECT_EQ(wall.step, 1);
+  EXPECT_DOUBLE_EQ(wall.t, 0.01);
+  EXPECT_EQ(wall.i, 0);
+  EXPECT_NEAR(wall.x, 5.0, 1e-9);  // where its straight step crosses the wall
+  EXPECT_NEAR(wall.y, 1.0, 1e-9);
+  const Event& pair = r.events[1];
+  EXPECT_EQ(pair.kind, EventKind::TunnelPair);
+  EXPECT_EQ(pair.step, 1);
+  EXPECT_EQ(pair.i, 1);
+  EXPECT_EQ(pair.j, 2);
+  EXPECT_NEAR(pair.x, 0.0, 1e-9);  // they met halfway
+  EXPECT_NEAR(pair.y, -2.0, 1e-9);
+}
+
+State two_balls_at(double x0, double x1) {
+  State s;
+  s.resize(2);
+  s.pos << x0, 0.0, x1, 0.0;
+  s.vel.setZero();
+  return s;
+}
+
+TEST(Events, AStuckPairIsRecordedWhenCountedAndOnlyTheFirstAreKept) {
+  const Scene scene = parse_scene(R"(
+dt = 0.01
+duration = 1.0
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [-2.0, 0.0]
+radius = 0.25
+[[ball]]
+pos = [2.0, 0.0]
+radius = 0.25
+)",
+                                  "two.toml");
+  MetricsConfig config;
+  MetricsAccumulator m(scene, config);
+  // Overlapping by 0.1 m (20% of the radius sum), not moving: counted at the sample after
+  // stuck_samples of them (the first sample is the initial state, step 0).
+  State s = two_balls_at(-0.2, 0.2);
+  m.observe(s);
+  for (int k = 1; k <= config.stuck_samples + 2; ++k) {
+    State next = s;
+    next.t = k * 0.01;
+    m.observe_motion(s, next);
+    m.observe(next);
+    s = next;
+  }
+  ASSERT_EQ(m.summary().sticking_pair, 1);
+  ASSERT_EQ(m.events().size(), 1u);
+  EXPECT_EQ(m.events()[0].kind, EventKind::StickPair);
+  EXPECT_EQ(m.events()[0].step, config.stuck_samples);
+  EXPECT_DOUBLE_EQ(m.events()[0].x, 0.0);
+  EXPECT_EQ(m.events()[0].i, 0);
+  EXPECT_EQ(m.events()[0].j, 1);
+
+  // A pair swapping places every step: every pass counts, the first kEventsKept are recorded.
+  MetricsAccumulator swaps(scene, config);
+  State a = two_balls_at(-1.0, 1.0);
+  const long steps = static_cast<long>(kEventsKept) + 50;
+  for (long k = 1; k <= steps; ++k) {
+    State b = two_balls_at(k % 2 ? 1.0 : -1.0, k % 2 ? -1.0 : 1.0);
+    b.t = k * 0.01;
+    swaps.observe_motion(a, b);
+    a = b;
+  }
+  EXPECT_EQ(swaps.summary().tunnelling_pair, steps);  // the count stays the total
+  ASSERT_EQ(swaps.events().size(), kEventsKept);
+  EXPECT_EQ(swaps.events().back().step, static_cast<long>(kEventsKept));
+}
+
+// The report's seed scenes take as many frames as a page of every run holds: a page of every
+// engine and profile on the 72-ball bowl over its full 3000 steps, each run with as many events as
+// are kept, stays within the bound. The frames are a real run's (the runner's spacing).
+TEST(ViewerPage, AReportPageOfEveryRunStaysUnderItsBound) {
+  const Scene scene = load_scene("seed-bowl");
+  const int runs = static_cast<int>(cli::run_count(parse_engine_list("all"), "all"));
+  RunOptions options;
+  options.frames = viewer_frames(scene, runs);
+  options.reference = nullptr;
+  Result run = run_engine(scene, find_engine("home"), options);
+  ASSERT_EQ(run.status, "ok") << run.error;
+  ASSERT_GE(run.series.frames.size(), 80u);  // the GIF's frames and more
+  // The longest numbers a box of [-5, 5]^2 puts on the page, in every event's place.
+  for (auto& frame : run.series.frames)
+    for (auto& p : frame) p = {-5.4999, -5.4999};
+  for (size_t k = 0; k < kEventsKept; ++k)
+    run.events.push_back({EventKind::TunnelPair, 2999, 29.99, 71, 70, -4.9999, -4.9999});
+  std::vector<Result> all(runs, run);
+  std::vector<const Result*> shown;
+  for (int k = 0; k < runs; ++k) {
+    all[k].engine = "engine-" + std::to_string(k);
+    shown.push_back(&all[k]);
+  }
+  const std::string page = viewer_page(shown);
+  EXPECT_LT(static_cast<double>(page.size()), kViewerPageBytes) << runs << " runs, " << run.series.frames.size() << " frames";
+  EXPECT_GT(static_cast<double>(page.size()), 0.5 * kViewerPageBytes) << "the budget is there to be used";
+}
+
+TEST(ViewerPage, EscapesWhatWouldEndItsScriptElement) {
+  Result r;
+  r.scene = "s", r.n = 1, r.engine = "e", r.status = "failed", r.error = "</script><b>";
+  r.series.frames = {{{0.0, 0.0}}};
+  r.series.frame_t = {0.0};
+  const std::string page = viewer_page({&r});
+  EXPECT_EQ(page.find("</script><b>"), std::string::npos);
+  EXPECT_NE(page.find("\\u003c/script>\\u003cb>"), std::string::npos);
+}
+
+// The first line of stderr, and that it is the only one.
+std::string one_line(const std::string& err) {
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  return err.substr(0, err.find('\n'));
+}
+
+TEST(ViewCli, BadInputIsOneLineAndAnError) {
+  TempDir dir;
+  const std::string d = dir.path.string();
+  auto missing = run_cli("view " + d + "/none.json");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(one_line(missing.err).find("none.json"), std::string::npos);
+  std::ofstream(d + "/text.json") << "not json";
+  auto text = run_cli("view " + d + "/text.json");
+  EXPECT_EQ(text.status, 2);
+  EXPECT_NE(one_line(text.err).find("text.json"), std::string::npos);
+  std::ofstream(d + "/other.json") << R"({"hello": 1})";
+  auto other = run_cli("view " + d + "/other.json");
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(one_line(other.err).find("other.json"), std::string::npos);
+
+  // Without --frames: what to do instead.
+  ASSERT_EQ(run_cli("run --scene seed-box --engine home --steps 20 --no-reference --quiet --json " + d + "/plain.json").status, 0);
+  auto plain = run_cli("view " + d + "/plain.json");
+  EXPECT_EQ(plain.status, 2);
+  EXPECT_NE(one_line(plain.err).find("--frames"), std::string::npos) << plain.err;
+
+  // Runs of two scenes in one file.
+  ASSERT_EQ(run_cli("run --scene seed-bowl --engine home --steps 20 --frames 5 --no-reference --quiet --json " + d +
+                    "/bowl.json").status, 0);
+  auto box = read_results_file(d + "/plain.json"), bowl = read_results_file(d + "/bowl.json");
+  box.insert(box.end(), bowl.begin(), bowl.end());
+  write_results_file(d + "/mixed.json", box);
+  auto mixed = run_cli("view " + d + "/mixed.json");
+  EXPECT_EQ(mixed.status, 2);
+  EXPECT_NE(one_line(mixed.err).find("different scenes"), std::string::npos) << mixed.err;
+  EXPECT_FALSE(fs::exists(d + "/mixed.html"));
+}
+
+// Where Debian's chromium is, or "".
+std::string chromium() {
+  for (const char* p : {"/usr/bin/chromium", "/usr/bin/chromium-browser"})
+    if (::access(p, X_OK) == 0) return p;
+  return "";
+}
+
+// The page's <pre id="state"> after Chromium loaded `url` headless and ran its script.
+nlohmann::json page_state(const std::string& browser, const std::string& url, const fs::path& dir) {
+  const fs::path dom = dir / "dom.html";
+  // Its own profile folder: ctest runs tests in parallel, and a profile is locked by its browser.
+  const std::string cmd = "timeout 60 " + browser + " --headless --no-sandbox --disable-gpu --user-data-dir=" +
+                          (dir / "profile").string() + " --virtual-time-budget=10000 --dump-dom '" + url + "' >" +
+                          dom.string() + " 2>/dev/null";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  std::string html = slurp(dom.string());
+  const std::string open = "<pre id=\"state\">";
+  const size_t at = html.find(open), end = html.find("</pre>", at);
+  if (at == std::string::npos || end == std::string::npos) {
+    ADD_FAILURE() << "no state element in what Chromium drew:\n" << html.substr(0, 2000);
+    return {};
+  }
+  std::string text = html.substr(at + open.size(), end - at - open.size());
+  // Text content as serialised HTML: the three entities it may hold.
+  for (const auto& [entity, c] : {std::pair{"&lt;", "<"}, {"&gt;", ">"}, {"&amp;", "&"}})
+    for (size_t p = text.find(entity); p != std::string::npos; p = text.find(entity, p + 1)) text.replace(p, std::string(entity).size(), c);
+  return nlohmann::json::parse(text);
+}
+
+// The colours viewer.html draws balls and the inside of the box with.
+const std::vector<int> kBall = {0x30, 0x60, 0xc0}, kInside = {0xff, 0xff, 0xff};
+
+TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
+  const std::string browser = chromium();
+  if (browser.empty()) GTEST_SKIP() << "chromium not found: the viewer's browser test needs Debian's chromium (scripts/lib.sh installs it)";
+  TempDir dir;
+  const std::string json = (dir.path / "run.json").string(), page = (dir.path / "run.html").string();
+  // home-seed, the thesis's algorithm, sticks and tunnels on seed-box early on: events to click.
+  ASSERT_EQ(run_cli("run --scene seed-box --engine home-seed,home --steps 300 --frames 150 --no-reference --quiet --json " +
+                    json).status, 1);  // home-seed diverges (a ball leaves the box)
+  const auto view = run_cli("view " + json + " --out " + page);
+  ASSERT_EQ(view.status, 0) << view.err;
+  const std::vector<Result> runs = read_results_file(json);
+  ASSERT_EQ(runs.size(), 2u);
+  ASSERT_GT(runs[0].series.frames.size(), 40u);
+
+  const int k = 37;  // not the frame a page opens at (0)
+  const nlohmann::json state = page_state(browser, "file://" + page + "#frame=" + std::to_string(k), dir.path);
+  ASSERT_FALSE(state.is_null());
+  EXPECT_EQ(state.at("frame"), k);
+  EXPECT_NEAR(state.at("t").get<double>(), runs[1].series.frame_t[k], 1e-12);
+  EXPECT_EQ(state.at("engines"), nlohmann::json({"home-seed", "home"}));
+  ASSERT_EQ(state.at("panels").size(), 2u);
+  for (size_t p = 0; p < runs.size(); ++p) {
+    const nlohmann::json& panel = state.at("panels").at(p);
+    const Result& r = runs[p];
+    const size_t held = std::min<size_t>(k, r.series.frames.size() - 1);
+    EXPECT_EQ(panel.at("frame"), held) << r.engine;
+    // Ball 0 is drawn where this run's frame puts it, in the ball colour.
+    const auto& ball0 = panel.at("ball0");
+    EXPECT_NEAR(ball0.at("x").get<double>(), r.series.frames[held][0][0], 1e-9) << r.engine;
+    EXPECT_NEAR(ball0.at("y").get<double>(), r.series.frames[held][0][1], 1e-9) << r.engine;
+    EXPECT_EQ(ball0.at("rgb").get<std::vector<int>>(), kBall) << r.engine;
+    // A point no ball of that frame covers shows the inside of the box.
+    ASSERT_TRUE(panel.contains("empty")) << r.engine;
+    const auto& empty = panel.at("empty");
+    const double ex = empty.at("x"), ey = empty.at("y");
+    for (size_t b = 0; b < r.series.frames[held].size(); ++b)
+      EXPECT_GT(std::hypot(r.series.frames[held][b][0] - ex, r.series.frames[held][b][1] - ey), r.series.radius[b])
+          << r.engine << " ball " << b;
+    EXPECT_EQ(empty.at("rgb").get<std::vector<int>>(), kInside) << r.engine;
+  }
+
+  // Clicking an event (the fragment's event=I selects the list's I-th, in time order) jumps to the
+  // frame nearest its time.
+  ASSERT_FALSE(runs[0].events.empty());
+  const Event& first = runs[0].events.front();  // home-seed's, and home has none: the list's first
+  ASSERT_TRUE(runs[1].events.empty());
+  const nlohmann::json picked = page_state(browser, "file://" + page + "#event=0", dir.path);
+  ASSERT_FALSE(picked.is_null());
+  EXPECT_EQ(picked.at("selected"), 0);
+  const auto& t = runs[1].series.frame_t;
+  size_t nearest = 0;
+  for (size_t f = 0; f < t.size(); ++f)
+    if (std::abs(t[f] - first.t) < std::abs(t[nearest] - first.t)) nearest = f;
+  EXPECT_EQ(picked.at("frame"), nearest);
+}
+
+}  // namespace
+}  // namespace ballbench
