@@ -125,6 +125,8 @@ void print_table(const std::vector<Result>& results) {
   }
   for (const auto& r : results) {
     if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
+    for (const std::string& note : r.skipped)
+      if (note.rfind(kStrideNote, 0) == 0) fmt::print("{}: {}\n", run_label(r), note);
     if (r.reference.reference_failed_step >= 0)
       fmt::print("{}: reference {} failed at step {}, error compared up to it: {}\n", run_label(r),
                  r.reference.reference, r.reference.reference_failed_step, r.reference.reference_error);
