@@ -78,7 +78,8 @@ std::string data_file(const Scene& scene) {
 }
 
 std::string masses_file(const Scene& scene) {
-  std::string out = "# ballbench: atom-ID mass (kg)\n";
+  // An atomfile: the count of lines, then atom-ID value.
+  std::string out = fmt::format("# ballbench: atom-ID mass (kg)\n{}\n", scene.n());
   for (int i = 0; i < scene.n(); ++i) out += fmt::format("{} {}\n", i + 1, num(scene.mass(i)));
   return out;
 }

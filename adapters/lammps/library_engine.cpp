@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -13,30 +15,46 @@
 
 #include "lammps/settings_record.h"
 
+extern char** environ;
+
 namespace ballbench::lammps {
 namespace {
 
 // Open MPI settings for this process's own MPI, started as a singleton by the first
 // lammps_open_no_mpi: without them it starts an `orted` daemon and probes every network transport
 // (measured: ~0.5 s per process); one rank needs only its own loopback (btl self, pml ob1). Each is
-// set only where the environment does not set it already, and only for that first open.
+// set only where the environment does not set it already.
 constexpr const char* kSingletonMca[][2] = {
     {"OMPI_MCA_ess_singleton_isolated", "1"}, {"OMPI_MCA_pml", "ob1"}, {"OMPI_MCA_btl", "self"}, {"OMPI_MCA_osc", "pt2pt"}};
 
+std::set<std::string> environment_names() {
+  std::set<std::string> names;
+  for (char** e = environ; *e; ++e) names.emplace(*e, std::strcspn(*e, "="));
+  return names;
+}
+
 // The library's error path exits the process (Debian's build has no LAMMPS_EXCEPTIONS): screen
 // and log output off stdout (it carries ballbench's tables and JSON), and no log.cite file.
+// MPI_Init reads the environment once, at the first open, and adds variables of its own
+// (OMPI_MCA_ess=singleton, OMPI_COMMAND, PMIX_...) that would make an mpirun started from this
+// process (ranks > 1) take itself for part of this job and fail: every variable that first open
+// set is taken out again.
 void* open_lammps() {
   static bool mpi_started = false;  // by an earlier open in this process or in the one it was forked from
-  std::vector<const char*> set;
-  if (!mpi_started && !std::getenv("OMPI_COMM_WORLD_SIZE"))
-    for (const auto& [key, value] : kSingletonMca)
-      if (!std::getenv(key) && ::setenv(key, value, 0) == 0) set.push_back(key);
+  const bool first = !mpi_started && !std::getenv("OMPI_COMM_WORLD_SIZE");
+  std::set<std::string> before;
+  if (first) {
+    before = environment_names();
+    for (const auto& [key, value] : kSingletonMca) ::setenv(key, value, 0);
+  }
   std::vector<std::string> args = {"ballbench", "-screen", "none", "-log", "none", "-nocite"};
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   void* h = lammps_open_no_mpi(static_cast<int>(argv.size()), argv.data(), nullptr);
-  for (const char* key : set) ::unsetenv(key);  // read by MPI_Init only; not for mpirun's children
   mpi_started = true;
+  if (first)
+    for (const std::string& name : environment_names())
+      if (!before.count(name)) ::unsetenv(name.c_str());
   if (!h) throw std::runtime_error("lammps: lammps_open_no_mpi returned no instance");
   return h;
 }

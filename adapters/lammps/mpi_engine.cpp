@@ -86,7 +86,8 @@ class MpiEngine final : public Engine {
     // cores is allowed (slower, never refused); a hostfile's slots say where ranks go.
     if (!s_.hostfile.empty()) argv.insert(argv.end(), {"--hostfile", s_.hostfile});
     else argv.push_back("--oversubscribe");
-    argv.insert(argv.end(), {s_.lmp, "-in", (dir_ / "in.ballbench").string(), "-log", "none", "-echo", "none", "-nocite"});
+    const std::string input = dir_.empty() ? "WORKDIR/in.ballbench" : (dir_ / "in.ballbench").string();  // made by start()
+    argv.insert(argv.end(), {s_.lmp, "-in", input, "-log", "none", "-echo", "none", "-nocite"});
     return argv;
   }
 
