@@ -239,6 +239,14 @@ TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
               one.metrics.energy.final, one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
 }
 
+TEST(LammpsAdapter, IsDeterministic) {
+  RunOptions o;
+  o.profile = "hertz";  // the one with per-contact history
+  const Result a = run_engine(small_box(), find_engine("lammps"), o), b = run_engine(small_box(), find_engine("lammps"), o);
+  ASSERT_EQ(a.status, "ok") << a.error;
+  EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
+}
+
 // mpirun that cannot run its program ends the run as failed, with mpirun's own words.
 TEST(LammpsAdapter, AFailedMpirunIsAFailedRunWithItsStderr) {
   RunOptions o;
