@@ -51,6 +51,31 @@ radius = 0.1
                      "equal-head-on.toml");
 }
 
+// `count` balls of `radius` (mass 1) in a 2 m box, placed at random with speeds up to `speed` per
+// axis; restitution `e`, gravity `g` along y, `duration` at dt 0.01.
+Scene gas_in_box(double e, double g, int count, double radius, double speed, int seed, double duration) {
+  return parse_scene(fmt::format(R"(
+dt = 0.01
+duration = {}
+restitution = {}
+gravity = [0.0, {}]
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[random]
+count = {}
+radius = {}
+mass = 1.0
+pos_min = [-0.85, -0.85]
+pos_max = [0.85, 0.85]
+vel_min = [{}, {}]
+vel_max = [{}, {}]
+seed = {}
+)",
+                                 duration, e, g, count, radius, -speed, -speed, speed, speed, seed),
+                     "gas-in-box.toml");
+}
+
 // Velocity Verlet at a DEM step of t_c / 50 or less meets the contact's start and end within a
 // step, and integrates the damped oscillation to O((pi / 50)^2): the measured restitution sits
 // within 1% of the law's. Hertz's damping is fitted at the design speed, which both scenes use.
@@ -113,24 +138,7 @@ TEST(LammpsAdapter, LargestOverlapIsTheTarget) {
 
 // An elastic gas in a box keeps its energy: velocity Verlet's error over a contact of 50 steps.
 TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
-  const Scene s = parse_scene(R"(
-dt = 0.01
-duration = 0.5
-restitution = 1.0
-[container]
-min = [-1.0, -1.0]
-max = [1.0, 1.0]
-[random]
-count = 12
-radius = 0.1
-mass = 1.0
-pos_min = [-0.8, -0.8]
-pos_max = [0.8, 0.8]
-vel_min = [-1.0, -1.0]
-vel_max = [1.0, 1.0]
-seed = 3
-)",
-                              "elastic-box.toml");
+  const Scene s = gas_in_box(1.0, 0.0, 12, 0.1, 1.0, 3, 0.5);
   for (const char* profile : {"hooke", "hertz"}) {
     RunOptions o;
     o.profile = profile;
@@ -189,27 +197,7 @@ TEST(LammpsAdapter, BadSettingsAreInputErrors) {
 // in this process, the same input. Domain decomposition changes which rank sums a contact's force,
 // never the pairwise forces, so the runs agree to round-off at most: 1e-9 relative on energy and
 // momentum, the same counts (measured: bit-identical states, equal checksums).
-Scene small_box() {
-  return parse_scene(R"(
-dt = 0.01
-duration = 0.2
-restitution = 0.9
-gravity = [0.0, -2.0]
-[container]
-min = [-1.0, -1.0]
-max = [1.0, 1.0]
-[random]
-count = 24
-radius = 0.08
-mass = 1.0
-pos_min = [-0.85, -0.85]
-pos_max = [0.85, 0.85]
-vel_min = [-0.5, -0.5]
-vel_max = [0.5, 0.5]
-seed = 5
-)",
-                     "small-box.toml");
-}
+Scene small_box() { return gas_in_box(0.9, -2.0, 24, 0.08, 0.5, 5, 0.2); }
 
 TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
   const Scene s = small_box();

@@ -53,6 +53,8 @@ class TrajectoryParts {
     if (!in) return;
     std::string header;
     std::getline(in, header);
+    // A run that wrote no row (refused as unsupported): copying nothing would set the failbit.
+    if (in.peek() == std::ifstream::traits_type::eof()) return;
     std::ofstream out(joined_, std::ios::binary | std::ios::app);
     out << in.rdbuf();
     if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
