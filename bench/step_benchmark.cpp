@@ -67,7 +67,7 @@ int max_balls(const std::string& engine, const std::string& profile) {
 }
 
 // Settings a benchmark gives an engine on top of its profile: LAMMPS refuses the scaled scenes'
-// speeds under its default sub-step cap (5000 per step; the gas needs ~9 000), so its rows raise
+// speeds under its default sub-step cap (5000 per step; the gas needs 8 000 - 9 000), so its rows raise
 // the cap to time them; a bowl whose free fall needs more than that is refused with the figure.
 nlohmann::json bench_settings(const std::string& engine) {
   if (engine == "lammps") return {{"max_substeps", 20'000}};
