@@ -13,6 +13,9 @@
 #include "bullet/bullet_engine.h"
 #include "chipmunk/chipmunk_engine.h"
 #include "input_error.h"
+#if BALLBENCH_HAS_LAMMPS
+#include "lammps/lammps_engine.h"
+#endif
 #include "ode/ode_engine.h"
 #include "process/engines_file.h"
 #include "process/process_engine.h"
@@ -31,6 +34,9 @@ const std::vector<EngineEntry>& builtin_engines() {
       box2d_engine(),
       bullet_engine(),
       chipmunk_engine(),
+#if BALLBENCH_HAS_LAMMPS  // adapters/lammps/CMakeLists.txt: only where liblammps is found
+      lammps_engine(),
+#endif
       ode_engine(),
   };
   return engines;

@@ -4,6 +4,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,18 @@ class Engine {
   // around its own step calls, summed since the engine was built (s). The harness's own timing of
   // step() adds the pipe; engines in this process have none.
   virtual std::optional<double> own_step_seconds() const { return std::nullopt; }
+  // How many steps apart the engine's states can be read: 1 for every step; k when it provides a
+  // state only every k steps (an engine run in other processes that dumps samples). The runner
+  // then steps k times between reads, and the metrics judged per step (tunnelling) see the samples.
+  virtual int state_stride() const { return 1; }
+};
+
+// Thrown by an engine's factory for a scene it cannot run faithfully that its capabilities cannot
+// express (say, one needing more sub-steps than its cap): the run's status is "unsupported" with
+// this message, as for a capability the engine lacks.
+class SceneUnsupported : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // An accuracy knob `ballbench sweep` varies: a settings key and the values it tries, one at a time,
@@ -75,6 +88,9 @@ struct EngineInfo {
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
   std::vector<SweepKnob> sweep_knobs;             // what trades its run time for accuracy
+  // Each run costs far more than its steps: a process to start, thousands of DEM sub-steps per
+  // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
+  bool costly_runs = false;
 };
 
 // Builds an engine for a scene. `settings` is a JSON object of overrides (from the scene's

@@ -79,14 +79,28 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     engine = entry.create(scene, r.profile, merged_settings(scene, entry.info.name, options.overrides));
   } catch (const InputError&) {
     throw;
+  } catch (const SceneUnsupported& e) {  // a limit only the engine can judge: reported as a capability refusal
+    r.status = "unsupported";
+    r.error = e.what();
+    return r;
   } catch (const std::exception& e) {
     r.status = "failed";
     r.error = fmt::format("building the world failed: {}", e.what());
     return r;
   }
   r.settings = engine->settings();
+  // An engine that provides a state only every `stride` steps is read at those steps alone: every
+  // per-step metric (tunnelling, finiteness, leaving the box) is judged on those samples, and the
+  // sampled metrics see a multiple of the stride.
+  const long stride = std::max(1, engine->state_stride());
+  if (stride > 1) {
+    r.metrics_config.sample_every = static_cast<int>((r.metrics_config.sample_every + stride - 1) / stride * stride);
+    r.skipped.push_back(fmt::format("{} every {} steps: {} provides states only every {} steps, so tunnelling and the "
+                                    "finiteness check see those samples, not every step",
+                                    kStrideNote, stride, entry.info.name, stride));
+  }
 
-  MetricsAccumulator metrics(scene, options.metrics);
+  MetricsAccumulator metrics(scene, r.metrics_config);
   State state;
   // The reference runs in lockstep, outside the timed region; its failure ends the comparison only.
   std::unique_ptr<Engine> reference;
@@ -106,7 +120,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   r.series.radius_mean = scene.radius.mean();
   if (scene.container.kind == ContainerKind::Box)
     r.series.box = {scene.container.min.x(), scene.container.min.y(), scene.container.max.x(), scene.container.max.y()};
-  const long every = r.metrics_config.sample_every;
+  const long every = r.metrics_config.sample_every;  // a multiple of the stride
   // Figures take every sampled state they can, up to series_points of them.
   const long series_every = every * std::max(1L, r.steps / every / std::max(1, options.series_points));
   constexpr int kTracks = 4;
@@ -142,12 +156,23 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   if (options.trajectory) options.trajectory->write(r.engine, r.profile, 0, state);
   uint64_t final_sum = state_checksum(state), trajectory_sum = chain_checksum(kChecksumSeed, final_sum);
 
+  // The reference steps with the engine, every step; it is read only where the engine is.
+  auto step_reference = [&](long k, bool read) {
+    if (!reference) return;
+    try {
+      reference->step(scene.dt);
+      if (read) reference->read(ref_state);
+    } catch (const std::exception& e) {
+      error->reference_failed(k, e.what());
+      reference.reset();
+    }
+  };
   const long report_every = std::max(1L, r.steps / 100);
   long sampled = 0;  // the last step the sampled metrics saw
   for (long k = 1; k <= r.steps; ++k) {
     if (interrupt_signal()) {  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
       r.status = "interrupted";
-      r.error = fmt::format("interrupted by {} after step {}", interrupt_name(), k - 1);
+      r.error = fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done);
       break;
     }
     const auto t0 = Clock::now();
@@ -160,6 +185,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       break;
     }
     engine_s += seconds_since(t0);
+    if (k % stride != 0 && k != r.steps) {  // no state to read before the engine's next sample
+      step_reference(k, false);
+      if (options.progress && k % report_every == 0) options.progress(k, r.steps);
+      continue;
+    }
     // Read into a scratch state and keep it only if finite: a run that blew up ends with its last
     // good state, from which the final figures (positions, jitter, speed distribution) come.
     engine->read(next);
@@ -177,15 +207,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       break;
     }
     std::swap(state, next);
-    if (reference) {
-      try {
-        reference->step(scene.dt);
-        reference->read(ref_state);
-      } catch (const std::exception& e) {
-        error->reference_failed(k, e.what());
-        reference.reset();
-      }
-    }
+    step_reference(k, true);
     if (options.trajectory) options.trajectory->write(r.engine, r.profile, k, state);
     r.steps_done = k;
     if (k % every == 0 || k == r.steps) {

@@ -15,6 +15,10 @@ namespace ballbench {
 
 class TrajectoryCsv;
 
+// How Result::skipped's note for an engine read only every k steps (Engine::state_stride) begins:
+// "tunnelling judged on samples every k steps: ...". `run` prints it under its table.
+inline constexpr const char* kStrideNote = "tunnelling judged on samples";
+
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
   std::string profile;           // settings profile; "" = the engine's first

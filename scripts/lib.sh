@@ -7,6 +7,7 @@ BALLBENCH_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libtomlplusplus-dev libfmt-dev libeigen3-dev
   libbox2d-dev libbullet-dev libchipmunk-dev libode-dev libxxhash-dev
+  liblammps-dev lammps openmpi-bin
   gnuplot-nox python3 python3-pandas nodejs
   chromium
 )

@@ -59,7 +59,12 @@ TEST(SweepPlan, StepSizesForEveryEngineThenEachKnobValueTheProfileLacks) {
       EXPECT_EQ(item.dt, scene.dt) << label;
       EXPECT_EQ(item.overrides.size(), 1u) << label;
       // A knob value equal to the profile's own would repeat the dt series' point.
-      const auto settings = item.engine->create(scene, item.profile, {})->settings();
+      nlohmann::json settings;
+      try {
+        settings = item.engine->create(scene, item.profile, {})->settings();
+      } catch (const SceneUnsupported&) {  // refused here (lammps: its sub-step cap), so every value is planned
+        continue;
+      }
       EXPECT_NE(settings[item.knob], item.value) << label << " " << item.knob;
     }
   }

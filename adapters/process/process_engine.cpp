@@ -99,6 +99,7 @@ EngineEntry broken_entry(const ProcessEngineSpec& spec, const std::string& why) 
   e.info.version = "-";
   e.info.summary = fmt::format("external engine process ({})", spec.source);
   e.info.profiles = {"default"};
+  e.info.costly_runs = true;
   // A registered engine that cannot run here (say, Node is not installed) is listed as unavailable
   // and its rows are unsupported; one named on the command line is a failed row with the reason.
   if (!spec.name.empty()) e.info.unavailable = why;

@@ -77,6 +77,7 @@ Handshake ProtocolClient::hello_reply() {
     h.info.limits = j.value("limits", "");
     h.info.caps = capabilities_from(j.at("capabilities"));
     h.info.profiles = strings_from(j.at("profiles"), "profiles", false);
+    h.info.costly_runs = true;  // every run starts the engine's process (a Node engine: 0.1 to 0.4 s)
     h.settings_keys = strings_from(j.value("settings_keys", nlohmann::json::array()), "settings_keys", true);
     for (const auto& k : j.value("sweep_knobs", nlohmann::json::array()))
       h.info.sweep_knobs.push_back({k.at("key").get<std::string>(), k.at("values")});

@@ -255,7 +255,7 @@ void report(const ReportArgs& a) {
     // points is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s),
     // hundreds of times over; --full includes them. Their scene tables and benchmarks are in both.
     std::vector<const EngineEntry*> swept = engines;
-    if (!a.full) std::erase_if(swept, [](const EngineEntry* e) { return !is_builtin_engine(e->info.name); });
+    if (!a.full) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
     Isolation isolation;
     isolation.timeout_s = suite.timeout_s;
     // A part whose complete results are already there is reused (a report that stopped resumes).

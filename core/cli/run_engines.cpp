@@ -53,6 +53,8 @@ class TrajectoryParts {
     if (!in) return;
     std::string header;
     std::getline(in, header);
+    // A run that wrote no row (refused as unsupported): copying nothing would set the failbit.
+    if (in.peek() == std::ifstream::traits_type::eof()) return;
     std::ofstream out(joined_, std::ios::binary | std::ios::app);
     out << in.rdbuf();
     if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
@@ -125,6 +127,8 @@ void print_table(const std::vector<Result>& results) {
   }
   for (const auto& r : results) {
     if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
+    for (const std::string& note : r.skipped)
+      if (note.rfind(kStrideNote, 0) == 0) fmt::print("{}: {}\n", run_label(r), note);
     if (r.reference.reference_failed_step >= 0)
       fmt::print("{}: reference {} failed at step {}, error compared up to it: {}\n", run_label(r),
                  r.reference.reference, r.reference.reference_failed_step, r.reference.reference_error);

@@ -1,0 +1,47 @@
+#include "lammps/settings_record.h"
+
+namespace ballbench::lammps {
+namespace {
+
+nlohmann::json design(const ContactDesign& c) {
+  return {{"meff", c.meff},       {"radius", c.radius},          {"approach_speed", c.approach},
+          {"kn", c.kn},           {"kt", c.kn * 2 / 7},          {"gamma_n", c.gamma_n},
+          {"gamma_t", c.gamma_n / 2}, {"contact_time", c.contact_time}};
+}
+
+}  // namespace
+
+nlohmann::json settings_record(const Scene& scene, const LammpsSettings& s, const Plan& plan) {
+  const ContactModel& m = plan.model;
+  nlohmann::json derived = {{"pair_style", m.law == ContactLaw::hooke ? "gran/hooke" : "gran/hertz/history"},
+                            {"wall_style", m.law == ContactLaw::hooke ? "hooke" : "hertz/history"},
+                            {"ball_speed", m.ball_speed},
+                            {"overlap", m.overlap},
+                            {"pair", design(m.pair)},
+                            {"wall", design(m.wall)},
+                            {"contact_time", m.contact_time},
+                            {"dem_dt", plan.dem_dt},
+                            {"substeps", plan.substeps},
+                            {"skin", plan.skin},
+                            {"xmu", scene.friction},
+                            {"inertia", "disc (m r^2 / 2): fix nve/sphere disc"}};
+  if (m.law == ContactLaw::hertz) {
+    derived["hertz_damping"] = m.hertz_damping;            // g = gamma_n d*^(3/2) sqrt(R) / v
+    derived["hertz_restitution"] = m.hertz_restitution;    // of one contact at the design speed
+  }
+  return {{"law", law_name(s.law)},
+          {"overlap_target", s.overlap_target},
+          {"impact_speed", s.impact_speed},
+          {"contact_steps", s.contact_steps},
+          {"max_substeps", s.max_substeps},
+          {"skin", s.skin},
+          {"ranks", s.ranks},
+          {"hostfile", s.hostfile},
+          {"sample_every", s.sample_every},
+          {"mpirun", s.mpirun},
+          {"lmp", s.lmp},
+          {"workdir", s.workdir},
+          {"derived", derived}};
+}
+
+}  // namespace ballbench::lammps

@@ -1,0 +1,253 @@
+// The LAMMPS adapter: effective restitution measured from read-back states for both contact laws,
+// the largest overlap against its target, energy in an elastic box, the sub-step cap, settings
+// errors, and 2 MPI ranks against the library in this process.
+#include <gtest/gtest.h>
+
+#if BALLBENCH_HAS_LAMMPS
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "adapter_calibration.h"
+#include "input_error.h"
+#include "lammps/contact_model.h"
+#include "lammps/lammps_engine.h"
+#include "registry.h"
+#include "runner.h"
+#include "scene_loader.h"
+
+namespace ballbench {
+namespace {
+
+using calibration::Calibration;
+using calibration::calibration_name;
+
+State run(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
+  return calibration::run_steps("lammps", s, profile, steps, overrides);
+}
+
+// Two equal balls (r 0.1, m 1) head-on at +-2.5 m/s in open space: the design case of the pair
+// contact (two of the heaviest balls, each at the scene's largest speed), contact at t = 0.06 s.
+Scene equal_head_on(double e, double dt = 0.01, double gap = 0.3) {
+  return parse_scene(fmt::format(R"(
+dt = {}
+duration = 1.0
+restitution = {}
+[[ball]]
+pos = [{}, 0.0]
+vel = [2.5, 0.0]
+radius = 0.1
+[[ball]]
+pos = [{}, 0.0]
+vel = [-2.5, 0.0]
+radius = 0.1
+)",
+                                 dt, e, -0.1 - gap / 2, 0.1 + gap / 2),
+                     "equal-head-on.toml");
+}
+
+// `count` balls of `radius` (mass 1) in a 2 m box, placed at random with speeds up to `speed` per
+// axis; restitution `e`, gravity `g` along y, `duration` at dt 0.01.
+Scene gas_in_box(double e, double g, int count, double radius, double speed, int seed, double duration) {
+  return parse_scene(fmt::format(R"(
+dt = 0.01
+duration = {}
+restitution = {}
+gravity = [0.0, {}]
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[random]
+count = {}
+radius = {}
+mass = 1.0
+pos_min = [-0.85, -0.85]
+pos_max = [0.85, 0.85]
+vel_min = [{}, {}]
+vel_max = [{}, {}]
+seed = {}
+)",
+                                 duration, e, g, count, radius, -speed, -speed, speed, speed, seed),
+                     "gas-in-box.toml");
+}
+
+// Velocity Verlet at a DEM step of t_c / 50 or less meets the contact's start and end within a
+// step, and integrates the damped oscillation to O((pi / 50)^2): the measured restitution sits
+// within 1% of the law's. Hertz's damping is fitted at the design speed, which both scenes use.
+constexpr double kRestitutionTol = 0.01;
+
+class LammpsCalibration : public ::testing::TestWithParam<Calibration> {};
+
+TEST_P(LammpsCalibration, BallWallRestitutionIsTheScenes) {
+  const auto [profile, e] = GetParam();
+  const Scene s = calibration::wall_scene(e, 5.0);  // at the wall t = 0.18 s, back by t = 0.4 s
+  const State st = run(s, profile, 40);
+  const double measured = -st.vel(0, 0) / s.initial.vel(0, 0);
+  RecordProperty("effective_restitution", fmt::format("{:.6g}", measured));
+  std::printf("lammps/%s ball-wall e = %g: measured %.6g\n", profile.c_str(), e, measured);
+  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_EQ(st.vel(0, 1), 0.0);
+}
+
+TEST_P(LammpsCalibration, BallBallRestitutionIsTheScenes) {
+  const auto [profile, e] = GetParam();
+  const Scene s = equal_head_on(e);
+  const State st = run(s, profile, 20);
+  const double measured = (st.vel(1, 0) - st.vel(0, 0)) / 5.0;
+  RecordProperty("effective_restitution", fmt::format("{:.6g}", measured));
+  std::printf("lammps/%s ball-ball e = %g: measured %.6g\n", profile.c_str(), e, measured);
+  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(st.vel(0, 0) + st.vel(1, 0), 0.0, 1e-12);  // momentum: pairwise forces, equal masses
+}
+
+INSTANTIATE_TEST_SUITE_P(Profiles, LammpsCalibration,
+                         ::testing::Values(Calibration{"hooke", 0.8}, Calibration{"hooke", 1.0},
+                                           Calibration{"hertz", 0.8}, Calibration{"hertz", 1.0}),
+                         calibration_name);
+
+// The stiffness puts the undamped design contact's deepest overlap at the target: read every DEM
+// step (dt = the DEM step), an elastic head-on contact at the design speed reaches it to within the
+// step's resolution. Velocity Verlet's discrete oscillator peaks above the continuous one by about
+// (w dt)^2 / 8 = (pi / 50)^2 / 8 = 4.9e-4 of the amplitude at dt = t_c / 50 (measured: 1.8e-4
+// hooke, 2.0e-4 hertz), so the bound is the target plus 1e-3 of it.
+TEST(LammpsAdapter, LargestOverlapIsTheTarget) {
+  for (const char* profile : {"hooke", "hertz"}) {
+    const Scene probe = equal_head_on(1.0);
+    const auto plan_dt = find_engine("lammps").create(probe, profile, {})->settings()["derived"]["dem_dt"].get<double>();
+    const Scene s = equal_head_on(1.0, plan_dt, 0.001);
+    auto e = find_engine("lammps").create(s, profile, {});
+    ASSERT_EQ(e->settings()["derived"]["substeps"], 1) << profile;
+    double deepest = 0;
+    State st;
+    for (int k = 0; k < 400; ++k) {
+      e->step(s.dt);
+      e->read(st);
+      deepest = std::max(deepest, 0.2 - (st.pos(1, 0) - st.pos(0, 0)));
+    }
+    const double target = 0.005 * 0.1;
+    std::printf("lammps/%s deepest overlap %.6g of target %.6g\n", profile, deepest, target);
+    EXPECT_LE(deepest, target * (1 + 1e-3)) << profile;
+    EXPECT_GE(deepest, target * 0.99) << profile;  // a DEM step moves the pair 0.5% of the target
+  }
+}
+
+// An elastic gas in a box keeps its energy: velocity Verlet's error over a contact of 50 steps.
+TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
+  const Scene s = gas_in_box(1.0, 0.0, 12, 0.1, 1.0, 3, 0.5);
+  for (const char* profile : {"hooke", "hertz"}) {
+    RunOptions o;
+    o.profile = profile;
+    const Result r = run_engine(s, find_engine("lammps"), o);
+    ASSERT_EQ(r.status, "ok") << r.error;
+    ASSERT_TRUE(r.metrics.energy.max_rel_drift);
+    const double drift = std::abs(r.metrics.energy.final - r.metrics.energy.initial) / r.metrics.energy.initial;
+    std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %d\n", profile,
+                drift, *r.metrics.energy.max_rel_drift, r.metrics.tunnelling_wall);
+    EXPECT_LT(drift, 1e-4) << profile;
+  }
+}
+
+TEST(LammpsAdapter, SceneBeyondTheSubStepCapIsUnsupported) {
+  const Scene s = load_scene("seed-box");
+  try {
+    find_engine("lammps").create(s, "hooke", {});
+    ADD_FAILURE() << "seed-box was accepted under the default cap";
+  } catch (const SceneUnsupported& e) {
+    EXPECT_NE(std::string(e.what()).find("DEM sub-steps per step"), std::string::npos) << e.what();
+  }
+  RunOptions o;
+  o.profile = "hooke";
+  const Result r = run_engine(s, find_engine("lammps"), o);
+  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_NE(r.error.find("above max_substeps = 5000"), std::string::npos) << r.error;
+}
+
+TEST(LammpsAdapter, BadSettingsAreInputErrors) {
+  const Scene s = equal_head_on(0.8);
+  const auto& lammps = find_engine("lammps");
+  const auto message = [&](const nlohmann::json& overrides) -> std::string {
+    try {
+      lammps.create(s, "hooke", overrides);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  EXPECT_NE(message({{"overlap", 0.01}}).find("settings.lammps.overlap: unknown setting"), std::string::npos);
+  EXPECT_NE(message({{"ranks", "two"}}).find("expected a whole number"), std::string::npos);
+  EXPECT_EQ(message({{"ranks", 0}}), "settings.lammps.ranks: must be >= 1 (1: in this process)");
+  EXPECT_NE(message({{"overlap_target", 0.0}}).find("must be above 0"), std::string::npos);
+  EXPECT_NE(message({{"hostfile", "/nonexistent"}, {"ranks", 2}}).find("is not a file"), std::string::npos);
+  EXPECT_NE(message({{"hostfile", "/etc/hostname"}}).find("used only with ranks > 1"), std::string::npos);
+  EXPECT_NE(message({{"hostfile", 3}}).find("expected a string"), std::string::npos);
+  try {
+    lammps.create(s, "x", {});
+    ADD_FAILURE() << "an unknown profile was accepted";
+  } catch (const InputError& e) {
+    EXPECT_STREQ(e.what(), "lammps: unknown profile 'x' (known: hooke, hertz)");
+  }
+}
+
+// 24 balls in a box with gravity, 20 steps read every 5: 2 ranks under mpirun against the library
+// in this process, the same input. Domain decomposition changes which rank sums a contact's force,
+// never the pairwise forces, so the runs agree to round-off at most: 1e-9 relative on energy and
+// momentum, the same counts (measured: bit-identical states, equal checksums).
+Scene small_box() { return gas_in_box(0.9, -2.0, 24, 0.08, 0.5, 5, 0.2); }
+
+TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
+  const Scene s = small_box();
+  RunOptions o;
+  o.profile = "hooke";
+  o.overrides = {{"sample_every", 5}};
+  const Result one = run_engine(s, find_engine("lammps"), o);
+  o.overrides["ranks"] = 2;
+  const Result two = run_engine(s, find_engine("lammps"), o);
+  ASSERT_EQ(one.status, "ok") << one.error;
+  ASSERT_EQ(two.status, "ok") << two.error;
+  EXPECT_EQ(two.metrics.samples, 5);  // steps 0, 5, 10, 15, 20
+  EXPECT_EQ(two.metrics_config.sample_every, 5);
+  EXPECT_NE(std::find_if(two.skipped.begin(), two.skipped.end(),
+                         [](const std::string& note) { return note.rfind(kStrideNote, 0) == 0; }),
+            two.skipped.end());
+  const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); };
+  EXPECT_TRUE(near(one.metrics.energy.final, two.metrics.energy.final))
+      << one.metrics.energy.final << " vs " << two.metrics.energy.final;
+  EXPECT_TRUE(near(one.metrics.energy.max_abs_drift, two.metrics.energy.max_abs_drift));
+  EXPECT_TRUE(near(one.metrics.momentum.final.x(), two.metrics.momentum.final.x()));
+  EXPECT_TRUE(near(one.metrics.momentum.final.y(), two.metrics.momentum.final.y()));
+  EXPECT_TRUE(near(one.metrics.penetration_max, two.metrics.penetration_max));
+  EXPECT_EQ(one.metrics.tunnelling_wall + one.metrics.tunnelling_pair, two.metrics.tunnelling_wall + two.metrics.tunnelling_pair);
+  EXPECT_EQ(one.metrics.sticking_wall + one.metrics.sticking_pair, two.metrics.sticking_wall + two.metrics.sticking_pair);
+  std::printf("lammps 2 ranks vs 1: energy %.17g vs %.17g, checksums %s\n", two.metrics.energy.final,
+              one.metrics.energy.final, one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
+}
+
+TEST(LammpsAdapter, IsDeterministic) {
+  RunOptions o;
+  o.profile = "hertz";  // the one with per-contact history
+  const Result a = run_engine(small_box(), find_engine("lammps"), o), b = run_engine(small_box(), find_engine("lammps"), o);
+  ASSERT_EQ(a.status, "ok") << a.error;
+  EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
+}
+
+// mpirun that cannot run its program ends the run as failed, with mpirun's own words.
+TEST(LammpsAdapter, AFailedMpirunIsAFailedRunWithItsStderr) {
+  RunOptions o;
+  o.profile = "hooke";
+  o.overrides = {{"ranks", 2}, {"lmp", "false"}};
+  const Result r = run_engine(small_box(), find_engine("lammps"), o);
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_NE(r.error.find("mpirun -np 2"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("exited with status"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("its stderr:"), std::string::npos) << r.error;
+}
+
+}  // namespace
+}  // namespace ballbench
+
+#endif  // BALLBENCH_HAS_LAMMPS
