@@ -13,6 +13,7 @@
 #include <fstream>
 #include <set>
 
+#include "registry.h"
 #include "result.h"
 #include "viewer_page.h"
 
@@ -20,6 +21,16 @@ namespace ballbench {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The engines these reports compare: every built-in engine whose runs are cheap. An engine with costly runs
+// (LAMMPS starts Open MPI and sub-steps thousands of times in every run; a process engine starts
+// its process) has tests of its own and would make each of these reports minutes long.
+std::string cheap_engines() {
+  std::string list;
+  for (const auto& name : engine_names())
+    if (is_builtin_engine(name) && !find_engine(name).info.costly_runs) list += (list.empty() ? "" : ",") + name;
+  return list;
+}
 
 std::string slurp(const fs::path& path) {
   std::ifstream in(path);
@@ -58,7 +69,9 @@ radius = 0.1
   void TearDown() override { fs::remove_all(root_); }
 
   // Runs `ballbench report --out OUT ARGS`; returns the exit status, stderr in err_.
-  int report(const std::string& args = "") { return command("report --no-bench --out " + out().string() + " " + args); }
+  int report(const std::string& args = "") {
+    return command("report --no-bench --engine " + cheap_engines() + " --out " + out().string() + " " + args);
+  }
   // Runs `ballbench ARGS` on the stand-in scenes; returns the exit status, stderr in err_.
   // BALLBENCH_ENGINES empty: the built-in engines only, as each run of an engine in another process
   // starts that process (test_process_engine.cpp covers those).
@@ -178,7 +191,7 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
 TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   const fs::path one = root_ / "shard1", two = root_ / "shard2", merged = root_ / "merged";
   for (const auto& [dir, which] : {std::pair{one, "1/2"}, std::pair{two, "2/2"}}) {
-    ASSERT_EQ(command("report --no-bench --seeds 2 --out " + dir.string() + " --shard " + which), 0) << err_;
+    ASSERT_EQ(command("report --no-bench --engine " + cheap_engines() + " --seeds 2 --out " + dir.string() + " --shard " + which), 0) << err_;
     EXPECT_FALSE(fs::exists(dir / "REPORT.md")) << which;
   }
   EXPECT_EQ(command("merge --out " + merged.string() + " " + one.string()), 2);

@@ -50,6 +50,7 @@ ReportShard read_report_shard(const std::string& folder) {
     throw InputError(fmt::format("merge: {}: not a report shard (its run.json has no shard; it is a whole report)", path));
   s.plan = {{"suite", s.context.value("suite", "")},
             {"seeds", s.context.value("seeds", 0)},
+            {"engine_list", s.context.value("engine_list", "all")},
             {"parts", s.context.at("parts")},
             {"engines", s.context.value("engines", nlohmann::json::object())}};
   s.index = s.context.at("shard").at("index").get<int>();
@@ -70,8 +71,8 @@ void merge_reports(const MergeArgs& a) {
   for (size_t k = 0; k < shards.size(); ++k) {
     const ReportShard& s = shards[k];
     if (s.plan != first.plan || s.count != first.count)
-      throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, placements, parts, engine "
-                                   "versions or shard count differ)",
+      throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, placements, engines, "
+                                   "parts, engine versions or shard count differ)",
                                    a.shards[k], a.shards.front()));
     if (s.index < 1 || s.index > s.count)
       throw InputError(fmt::format("merge: {}: shard {}/{} is not a shard", a.shards[k], s.index, s.count));

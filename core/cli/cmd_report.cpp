@@ -100,6 +100,7 @@ struct ReportArgs {
   std::string bench_binary;  // default: beside this executable's build tree
   std::string shard;         // "I/N": run only that share of the parts, render nothing
   int seeds = 0;             // placements of each seed scene; 0: the suite's
+  std::string engines = "all";  // the engines compared (parse_engine_list)
 };
 
 // The report's parts in run order, each a results file (or, for "bench", the step and harness
@@ -227,6 +228,7 @@ void report(const ReportArgs& a) {
   for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
   Suite suite = a.full ? full_suite() : quick_suite();
+  const auto engines = parse_engine_list(a.engines);  // a bad name is an error before anything runs
   if (a.seeds > 0) suite.seeds = a.seeds;
   const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
   const std::vector<std::string> parts = report_parts(suite, !a.no_bench);
@@ -250,10 +252,10 @@ void report(const ReportArgs& a) {
   };
   if (!a.render_only) {
     fs::create_directories(results_dir);
-    const auto engines = parse_engine_list("all");
-    // The quick suite's sweeps and frontiers leave out engines in other processes: each of their
-    // points is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s),
-    // hundreds of times over; --full includes them. Their scene tables and benchmarks are in both.
+    // The quick suite's sweeps and frontiers leave out engines whose runs are costly: each of their
+    // points is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s) or
+    // Open MPI and thousands of DEM sub-steps (LAMMPS), hundreds of times over; --full includes
+    // them. Their scene tables, calibration and benchmarks are in both.
     std::vector<const EngineEntry*> swept = engines;
     if (!a.full) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
     Isolation isolation;
@@ -344,6 +346,7 @@ void report(const ReportArgs& a) {
     nlohmann::json context = run_context();
     context["suite"] = a.full ? "full" : "quick";
     context["seeds"] = suite.seeds;
+    context["engine_list"] = a.engines;
     context["scenes"] = suite.scenes;  // the report's order
     context["parts"] = parts;
     context["engines"] = nlohmann::json::object();  // name -> version: shards of one report agree
@@ -386,6 +389,10 @@ void add_report(CLI::App& app) {
                   "harness benchmark is taken from the same folder")
       ->excludes(render_only)
       ->excludes(no_bench);
+  cmd->add_option("--engine", a->engines,
+                  "the engines compared: comma-separated names, or all (the default); the benchmarks run every "
+                  "engine of their binary")
+      ->excludes(render_only);
   cmd->add_option("--seeds", a->seeds,
                   "random placements of each scene with random placement, for its ensemble table (default: 3 quick, "
                   "10 full)")
