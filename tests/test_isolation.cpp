@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "isolated_run.h"
 #include "registry.h"
 #include "run_engines.h"
@@ -250,6 +251,30 @@ TEST(DivergingRun, OneDivergingEngineLeavesTheOthersRunning) {
 TEST(Isolation, SignalDescriptionsNameTheSignal) {
   EXPECT_EQ(signal_description(SIGSEGV).rfind("SIGSEGV (", 0), 0u) << signal_description(SIGSEGV);
   EXPECT_EQ(signal_description(SIGKILL).rfind("SIGKILL (", 0), 0u);
+}
+
+// A signal between runs (after one ended, before the next began) still leaves a row marked
+// "interrupted", for the run that was next: a results file always says it was cut short. Run in a
+// child (a death test), as the interrupt flag, once raised, stays raised for the process.
+TEST(Isolation, AnInterruptBetweenRunsMarksTheNextRun) {
+  const std::vector<const EngineEntry*> engines{&find_engine("home-seed"), &find_engine("home")};
+  EXPECT_EXIT(
+      {
+        const Scene& scene = box();  // placed first: placing balls is itself cut short by the flag
+        install_interrupt_handlers();
+        std::raise(SIGINT);
+        auto results = cli::run_all(scene, engines, "", steps(5), true, {false, 60});
+        bool ok = results.size() == 1 && results[0].engine == "home-seed" && results[0].status == "interrupted" &&
+                  results[0].error.find("before this run started") != std::string::npos;
+        // Between placements: the next placement's first run is marked, without drawing it.
+        std::vector<Result> more{results[0]};
+        more[0].status = "ok";
+        cli::run_further_placements(more, scene, 3, [](int) -> Scene { std::abort(); }, engines, "", steps(5), true,
+                                    {false, 60});
+        ok = ok && more.size() == 2 && more[1].status == "interrupted" && more[1].seed_offset == 1;
+        std::exit(ok ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
 }
 
 }  // namespace

@@ -281,10 +281,8 @@ void report(const ReportArgs& a) {
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of
       // offset 0).
       options.frames = 0;
-      for (int k = 1; k < seeds && !interrupt_signal(); ++k) {
-        auto more = run_all(load_scene(name, k), engines, "all", options, false, isolation);
-        runs.insert(runs.end(), more.begin(), more.end());
-      }
+      run_further_placements(runs, scene, seeds, [&](int k) { return load_scene(name, k); }, engines, "all", options,
+                             false, isolation);
       write_results_file(path, runs);
       stop_if_interrupted();
       fmt::print(stderr, "ran {}\n", name);

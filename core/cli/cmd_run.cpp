@@ -156,12 +156,13 @@ void run(const RunArgs& a) {
     throw InputError("--trajectory with --seeds: give one placement (a trajectory holds one run per engine and profile)");
   std::vector<Result> results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
   // Further placements: the same scene with its random seeds offset by 1 .. K-1.
-  for (int k = 1; k < a.seeds && !interrupt_signal(); ++k) {
-    Scene placed = load_scene(a.scene, k);
-    placed.dt = scene.dt, placed.duration = scene.duration;
-    auto more = run_all(placed, engines, a.profile, options, a.quiet, a.isolation, "");
-    results.insert(results.end(), more.begin(), more.end());
-  }
+  run_further_placements(results, scene, a.seeds,
+                         [&](int k) {
+                           Scene placed = load_scene(a.scene, k);
+                           placed.dt = scene.dt, placed.duration = scene.duration;
+                           return placed;
+                         },
+                         engines, a.profile, options, a.quiet, a.isolation);
   std::string ours;  // our solver's first run, if it ran: what the others are compared with
   for (const Result& r : results)
     if (ours.empty() && find_engine(r.engine).info.role == EngineRole::ours) ours = run_label(r);

@@ -20,6 +20,14 @@
 namespace ballbench::cli {
 namespace {
 
+// The row of a run an interrupt kept from starting.
+Result not_started(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+  Result r = result_header(scene, entry, options);
+  r.status = "interrupted";
+  r.error = fmt::format("interrupted by {} before this run started", interrupt_name());
+  return r;
+}
+
 std::string opt_drift(const Result& r) {
   return r.metrics.energy.max_rel_drift ? fmt::format("{:.3g}", *r.metrics.energy.max_rel_drift) : "n/a";
 }
@@ -192,13 +200,19 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
     else trajectory.emplace(trajectory_path);
   }
   std::vector<Result> results;
+  bool stopped = false;
   for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
-      if (interrupt_signal()) break;  // asked to stop: the rows so far are the result
+      if (stopped) break;
       RunOptions options = base;
+      options.profile = p;
+      if (interrupt_signal()) {  // asked to stop: the rows so far, and this one marked, are the result
+        results.push_back(not_started(scene, *e, options));
+        stopped = true;
+        break;
+      }
       Progress progress(fmt::format("{} ({}) on {}", e->info.name, p, scene.name));
       if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
-      options.profile = p;
       options.overrides = base.overrides.value(e->info.name, nlohmann::json::object());
       if (!isolation.enabled) {
         if (trajectory) options.trajectory = &*trajectory;
@@ -212,6 +226,25 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
   if (trajectory) trajectory->close();
   if (parts) parts->finish();
   return results;
+}
+
+void run_further_placements(std::vector<Result>& results, const Scene& first, int seeds,
+                            const std::function<Scene(int)>& place, const std::vector<const EngineEntry*>& engines,
+                            const std::string& profile, const RunOptions& base, bool quiet,
+                            const Isolation& isolation) {
+  for (int k = 1; k < seeds && !engines.empty(); ++k) {
+    if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status == "interrupted"; })) return;
+    if (interrupt_signal()) {  // placement k's first run is the one that was next
+      RunOptions options = base;
+      options.profile = profiles_for(*engines.front(), profile).front();
+      Result r = not_started(first, *engines.front(), options);
+      r.seed_offset = k;
+      results.push_back(r);
+      return;
+    }
+    auto more = run_all(place(k), engines, profile, base, quiet, isolation);
+    results.insert(results.end(), more.begin(), more.end());
+  }
 }
 
 }  // namespace ballbench::cli

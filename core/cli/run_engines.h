@@ -1,6 +1,7 @@
 #pragma once
 // Running several engines (and their profiles) on one scene, and printing the result table:
 // shared by the subcommands.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -36,9 +37,20 @@ struct Isolation {
 // Every engine x profile on `scene`; `base.overrides` holds settings per engine name. If
 // `trajectory_path` is not empty, every run's trajectory goes to that CSV (one header line, runs
 // in order; a run that crashed or timed out has no rows). `base.trajectory` must be null.
+// Interrupted (SIGINT, SIGTERM), it ends with the run in progress marked "interrupted", or, if the
+// signal came between runs, a row marked so for the run that was next.
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation = {}, const std::string& trajectory_path = "");
+
+// Placements 1 .. seeds - 1 of a scene (`place(k)` draws placement k) appended to `results`, which
+// holds the runs of placement 0 (`first`). An interrupt ends them with a row marked "interrupted",
+// as in run_all; one that comes between placements marks the next placement's first run, before
+// drawing it (drawing is not a run, and would be lost).
+void run_further_placements(std::vector<Result>& results, const Scene& first, int seeds,
+                            const std::function<Scene(int)>& place, const std::vector<const EngineEntry*>& engines,
+                            const std::string& profile, const RunOptions& base, bool quiet,
+                            const Isolation& isolation);
 
 // The command line as typed (main stores it), for the record of what produced a result.
 void set_command_line(int argc, char** argv);
