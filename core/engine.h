@@ -52,10 +52,16 @@ class Engine {
 
 // Thrown by an engine's factory for a scene it cannot run faithfully that its capabilities cannot
 // express (say, one needing more sub-steps than its cap): the run's status is "unsupported" with
-// this message, as for a capability the engine lacks.
+// this message, as for a capability the engine lacks. `settings`: what the engine would have run
+// with (recorded in the result, as for a run).
 class SceneUnsupported : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit SceneUnsupported(const std::string& why, nlohmann::json settings = nlohmann::json::object())
+      : std::runtime_error(why), settings_(std::move(settings)) {}
+  const nlohmann::json& settings() const { return settings_; }
+
+ private:
+  nlohmann::json settings_;
 };
 
 // An accuracy knob `ballbench sweep` varies: a settings key and the values it tries, one at a time,

@@ -82,6 +82,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   } catch (const SceneUnsupported& e) {  // a limit only the engine can judge: reported as a capability refusal
     r.status = "unsupported";
     r.error = e.what();
+    r.settings = e.settings();
     return r;
   } catch (const std::exception& e) {
     r.status = "failed";

@@ -506,8 +506,10 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     put("\n");
     for (const Result* r : rows) {
       put("| {} {} | {} |", r->engine, r->engine_version, r->profile);
+      // A run that made no step (refused, or crashed at its start) has no figures: "-", not zeros.
+      const bool ran = r->steps_done > 0;
       for (const auto& c : cols) {
-        std::string cell = c.text(*r);
+        std::string cell = ran || &c == &cols.front() ? c.text(*r) : "-";
         if (c.value && r->status == "ok") {
           double best = HUGE_VAL;
           for (const Result* o : rows)

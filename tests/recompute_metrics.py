@@ -5,7 +5,8 @@ them with the JSON results. Standard library only (tomllib reads the scene file)
 usage: recompute_metrics.py SCENE.toml TRAJECTORY.csv RESULTS.json
 
 It rebuilds the scene's radii and masses (explicit [[ball]] only, or a results file whose scene
-has random balls: then radii and masses must be uniform and are taken from [random]), follows the
+has random or lattice balls: then radii and masses are taken from each [random] or [lattice]
+group), follows the
 glossary's definitions (reports/REPORT.md) and exits 1 naming every metric that disagrees.
 """
 import csv
@@ -21,10 +22,11 @@ def scene_balls(scene):
     for b in scene.get("ball", []):
         radii.append(b["radius"])
         masses.append(b.get("mass", 1.0))
-    rnd = scene.get("random")
-    for group in ([rnd] if isinstance(rnd, dict) else rnd or []):
-        radii += [group["radius"]] * group["count"]
-        masses += [group.get("mass", 1.0)] * group["count"]
+    for key in ("random", "lattice"):
+        groups = scene.get(key)
+        for group in ([groups] if isinstance(groups, dict) else groups or []):
+            radii += [group["radius"]] * group["count"]
+            masses += [group.get("mass", 1.0)] * group["count"]
     return radii, masses
 
 

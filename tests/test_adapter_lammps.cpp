@@ -152,6 +152,25 @@ TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
   }
 }
 
+// Springs set for the heaviest balls are met by the lightest in a shorter contact, and, as LAMMPS
+// damps per unit of reduced mass, with more bounce: the DEM step resolves the shorter one.
+TEST(LammpsAdapter, TheLightestBallsContactSetsTheStepWhereMassesDiffer) {
+  Scene s = equal_head_on(0.8);
+  s.mass(1) = 100;  // heaviest 100, lightest 1
+  for (const lammps::ContactLaw law : {lammps::ContactLaw::hooke, lammps::ContactLaw::hertz}) {
+    const lammps::ContactModel m = lammps::derive_contact_model(s, {law});
+    EXPECT_LT(m.light_pair.contact_time, m.pair.contact_time) << lammps::law_name(law);
+    EXPECT_EQ(m.contact_time, std::min(m.light_pair.contact_time, m.light_wall.contact_time)) << lammps::law_name(law);
+    EXPECT_GT(m.e_light_pair, 0.8) << lammps::law_name(law);
+    if (law == lammps::ContactLaw::hooke)  // t_c as sqrt(meff), to first order in the damping
+      EXPECT_LT(m.light_pair.contact_time, 0.15 * m.pair.contact_time);
+  }
+  // Equal masses: the same contact as designed.
+  const lammps::ContactModel equal = lammps::derive_contact_model(equal_head_on(0.8), {});
+  EXPECT_DOUBLE_EQ(equal.light_pair.contact_time, equal.pair.contact_time);
+  EXPECT_NEAR(equal.e_light_pair, 0.8, 1e-12);
+}
+
 TEST(LammpsAdapter, SceneBeyondTheSubStepCapIsUnsupported) {
   const Scene s = load_scene("seed-box");
   try {
@@ -165,6 +184,9 @@ TEST(LammpsAdapter, SceneBeyondTheSubStepCapIsUnsupported) {
   const Result r = run_engine(s, find_engine("lammps"), o);
   EXPECT_EQ(r.status, "unsupported");
   EXPECT_NE(r.error.find("above max_substeps = 5000"), std::string::npos) << r.error;
+  // What it would have run with is recorded, as for a run: the settings and the sub-steps it needs.
+  EXPECT_EQ(r.settings.value("max_substeps", 0), 5000) << r.settings.dump();
+  EXPECT_EQ(r.settings["derived"].value("substeps", 0), 7944) << r.settings.dump();
 }
 
 TEST(LammpsAdapter, BadSettingsAreInputErrors) {

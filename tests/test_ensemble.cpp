@@ -39,8 +39,10 @@ TEST(Ensemble, DifferencesOnTheSamePlacementsAreJudgedPaired) {
     runs.push_back(run_of("slow", k, base + 10));
     runs.push_back(run_of("same", k, base + (k % 2 ? 1 : -1)));
   }
-  runs.push_back(run_of("broken", 0, 1));
-  runs.back().status = "failed";
+  for (int k = 0; k < 2; ++k) {  // failed on two placements: one row, with no runs
+    runs.push_back(run_of("broken", k, 1));
+    runs.back().status = "failed";
+  }
   const auto rows = summarise_ensemble(runs, "ours");
   const auto& names = ensemble_metrics();
   const size_t ns = std::find_if(names.begin(), names.end(), [](const EnsembleMetric& m) { return m.name == "ns/ball-step"; }) -

@@ -43,6 +43,27 @@ ContactDesign hertz_contact(double meff, double radius, double approach, double 
   return c;
 }
 
+// The contact `designed` makes (its kn and gamma_n, radius and approach speed) for a ball of
+// another reduced mass `meff`: its duration, and its restitution in `e`. Hooke: w0 = sqrt(kn / m),
+// zeta = gn / (2 w0). Hertz: d* from m v^2 / 2 = (2/5) kn sqrt(R) d*^(5/2), then g as above.
+ContactDesign same_springs(const ContactDesign& designed, ContactLaw law, double meff, double* e) {
+  ContactDesign c = designed;
+  c.meff = meff;
+  if (law == ContactLaw::hooke) {
+    const double w0 = std::sqrt(c.kn / meff), zeta = c.gamma_n / (2 * w0);
+    c.contact_time = zeta < 1 ? kPi / (w0 * std::sqrt(1 - zeta * zeta)) : kPi / w0;
+    *e = zeta < 1 ? std::exp(-zeta * kPi / std::sqrt(1 - zeta * zeta)) : 0.0;
+  } else {
+    const double peak =
+        std::pow(5 * meff * c.approach * c.approach / (4 * c.kn * std::sqrt(c.radius)), 0.4);  // d*
+    const double g = c.gamma_n * std::pow(peak, 1.5) * std::sqrt(c.radius) / c.approach;
+    double duration = 0;
+    *e = hertz_restitution(g, &duration);
+    c.contact_time = duration * peak / c.approach;
+  }
+  return c;
+}
+
 // The g that gives restitution e, by bisection: e falls monotonically from 1 at g = 0.
 double hertz_damping_for(double e) {
   if (e >= 1) return 0;
@@ -113,7 +134,7 @@ ContactModel derive_contact_model(const Scene& scene, const ContactInputs& in) {
   ContactModel m;
   m.law = in.law;
   m.ball_speed = in.impact_speed > 0 ? in.impact_speed : expected_ball_speed(scene);
-  const double r_min = scene.radius.minCoeff(), m_max = scene.mass.maxCoeff();
+  const double r_min = scene.radius.minCoeff(), m_max = scene.mass.maxCoeff(), m_min = scene.mass.minCoeff();
   m.overlap = in.overlap_target * r_min;
   const double e = scene.restitution;
   // The worst cases: two of the heaviest balls head-on, each at the largest speed (reduced mass
@@ -128,7 +149,12 @@ ContactModel derive_contact_model(const Scene& scene, const ContactInputs& in) {
     m.pair = hertz_contact(m_max / 2, r_min / 2, 2 * m.ball_speed, m.overlap, m.hertz_damping);
     m.wall = hertz_contact(m_max, r_min, m.ball_speed, m.overlap, m.hertz_damping);
   }
-  m.contact_time = std::min(m.pair.contact_time, m.wall.contact_time);
+  // The springs are set for the heaviest balls; the lightest meet them in a shorter contact, which
+  // the DEM step must resolve too (two light balls: m_min / 2; a light ball on a wall: m_min).
+  m.light_pair = same_springs(m.pair, in.law, m_min / 2, &m.e_light_pair);
+  m.light_wall = same_springs(m.wall, in.law, m_min, &m.e_light_wall);
+  m.contact_time = std::min({m.pair.contact_time, m.wall.contact_time, m.light_pair.contact_time,
+                             m.light_wall.contact_time});
   m.dem_dt_max = m.contact_time / in.contact_steps;
   return m;
 }

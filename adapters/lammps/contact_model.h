@@ -37,8 +37,12 @@ struct ContactModel {
   double ball_speed = 0;   // the largest ball speed expected (m/s)
   double overlap = 0;      // the target overlap (m)
   ContactDesign pair, wall;
-  double contact_time = 0; // the shorter of the two (s)
+  double contact_time = 0; // the shortest contact of the scene, lightest balls included (s)
   double dem_dt_max = 0;   // contact_time / contact_steps (s)
+  // The same springs met by the lightest balls (where the masses differ): shorter, and, as LAMMPS
+  // damps per unit of reduced mass, with another restitution (e_light_pair, e_light_wall).
+  ContactDesign light_pair, light_wall;
+  double e_light_pair = 0, e_light_wall = 0;
   // Hertz only: the dimensionless damping g = gamma_n d*^(3/2) sqrt(R) / v the bisection found
   // (both contacts share it), and the restitution of one contact integrated with it.
   double hertz_damping = 0, hertz_restitution = 0;

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "engine.h"
+#include "lammps/settings_record.h"
 
 namespace ballbench::lammps {
 
@@ -19,16 +21,16 @@ Plan make_plan(const Scene& scene, const LammpsSettings& s) {
   Plan p;
   p.model = derive_contact_model(scene, {s.law, s.overlap_target, s.impact_speed, s.contact_steps});
   const long n = substeps_for(scene.dt, p.model);
+  p.substeps = static_cast<int>(std::min<long>(n, std::numeric_limits<int>::max()));
+  p.dem_dt = scene.dt / static_cast<double>(n);
+  p.skin = s.skin >= 0 ? s.skin : 0.5 * scene.radius.minCoeff();
   if (n > s.max_substeps)
     throw SceneUnsupported(fmt::format(
         "lammps ({}): scene '{}' needs {} DEM sub-steps per step (dt {} s over a DEM step of at most {:.3g} s: the "
         "contact time {:.3g} s / {}, stiffness for a ball speed of {:.3g} m/s and an overlap of {:g}% of the smallest "
         "radius), above max_substeps = {} (--set lammps.max_substeps={} runs it)",
         law_name(s.law), scene.name, n, scene.dt, p.model.dem_dt_max, p.model.contact_time, s.contact_steps,
-        p.model.ball_speed, s.overlap_target * 100, s.max_substeps, n));
-  p.substeps = static_cast<int>(n);
-  p.dem_dt = scene.dt / static_cast<double>(n);
-  p.skin = s.skin >= 0 ? s.skin : 0.5 * scene.radius.minCoeff();
+        p.model.ball_speed, s.overlap_target * 100, s.max_substeps, n), settings_record(scene, s, p));
   return p;
 }
 

@@ -20,6 +20,7 @@ nlohmann::json settings_record(const Scene& scene, const LammpsSettings& s, cons
                             {"pair", design(m.pair)},
                             {"wall", design(m.wall)},
                             {"contact_time", m.contact_time},
+                            {"restitution_lightest", {{"pair", m.e_light_pair}, {"wall", m.e_light_wall}}},
                             {"dem_dt", plan.dem_dt},
                             {"substeps", plan.substeps},
                             {"skin", plan.skin},

@@ -37,8 +37,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What a report runs. `quick` is what scripts/report runs and fits in 3 minutes on 2 cores; `full`
-// is the complete evidence (tens of minutes).
+// What a report runs. `quick` is what scripts/report runs (about 11 minutes on 2 cores, 9 of them
+// the benchmarks); `full` is the complete evidence (tens of minutes).
 struct Suite {
   std::vector<std::string> scenes;        // a comparison table each, every engine and profile
   std::vector<std::string> sweep_scenes;  // work against precision
@@ -371,7 +371,7 @@ void add_report(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "report", "run the standard comparison (tables, sweeps, stability frontiers, scaling) and write REPORT.md");
   cmd->add_option("--out", a->out, "folder for REPORT.md, figures/ and results/ (default: reports)");
-  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite, within 3 minutes on 2 cores (the default)");
+  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite, about 11 minutes on 2 cores, 2 with --no-bench (the default)");
   cmd->add_flag("--full", a->full, "the complete evidence: more scenes, sweeps and frontiers, every benchmark "
                                    "(tens of minutes)")
       ->excludes(quick);
