@@ -51,14 +51,19 @@ void SettingsReader::get(const char* key, bool& value) {
   }
 }
 
-void SettingsReader::get(const char* key, std::string& value, std::initializer_list<const char*> choices) {
+void SettingsReader::get(const char* key, std::string& value) {
   if (const auto* v = find(key)) {
     if (!v->is_string()) fail(key, fmt::format("expected a string, got {}", v->dump()));
-    const std::string s = v->get<std::string>();
-    if (std::none_of(choices.begin(), choices.end(), [&](const char* c) { return s == c; }))
-      fail(key, fmt::format("'{}' is not one of: {}", s, fmt::join(choices, ", ")));
-    value = s;
+    value = v->get<std::string>();
   }
+}
+
+void SettingsReader::get(const char* key, std::string& value, std::initializer_list<const char*> choices) {
+  std::string s = value;
+  get(key, s);
+  if (std::none_of(choices.begin(), choices.end(), [&](const char* c) { return s == c; }))
+    fail(key, fmt::format("'{}' is not one of: {}", s, fmt::join(choices, ", ")));
+  value = s;
 }
 
 void SettingsReader::finish() const {

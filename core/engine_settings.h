@@ -18,6 +18,8 @@ class SettingsReader {
   void get(const char* key, bool& value);
   // A string that must be one of `choices`.
   void get(const char* key, std::string& value, std::initializer_list<const char*> choices);
+  // Any string (a path, a command).
+  void get(const char* key, std::string& value);
 
   // Throws for any key that no get() consumed.
   void finish() const;

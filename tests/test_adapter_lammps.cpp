@@ -200,7 +200,10 @@ TEST(LammpsAdapter, BadSettingsAreInputErrors) {
     }
     return "(accepted)";
   };
-  EXPECT_NE(message({{"overlap", 0.01}}).find("settings.lammps.overlap: unknown setting"), std::string::npos);
+  const std::string unknown = message({{"overlap", 0.01}});
+  EXPECT_NE(unknown.find("settings.lammps.overlap: unknown setting"), std::string::npos) << unknown;
+  for (const char* key : {"ranks", "hostfile", "mpirun", "lmp", "workdir"})  // every key, paths included
+    EXPECT_NE(unknown.find(key), std::string::npos) << key << " missing from: " << unknown;
   EXPECT_NE(message({{"ranks", "two"}}).find("expected a whole number"), std::string::npos);
   EXPECT_EQ(message({{"ranks", 0}}), "settings.lammps.ranks: must be >= 1 (1: in this process)");
   EXPECT_NE(message({{"overlap_target", 0.0}}).find("must be above 0"), std::string::npos);

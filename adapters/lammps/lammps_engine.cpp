@@ -25,16 +25,6 @@ std::string version_string() {
   return fmt::format("{} {} {}", v % 100, months[month - 1], v / 10000);
 }
 
-// A free-text setting (a path or a command), taken out of `overrides` before SettingsReader reads
-// the rest: its string reader takes a fixed set of choices.
-void take_text(nlohmann::json& overrides, const char* key, std::string& value) {
-  const auto it = overrides.find(key);
-  if (it == overrides.end()) return;
-  if (!it->is_string()) throw InputError(fmt::format("settings.lammps.{}: expected a string, got {}", key, it->dump()));
-  value = it->get<std::string>();
-  overrides.erase(it);
-}
-
 void validate(const LammpsSettings& s) {
   if (!(s.overlap_target > 0 && s.overlap_target <= 0.5))
     throw InputError("settings.lammps.overlap_target: must be above 0 and at most 0.5 (a fraction of the radius)");
@@ -78,12 +68,7 @@ EngineEntry lammps_engine() {
                       {"overlap_target", nlohmann::json::array({0.02, 0.005, 0.001})}};
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             LammpsSettings s = lammps_profile(profile);
-            nlohmann::json rest = overrides.is_null() ? nlohmann::json::object() : overrides;
-            if (rest.is_object())
-              for (auto [key, value] : {std::pair{"hostfile", &s.hostfile}, {"mpirun", &s.mpirun}, {"lmp", &s.lmp},
-                                        {"workdir", &s.workdir}})
-                take_text(rest, key, *value);
-            SettingsReader r("lammps", rest);
+            SettingsReader r("lammps", overrides);
             r.get("overlap_target", s.overlap_target);
             r.get("impact_speed", s.impact_speed);
             r.get("contact_steps", s.contact_steps);
@@ -91,6 +76,9 @@ EngineEntry lammps_engine() {
             r.get("skin", s.skin);
             r.get("ranks", s.ranks);
             r.get("sample_every", s.sample_every);
+            for (auto [key, value] : {std::pair{"hostfile", &s.hostfile}, {"mpirun", &s.mpirun}, {"lmp", &s.lmp},
+                                      {"workdir", &s.workdir}})
+              r.get(key, *value);
             r.finish();
             validate(s);
             const lammps::Plan plan = lammps::make_plan(scene, s);
