@@ -73,7 +73,8 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       if (auto row = floor_row(b, parts)) out.floor.push_back(std::move(*row));
       continue;
     }
-    if (parts.size() < 5 || (parts[0] != "step" && parts[0] != "pour")) continue;  // then options, e.g. min_time:0.200
+    if (parts.size() < 5 || (parts[0] != "step" && parts[0] != "pour" && parts[0] != "pipe"))
+      continue;  // then options, e.g. min_time:0.200
     BenchRow row;
     row.window = parts[0];
     row.engine = parts[1], row.profile = parts[2], row.scene = parts[3];
@@ -94,8 +95,9 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       optional("engine_bytes_per_ball", row.engine_bytes_per_ball);
       optional("settle_steps", row.settle_steps);
       optional("start_rms_speed", row.start_rms_speed);
+      optional("engine_process_ns_per_ball_step", row.engine_process_ns_per_ball_step);
     }
-    (row.window == "pour" ? out.pour : out.rows).push_back(std::move(row));
+    (row.window == "pour" ? out.pour : row.window == "pipe" ? out.pipe : out.rows).push_back(std::move(row));
   }
   return out;
 }

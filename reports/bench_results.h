@@ -11,7 +11,8 @@
 namespace ballbench {
 
 struct BenchRow {
-  std::string window = "step";         // "step" (a few steps after warm-up) or "pour" (the first 100 steps)
+  std::string window = "step";         // "step" (a few steps after warm-up), "pour" (the first 100 steps) or
+                                       // "pipe" (the process protocol alone: an engine that moves nothing)
   std::string engine, profile, scene;  // from the benchmark name WINDOW/ENGINE/PROFILE/SCENE/N
   long n = 0;
   double ns_per_ball_step = 0;         // the benchmark's counter
@@ -20,6 +21,7 @@ struct BenchRow {
   std::optional<double> engine_bytes_per_ball;    // resident growth while the engine was built and run
   std::optional<double> settle_steps;             // settled pile: steps before the timed ones
   std::optional<double> start_rms_speed;          // settled pile: RMS speed when the timed steps began (m/s)
+  std::optional<double> engine_process_ns_per_ball_step;  // an engine in another process: its own step alone
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 
@@ -51,11 +53,12 @@ struct BenchResults {
   nlohmann::json context;              // Google Benchmark's context: host, CPU, library versions
   std::vector<BenchRow> rows;          // step/ rows in the file's order; aggregates (mean, median) left out
   std::vector<BenchRow> pour;          // pour/ rows (window "pour"), apart: they are not scaling points
+  std::vector<BenchRow> pipe;          // pipe/ rows: the process protocol's own cost per step
   std::vector<HarnessRow> harness;     // harness/ rows
   std::vector<FloorRow> floor;         // floor/ rows
 };
 
-// Rows whose names do not start step/ or pour/ENGINE/PROFILE/SCENE/N or
+// Rows whose names do not start step/, pour/ or pipe/ENGINE/PROFILE/SCENE/N or
 // harness/ENGINE/SCENE/N/sample_every:K or floor/ENGINE/SCENE/N (other benchmarks in the same file) are skipped. Throws
 // InputError naming the file if it is not Google Benchmark JSON.
 BenchResults read_bench_file(const std::string& path);

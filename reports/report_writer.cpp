@@ -206,6 +206,31 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
       "at a level.\n\n");
 }
 
+// Engines in another process (adapters/process/): what is their step and what is the pipe.
+void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
+  std::vector<const BenchRow*> rows;
+  for (const BenchRow& r : bench.rows)
+    if (r.error.empty() && r.engine_process_ns_per_ball_step) rows.push_back(&r);
+  if (rows.empty()) return;
+  const auto pipe_at = [&](const std::string& scene, long n) -> const BenchRow* {
+    for (const BenchRow& p : bench.pipe)
+      if (p.scene == scene && p.n == n && p.error.empty()) return &p;
+    return nullptr;
+  };
+  put("Engines in another process (`adapters/process/`, the Node engines) pay the pipe on every step: the step "
+      "request, the reply and the state block. The harness times the whole round trip (its ns per ball-step, as in "
+      "the tables above); the engine's process times its own step call; `pipe/noop/default/SCENE/N` is a Node "
+      "engine that moves nothing (`adapters/node/noop.js`), so its time is the pipe alone.\n\n");
+  put("| engine | scene | balls | harness: step and pipe | its own step | pipe alone (`pipe/noop`) |\n"
+      "|---|---|---:|---:|---:|---:|\n");
+  for (const BenchRow* r : rows) {
+    const BenchRow* p = pipe_at(r->scene, r->n);
+    put("| {} | {} | {} | {:.0f} | {:.0f} | {} |\n", run_label(r->engine, r->profile), r->scene, r->n,
+        r->ns_per_ball_step, *r->engine_process_ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : "-");
+  }
+  put("\nns per ball-step. Source: `results/bench.json`.\n\n");
+}
+
 void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults& bench,
                  const std::vector<Figure>& figures) {
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
@@ -315,6 +340,7 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
             r.engine, r.scene, r.n, r.engine, r.n, *r.steps_per_s);
     put("\n");
   }
+  put_pipe_cost(put, bench);
 }
 
 // A seed scene over its placements (ensemble.h): each metric's mean with its interval, and how each
@@ -450,6 +476,10 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
     if (name == "run.json") {
       std::ifstream s(f);
       in.run = nlohmann::json::parse(s, nullptr, false);
+      if (!in.run.is_object())
+        throw InputError(fmt::format("{}: not a report's run record (a JSON object): write it again with "
+                                     "`ballbench report`",
+                                     f.string()));
     } else if (name == "bench.json") {
       in.bench = read_bench_file(f.string());
     } else if (name == "harness.json") {
@@ -465,6 +495,10 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
         (r.seed_offset == 0 ? in.results : in.placements).push_back(std::move(r));
     }
   }
+  if (in.run.is_null())
+    throw InputError(fmt::format("{}: no run.json, so no report's results to render (run `ballbench report` "
+                                 "without --render-only first)",
+                                 results_dir));
   return in;
 }
 

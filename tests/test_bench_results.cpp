@@ -119,6 +119,33 @@ TEST(BenchResults, TheScalingRatiosFollowTheEnginesRoles) {
   EXPECT_EQ(md.find("`oracle` against"), std::string::npos) << md;
 }
 
+// An engine in another process: the harness's time, its own step and the pipe alone (pipe/noop,
+// kept apart from the scaling rows) side by side.
+TEST(BenchResults, TheReportShowsWhatIsTheEngineAndWhatIsThePipe) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_pipe." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"({
+  "context": {"num_cpus": 2},
+  "benchmarks": [
+    {"name": "step/rapier/tuned/gas/1000/min_time:0.200/real_time", "run_type": "iteration",
+     "ns_per_ball_step": 1739, "engine_process_ns_per_ball_step": 1210},
+    {"name": "step/home/default/gas/1000/min_time:0.200/real_time", "run_type": "iteration", "ns_per_ball_step": 24},
+    {"name": "pipe/noop/default/gas/1000/min_time:0.200", "run_type": "iteration", "ns_per_ball_step": 262}
+  ]})";
+  const BenchResults b = read_bench_file(path.string());
+  std::filesystem::remove(path);
+  ASSERT_EQ(b.rows.size(), 2u);  // the pipe is not a point of the scaling curve
+  ASSERT_EQ(b.pipe.size(), 1u);
+  EXPECT_EQ(b.pipe[0].window, "pipe");
+  EXPECT_EQ(b.rows[0].engine_process_ns_per_ball_step, 1210);
+  EXPECT_FALSE(b.rows[1].engine_process_ns_per_ball_step);
+  ReportInputs in;
+  in.run = nlohmann::json::object();
+  in.bench = b;
+  const std::string md = render_report(in);
+  EXPECT_NE(md.find("| rapier/tuned | gas | 1000 | 1739 | 1210 | 262 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("| home | gas | 1000 |"), std::string::npos) << md;  // in this process: no pipe
+}
+
 TEST(BenchResults, AHarnessRowWithoutItsCountersIsAnInputError) {
   const auto path = std::filesystem::temp_directory_path() / ("bb_harness_bad." + std::to_string(::getpid()) + ".json");
   for (const char* row : {R"({"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration", "overhead": 1.0})",

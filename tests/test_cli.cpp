@@ -402,6 +402,17 @@ TEST(Cli, AReportFolderThatCannotBeWrittenIsOneLineBeforeAnyRun) {
   EXPECT_EQ(o.err.find("ran "), std::string::npos) << o.err;
 }
 
+// Rendering a folder that holds no report's results (none yet, or a run record that is not one) is
+// one line, not a crash.
+TEST(Cli, RenderingWithoutAReportsResultsIsOneLine) {
+  const auto dir = std::filesystem::temp_directory_path() / ("bb_render_empty." + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  expect_one_line_error(cli("report --out " + dir.string() + " --render-only"), "no run.json");
+  std::ofstream(dir / "results" / "run.json") << "[1, 2]";
+  expect_one_line_error(cli("report --out " + dir.string() + " --render-only"), "not a report's run record");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

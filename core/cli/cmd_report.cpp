@@ -64,7 +64,8 @@ Suite quick_suite() {
   // The settled pile and the fluid to 10^4 balls.
   s.bench_filters = {
       "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas/(100000|1000000)|bowl/100000)(/|$)",
-      "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/(100|1000|10000)(/|$)"};
+      "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/(100|1000|10000)(/|$)",
+      "^pipe/"};
   s.bench_min_time = 0.05;
   // Issue 6's measure: 10^5 balls, every step and every 10th, and the floor beside it.
   s.harness_filter = "^(harness|floor)/home/gas/100000/";
@@ -82,7 +83,7 @@ Suite full_suite() {
   // Everything registered: 10 .. 10^5 balls, 10^6 for ours (the 10^6 bowl in its own process);
   // the settled pile to 10^6 (settling 10^6 balls before timing takes a while) and the fluid to 10^5.
   s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
-                     "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/"};
+                     "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/", "^pipe/"};
   s.bench_min_time = 0.2;
   s.bench_budget_s = 60;
   s.harness_filter = "^(harness|floor)/";
