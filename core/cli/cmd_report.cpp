@@ -162,8 +162,9 @@ std::string default_bench_binary(const std::string& name) {
 
 // Runs benchmark binary `bin` once per filter into `path` (Google Benchmark's JSON, via its own
 // --benchmark_out, the processes' outputs joined); its console table goes to stderr as progress.
-// `found` says whether an output holds what the filter asked for. A missing binary or a failed run
-// is reported and skipped ("`section` skipped: ..."): the rest of the report stands without it.
+// `found` says whether an output holds what the filter asked for. A missing binary is reported and
+// the section skipped ("`section` skipped: ..."); a filter whose run failed or found nothing is
+// reported and left out, and the other filters' results stand.
 void run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
                double budget_s, const std::string& path, const std::string& section,
                const std::function<bool(const BenchResults&)>& found) {
@@ -196,14 +197,19 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
       } catch (const InputError& e) {
         why = e.what();
       }
-    if (!why.empty()) {
-      fmt::print(stderr, "{} skipped: {}: {}; its output is in {}\n", section, bin, why, tmp);
-      return;
+    if (!why.empty()) {  // this filter's part is left out; the others' stand
+      fmt::print(stderr, "{}: part skipped: {} --benchmark_filter='{}': {}; its output is in {}\n", section, bin, filter,
+                 why, tmp);
+      continue;
     }
     const nlohmann::json part = parse_json_file(tmp, "Google Benchmark JSON");
     if (joined.is_null()) joined = part;
     else for (const auto& b : part.at("benchmarks")) joined["benchmarks"].push_back(b);
     fs::remove(tmp);
+  }
+  if (joined.is_null()) {
+    fmt::print(stderr, "{} skipped: no part of it ran\n", section);
+    return;
   }
   write_file_atomically(path, joined.dump(2) + "\n", "the benchmark results");
 }
@@ -333,7 +339,7 @@ void report(const ReportArgs& a) {
       const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
       if (!reuse(bench_path, fs::exists(bench_path)))
         run_bench(bin, suite.bench_filters, suite.bench_min_time, suite.bench_budget_s, bench_path, "scaling",
-                  [](const BenchResults& b) { return !b.rows.empty(); });
+                  [](const BenchResults& b) { return !b.rows.empty() || !b.pipe.empty(); });
       stop_if_interrupted();
       // The harness benchmark beside the step benchmark.
       if (!reuse(harness_path, fs::exists(harness_path)))
