@@ -413,6 +413,37 @@ TEST(Cli, RenderingWithoutAReportsResultsIsOneLine) {
   std::filesystem::remove_all(dir);
 }
 
+// A benchmark process that fails leaves its part out, says so, and the parts that ran stand: a
+// stand-in step benchmark whose gas filter writes one row and whose other filters fail.
+TEST(Cli, AFailedBenchmarkPartLeavesTheOthersStanding) {
+  const auto dir = std::filesystem::temp_directory_path() / ("bb_bench_parts." + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "bin");
+  const auto bin = dir / "bin" / "ballbench_step_benchmark";
+  std::ofstream(bin) << R"(#!/bin/sh
+for a in "$@"; do
+  case "$a" in
+    --benchmark_filter=*) filter="${a#--benchmark_filter=}" ;;
+    --benchmark_out=*) out="${a#--benchmark_out=}" ;;
+  esac
+done
+case "$filter" in
+  *gas*) printf '{"context": {}, "benchmarks": [{"name": "step/home/default/gas/1000", "run_type": "iteration", "ns_per_ball_step": 24.0}]}' > "$out" ;;
+  *) exit 3 ;;
+esac
+)";
+  std::filesystem::permissions(bin, std::filesystem::perms::owner_all);
+  const Outcome o = cli("report --out " + (dir / "out").string() + " --engine home --bench-binary " + bin.string());
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.err.find("scaling: part skipped: " + bin.string() + " --benchmark_filter='^pipe/': it failed (exit status 3)"),
+            std::string::npos)
+      << o.err;
+  const std::string bench = slurp((dir / "out" / "results" / "bench.json").string());
+  EXPECT_NE(bench.find("step/home/default/gas/1000"), std::string::npos) << bench;
+  EXPECT_NE(slurp((dir / "out" / "REPORT.md").string()).find("## Scaling"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, FreshContradictsRenderOnly) {
   expect_one_line_error(cli("report --out /tmp/bb_never --fresh --render-only"), "excludes");
   expect_one_line_error(cli("report --out /tmp/bb_never --quick --full"), "excludes");

@@ -191,7 +191,10 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
       if (!interrupt_signal()) std::raise(sig);
       return;
     }
-    std::string why = rc != 0 ? fmt::format("it failed (status {})", rc) : "";
+    std::string why = rc == 0            ? ""
+                      : WIFEXITED(rc)    ? fmt::format("it failed (exit status {})", WEXITSTATUS(rc))
+                      : WIFSIGNALED(rc)  ? fmt::format("it was killed by signal {}", WTERMSIG(rc))
+                                         : fmt::format("it failed (wait status {})", rc);
     if (why.empty()) try {
         if (!found(read_bench_file(tmp))) why = "no benchmark matched " + filter;
       } catch (const InputError& e) {
