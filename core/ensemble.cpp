@@ -61,8 +61,8 @@ std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, 
   std::map<std::string, std::vector<const Result*>> by_label;
   for (const Result& r : results) {
     const std::string label = run_label(r);
-    auto& runs = by_label[label];  // a label whose runs all failed still has its (empty) row, once
-    if (runs.empty() && std::find(labels.begin(), labels.end(), label) == labels.end()) labels.push_back(label);
+    if (!by_label.contains(label)) labels.push_back(label);  // once, even if none of its runs ended ok
+    auto& runs = by_label[label];
     if (r.status == "ok") runs.push_back(&r);
   }
   std::map<int64_t, const Result*> ours_at;  // our run on each placement

@@ -76,9 +76,10 @@ EngineEntry lammps_engine() {
             r.get("skin", s.skin);
             r.get("ranks", s.ranks);
             r.get("sample_every", s.sample_every);
-            for (auto [key, value] : {std::pair{"hostfile", &s.hostfile}, {"mpirun", &s.mpirun}, {"lmp", &s.lmp},
-                                      {"workdir", &s.workdir}})
-              r.get(key, *value);
+            r.get("hostfile", s.hostfile);
+            r.get("mpirun", s.mpirun);
+            r.get("lmp", s.lmp);
+            r.get("workdir", s.workdir);
             r.finish();
             validate(s);
             const lammps::Plan plan = lammps::make_plan(scene, s);

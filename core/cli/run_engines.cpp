@@ -201,13 +201,14 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
   }
   std::vector<Result> results;
   bool stopped = false;
-  for (const EngineEntry* e : engines)
+  for (const EngineEntry* e : engines) {
+    if (stopped) break;
     for (const std::string& p : profiles_for(*e, profile)) {
-      if (stopped) break;
       RunOptions options = base;
       options.profile = p;
-      if (interrupt_signal()) {  // asked to stop: the rows so far, and this one marked, are the result
-        results.push_back(not_started(scene, *e, options));
+      if (interrupt_signal()) {  // asked to stop: the rows so far are the result
+        // A signal between runs marks the run that was next; one during a run marked that run.
+        if (results.empty() || results.back().status != "interrupted") results.push_back(not_started(scene, *e, options));
         stopped = true;
         break;
       }
@@ -223,6 +224,7 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
       results.push_back(run_engine_isolated(scene, *e, options, child));
       if (parts) parts->take_last();
     }
+  }
   if (trajectory) trajectory->close();
   if (parts) parts->finish();
   return results;
@@ -233,7 +235,7 @@ void run_further_placements(std::vector<Result>& results, const Scene& first, in
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation) {
   for (int k = 1; k < seeds && !engines.empty(); ++k) {
-    if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status == "interrupted"; })) return;
+    if (!results.empty() && results.back().status == "interrupted") return;  // run_all stopped
     if (interrupt_signal()) {  // placement k's first run is the one that was next
       RunOptions options = base;
       options.profile = profiles_for(*engines.front(), profile).front();
