@@ -17,6 +17,7 @@
 #include "fork_join.h"
 #include "solver/home_grid.h"
 #include "solver/neighbour_list.h"
+#include "solver/sleep_islands.h"
 #include "solver/soft_step.h"
 #include "solver/warm_start.h"
 
@@ -154,7 +155,7 @@ class Home final : public Engine {
     if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     ball_of_.resize(n_);
     for (int i = 0; i < n_; ++i) ball_of_[i] = i;
-    if (soft_ && s.sleep_speed > 0) asleep_.assign(n_, 0), still_for_.assign(n_, 0.0), island_of_.assign(n_, -1);
+    if (soft_ && s.sleep_speed > 0) sleep_ = SleepIslands(n_, s.sleep_speed, s.sleep_time);
   }
 
   void step(double dt) override {
@@ -853,7 +854,7 @@ class Home final : public Engine {
     if (r_.size()) permute(r_.data());
     if (inv_m_.size()) permute(inv_m_.data());
     permute(count_.data());
-    if (!asleep_.empty()) permute(asleep_.data()), permute(still_for_.data()), permute(island_of_.data());
+    sleep_.permute(permute);
     grid_.renumbered([&](const int* new_number) {
       for (int& b : ball_of_) b = new_number[b];
       warm_entries_.clear();
@@ -916,7 +917,7 @@ class Home final : public Engine {
   // small part of their size; a step in which the fastest ball would move further than max_stride
   // of the smallest radius is cut into parts that do not, each with its contacts gathered afresh.
   void soft_path() {
-    if (sleeping_ == n_ && n_ > 0) return;  // every ball asleep: nothing can move or wake one
+    if (sleep_.all_asleep()) return;  // every ball asleep: nothing can move or wake one
     const StartScan first = scan_state();
     const double travel = (std::sqrt(first.speed2) + g_.norm() * dt_) * dt_;
     const double parts = std::ceil(travel / (s_.max_stride * rmin_));
@@ -934,7 +935,7 @@ class Home final : public Engine {
   // One soft step (soft_step.h) of dt over every contact that can touch within it, found on a grid
   // whose cells cover the fastest ball's motion; `start`: the state's scan at its start.
   void soft_part(double dt, const StartScan& start) {
-    if (sleeping_ == n_ && n_ > 0) return;
+    if (sleep_.all_asleep()) return;
     const double g = g_.norm();
     const double speed2 = start.speed2;
     const HomeGrid::Bounds& bounds = start.bounds;
@@ -978,50 +979,45 @@ class Home final : public Engine {
       }
     };
     // Two sleeping balls have no contact: neither moves (unless one wakes, below).
-    const bool sleeps = sleeping_ > 0;
+    const int sleeping = sleep_.sleeping();
+    const auto asleep = [&](int i) { return sleep_.asleep(i); };
     if (!sc_.no_pairs) {
       grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
       renumber_if_due();
-      if (sleeps && 2 * sleeping_ > n_) {
+      if (sleeping > 0 && 2 * sleeping > n_) {
         // Mostly asleep: the pairs around the balls awake, not every pair of the grid.
         for (int i = 0; i < n_; ++i)
-          if (!asleep_[i])
+          if (!asleep(i))
             grid_.for_each_near(i, [&](int j) {
-              if (j != i && (asleep_[j] || j > i)) try_pair(i, j);
+              if (j != i && (asleep(j) || j > i)) try_pair(i, j);
             });
       } else {
         const int* id = grid_.id();
         grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
           const int a = id[sa], b = id[sb];
-          if (!sleeps || !(asleep_[a] && asleep_[b])) try_pair(a, b);
+          if (sleeping == 0 || !(asleep(a) && asleep(b))) try_pair(a, b);
         });
       }
     }
     if (walls_)
       for (int i = 0; i < n_; ++i)
-        if (!sleeps || !asleep_[i]) try_walls(i);
-    if (sleeps) {
+        if (sleeping == 0 || !asleep(i)) try_walls(i);
+    if (sleeping > 0) {
       // A ball woken now gains the contacts it had none of while it slept.
-      wake_touched();
-      for (int i : woken_) {
+      sleep_.wake_touched(soft_contacts_, v_.col(0).data(), v_.col(1).data());
+      for (int i : sleep_.woken()) {
         if (!sc_.no_pairs)
           grid_.for_each_near(i, [&](int j) {
-            if (asleep_[j] == kAsleep || (asleep_[j] == kWoken && j > i)) try_pair(i, j);
+            const SleepIslands::State sj = sleep_.state(j);
+            if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i)) try_pair(i, j);
           });
         if (walls_) try_walls(i);
       }
-      for (int i : woken_) asleep_[i] = kAwake;
+      sleep_.finish_waking();
     }
     const double* inv_m = sc_.equal_masses ? nullptr : inv_m_.data();
-    moving_.clear();
-    if (sleeping_ > 0) {
-      soft_inv_mass_.resize(n_);
-      for (int i = 0; i < n_; ++i) {
-        soft_inv_mass_[i] = asleep_[i] ? 0.0 : inv_mass(i);
-        if (!asleep_[i]) moving_.push_back(i);
-      }
-      inv_m = soft_inv_mass_.data();
-    }
+    const std::vector<int>& awake = sleep_.awake(n_, inv_m, inv_m0_);
+    if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
     for (SoftContact& c : soft_contacts_) {
       const double wi = inv_m ? inv_m[c.i] : inv_m0_, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : inv_m0_;
       c.mass = 1.0 / (wi + wj);
@@ -1032,88 +1028,14 @@ class Home final : public Engine {
                             v_.col(1).data(),
                             inv_m,
                             inv_m0_,
-                            sleeping_ > 0 ? moving_.data() : nullptr,
-                            static_cast<int>(moving_.size())};
+                            sleep_.sleeping() > 0 ? awake.data() : nullptr,
+                            static_cast<int>(awake.size())};
     soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
-    if (!asleep_.empty()) fall_asleep(dt);
+    if (sleep_.enabled()) sleep_.fall_asleep(soft_contacts_, v_.col(0).data(), v_.col(1).data(), dt);
     warm_entries_.clear();
     for (const SoftContact& c : soft_contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
     warm_.assign(warm_entries_);
-  }
-
-  // A sleeping ball wakes, with its whole island, when a ball that can touch it within the step
-  // moves faster than sleep_speed relative to it: one landing on it, or one it rests on moving
-  // away. The balls woken are marked kWoken and listed in woken_.
-  void wake_touched() {
-    woken_.clear();
-    waking_islands_.clear();
-    const double limit2 = s_.sleep_speed * s_.sleep_speed;
-    for (const SoftContact& c : soft_contacts_) {
-      if (c.j < 0 || (asleep_[c.i] == kAsleep) == (asleep_[c.j] == kAsleep)) continue;
-      const double wx = v_(c.i, 0) - v_(c.j, 0), wy = v_(c.i, 1) - v_(c.j, 1);
-      if (wx * wx + wy * wy <= limit2) continue;
-      const int64_t island = island_of_[asleep_[c.i] == kAsleep ? c.i : c.j];
-      if (std::find(waking_islands_.begin(), waking_islands_.end(), island) == waking_islands_.end())
-        waking_islands_.push_back(island);
-    }
-    if (waking_islands_.empty()) return;
-    for (int b = 0; b < n_; ++b)
-      if (asleep_[b] == kAsleep &&
-          std::find(waking_islands_.begin(), waking_islands_.end(), island_of_[b]) != waking_islands_.end()) {
-        asleep_[b] = kWoken, still_for_[b] = 0, --sleeping_;
-        woken_.push_back(b);
-      }
-  }
-
-  // Sleeping by islands, as Box2D does: the balls awake that contacts pushing apart (impulse > 0)
-  // join form an island, and an island whose every ball has been slower than sleep_speed for
-  // sleep_time falls asleep whole: its balls stop. (One ball frozen at a time would be a wall under
-  // the balls still settling on it, which would keep a pile's surface awake.) dt: the time just
-  // stepped.
-  void fall_asleep(double dt) {
-    const double limit2 = s_.sleep_speed * s_.sleep_speed;
-    const auto for_awake = [&](auto&& f) {
-      if (sleeping_ > 0)
-        for (int i : moving_) f(i);
-      else
-        for (int i = 0; i < n_; ++i) f(i);
-    };
-    bool any_still = false;
-    for_awake([&](int i) {
-      const bool slow = v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1) <= limit2;
-      still_for_[i] = slow ? still_for_[i] + dt : 0.0;
-      any_still = any_still || still_for_[i] >= s_.sleep_time;
-    });
-    if (!any_still) return;
-    // Union-find (path halving) over the awake balls; each root holds its island's least still time.
-    island_root_.resize(n_);
-    for_awake([&](int i) { island_root_[i] = i; });
-    const auto root = [&](int i) {
-      while (island_root_[i] != i) i = island_root_[i] = island_root_[island_root_[i]];
-      return i;
-    };
-    for (const SoftContact& c : soft_contacts_)
-      if (c.j >= 0 && c.impulse > 0 && !asleep_[c.i] && !asleep_[c.j]) {
-        const int a = root(c.i), b = root(c.j);
-        if (a != b) island_root_[std::max(a, b)] = std::min(a, b);
-      }
-    island_still_.resize(n_);
-    for_awake([&](int i) { island_still_[i] = kNever; });
-    for_awake([&](int i) {
-      double& t = island_still_[root(i)];
-      t = std::min(t, still_for_[i]);
-    });
-    // Island labels stay unique across steps: this step's roots offset past every earlier label.
-    falling_.clear();
-    for_awake([&](int i) {
-      const int r = root(i);
-      if (island_still_[r] < s_.sleep_time) return;
-      island_of_[i] = islands_ + r;
-      falling_.push_back(i);
-    });
-    islands_ += n_;
-    for (int i : falling_) asleep_[i] = kAsleep, v_(i, 0) = v_(i, 1) = 0, ++sleeping_;
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
@@ -1416,21 +1338,7 @@ class Home final : public Engine {
   std::vector<Event> queue_;      // a min-heap on t, see push_event
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
   std::vector<SoftContact> soft_contacts_;
-  // Per ball (soft path with sleeping): kAsleep while asleep; kWoken while the step that woke it
-  // gathers its contacts.
-  enum : uint8_t { kAwake = 0, kAsleep = 1, kWoken = 2 };
-  std::vector<uint8_t> asleep_;
-  std::vector<int> woken_;          // the balls woken this step
-  std::vector<int> moving_;         // the balls awake, while some sleep
-  std::vector<double> still_for_;   // per ball: how long it has been slower than sleep_speed (s)
-  std::vector<int64_t> island_of_;  // per ball asleep: the island it fell asleep with (a label)
-  int64_t islands_ = 0;             // labels used so far
-  std::vector<int64_t> waking_islands_;  // scratch for wake_touched
-  std::vector<int> island_root_;    // scratch for fall_asleep: union-find parents
-  std::vector<double> island_still_;  // scratch for fall_asleep: an island's least still time (s)
-  std::vector<int> falling_;        // scratch for fall_asleep: the balls falling asleep
-  int sleeping_ = 0;                // balls asleep
-  std::vector<double> soft_inv_mass_;  // per ball while some sleep: 0 for a ball asleep
+  SleepIslands sleep_;  // sleeping (soft path with sleep_speed > 0)
   SoftStepScratch soft_scratch_;
   double warm_h_ = 0;               // the substep the warm start's impulses were accumulated over (s)
 };
