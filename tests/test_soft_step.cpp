@@ -38,7 +38,7 @@ TEST(SoftStep, BallOnTheFloorStaysAtRest) {
   // A ball touching the floor (gap 0), carried by its contact: after a second it has settled where
   // the push-out's spring of 100 Hz holds its weight, g / omega^2 deep, and no longer moves.
   Balls b{{0.0}, {0.25}, {0.0}, {0.0}};
-  std::vector<SoftContact> floor{{0, -3, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0}};
+  std::vector<SoftContact> floor{{{0, wall_partner(1, 0), 0.0, 1.0, 1.0, 0.0}, 0.0, 0.0, 0.0}};
   SoftStepScratch scratch;
   for (int k = 0; k < 100; ++k) {
     floor[0].gap = b.y[0] - 0.25;  // the caller measures the gap at the start of each step
@@ -53,7 +53,7 @@ TEST(SoftStep, BallOnTheFloorStaysAtRest) {
 TEST(SoftStep, ImpactLeavesAtTheRestitutionSpeed) {
   // Two touching balls approaching head-on at 2 m/s, no gravity: they part at e times that.
   Balls b{{-0.25, 0.25}, {0.0, 0.0}, {1.0, -1.0}, {0.0, 0.0}};
-  std::vector<SoftContact> pair{{1, 0, 1.0, 0.0, 0.0, 0.5, 0.0, 0.0, 0.0}};
+  std::vector<SoftContact> pair{{{1, 0, 1.0, 0.0, 0.5, 0.0}, 0.0, 0.0, 0.0}};
   SoftStepScratch scratch;
   soft_step(b.bodies(), 2, pair, 0.0, 0.0, 0.01, {}, {0.8, 0.1}, scratch);
   EXPECT_NEAR(b.vx[1] - b.vx[0], 0.8 * 2.0, 1e-12);

@@ -11,11 +11,11 @@
 
 #include "engine_settings.h"
 #include "input_error.h"
+#include "solver/contact.h"
 
 namespace ballbench {
 namespace {
 
-constexpr double kNever = std::numeric_limits<double>::infinity();
 // Relative size of round-off in a normal velocity: touching bodies that approach more slowly than
 // this fraction of their speeds are not approaching (a collision there would be one of noise).
 constexpr double kVelocityNoise = 1e-12;
@@ -202,31 +202,27 @@ double first_contact(const Quartic& q, double horizon, double noise, double fine
 
 // ----------------------------------------------------------------------------------------------
 
-enum class Kind : uint8_t { None, Pair, Wall, Cell };
+// A ball's events (contact.h's Event, one per ball): a pair (j >= 0; cj, the partner's trajectory
+// counter when predicted), a wall (wall_partner), or the ball crossing a face of its grid cell
+// (cell_face: of axis 0 or 1, towards the lower (0) or upper (1) cell).
+constexpr int cell_face(int axis, int up) { return -5 - (2 * axis + up); }
+constexpr bool is_cell_face(int j) { return j <= -5; }
 
-struct Event {
-  double t = kNever;           // absolute time (s)
-  int partner = -1;            // Pair: the other ball
-  uint32_t partner_count = 0;  // its trajectory counter when predicted; stale once it moved on
-  Kind kind = Kind::None;
-  uint8_t code = 0;            // Wall: 2 axis + side (0 min, 1 max); Cell: 2 axis + (1 up, 0 down)
-};
-
-// A contact of a cluster being settled (Exact::settle_cluster).
-struct Contact {
-  int a, b;          // balls; b < 0: a wall or a sleeping ball (fixed)
-  double n[2];       // unit normal, from b to a
-  double inv_mass;   // 1 / (1/m_a + 1/m_b)
-  double target;     // normal separation speed wanted (m/s)
-  double impulse;    // accumulated (N s), >= 0
-  bool firm;         // crept to the overlap cap, or pressed: even a slow closing is stopped
+// A contact (contact.h) of a cluster being settled (Exact::settle_cluster); j < 0: a wall or a
+// sleeping ball, held still.
+struct ClusterContact : Contact {
+  double target;  // normal separation speed wanted (m/s)
+  bool firm;      // crept to the overlap cap, or pressed: even a slow closing is stopped
+  double n(int axis) const { return axis == 0 ? nx : ny; }
 };
 
 // A ball's candidates at one time in a fixed order: balls by index, then walls, then cell faces.
-bool sooner(const Event& a, const Event& b) {
+int event_rank(int j) { return j >= 0 ? 0 : is_cell_face(j) ? 2 : 1; }
+bool sooner(const PredictedEvent& a, const PredictedEvent& b) {
   if (a.t != b.t) return a.t < b.t;
-  if (a.kind != b.kind) return a.kind < b.kind;
-  return a.kind == Kind::Pair ? a.partner < b.partner : a.code < b.code;
+  const int ra = event_rank(a.j), rb = event_rank(b.j);
+  if (ra != rb) return ra < rb;
+  return ra == 0 ? a.j < b.j : a.j > b.j;  // walls and faces by code, -1 - j and -5 - j
 }
 
 class Exact final : public Engine {
@@ -267,7 +263,7 @@ class Exact final : public Engine {
     cluster_mark_.assign(n_, 0);
     group_mark_.assign(n_, 0);
     cluster_pos_.assign(n_, 0);
-    ev_.assign(n_, Event{});
+    ev_.assign(n_, PredictedEvent{});
     build_grid(scene);
     heap_.resize(n_), slot_.resize(n_);
     for (int i = 0; i < n_; ++i) heap_[i] = i, slot_[i] = i;
@@ -279,18 +275,20 @@ class Exact final : public Engine {
     std::fill(events_.begin(), events_.end(), 0);
     while (n_ > 0) {
       const int i = heap_[0];
-      const Event ev = ev_[i];
+      const PredictedEvent ev = ev_[i];
       if (!(ev.t <= t_end)) break;
       now_ = ev.t;
-      if (ev.kind == Kind::Pair && count_[ev.partner] != ev.partner_count) {
+      if (ev.j >= 0 && count_[ev.j] != ev.cj) {
         predict(i);  // the partner changed course since: look again
         continue;
       }
-      switch (ev.kind) {
-        case Kind::Pair: on_pair(i, ev.partner); break;
-        case Kind::Wall: on_wall(i, ev.code >> 1, ev.code & 1); break;
-        case Kind::Cell: on_cell(i, ev.code >> 1, ev.code & 1); break;
-        case Kind::None: break;
+      if (ev.j >= 0) {
+        on_pair(i, ev.j);
+      } else if (!is_cell_face(ev.j)) {
+        on_wall(i, wall_axis(ev.j), wall_side(ev.j));
+      } else {
+        const int code = -5 - ev.j;
+        on_cell(i, code >> 1, code & 1);
       }
     }
     now_ = t_end;
@@ -407,8 +405,8 @@ class Exact final : public Engine {
 
   void predict(int i) {
     advance(i, now_);
-    Event best;
-    auto offer = [&](const Event& c) {
+    PredictedEvent best;
+    auto offer = [&](const PredictedEvent& c) {
       if (sooner(c, best)) best = c;
     };
     if (!asleep_[i]) {
@@ -418,25 +416,25 @@ class Exact final : public Engine {
         if (walls_) {
           const double cap = kOverlapCap * r_[i];
           const double t0 = gap_closing_time(x - r_[i] - box_lo_[k], v, 0.5 * a, noise, fine, cap);
-          if (t0 < kNever) offer({now_ + t0, -1, 0, Kind::Wall, static_cast<uint8_t>(2 * k)});
+          if (t0 < kNever) offer({now_ + t0, i, wall_partner(k, 0)});
           const double t1 = gap_closing_time(box_hi_[k] - r_[i] - x, -v, -0.5 * a, noise, fine, cap);
-          if (t1 < kNever) offer({now_ + t1, -1, 0, Kind::Wall, static_cast<uint8_t>(2 * k + 1)});
+          if (t1 < kNever) offer({now_ + t1, i, wall_partner(k, 1)});
         }
         const int c = k == 0 ? cell_[i] % n_cells_[0] : cell_[i] / n_cells_[0];
         if (c > 0) {
           const double t0 = gap_closing_time(x - face(k, c), v, 0.5 * a, 0.0, 0.0, 0.0);
-          if (t0 < kNever) offer({now_ + t0, -1, 0, Kind::Cell, static_cast<uint8_t>(2 * k)});
+          if (t0 < kNever) offer({now_ + t0, i, cell_face(k, 0)});
         }
         if (c < n_cells_[k] - 1) {
           const double t1 = gap_closing_time(face(k, c + 1) - x, -v, -0.5 * a, 0.0, 0.0, 0.0);
-          if (t1 < kNever) offer({now_ + t1, -1, 0, Kind::Cell, static_cast<uint8_t>(2 * k + 1)});
+          if (t1 < kNever) offer({now_ + t1, i, cell_face(k, 1)});
         }
       }
     }
     for_each_near(i, [&](int j) {
       if (asleep_[i] && asleep_[j]) return;
       const double t = pair_time(i, j, best.t);
-      if (t < kNever) offer({t, j, count_[j], Kind::Pair, 0});
+      if (t < kNever) offer({t, i, j, 0, count_[j]});
     });
     ev_[i] = best;
     heap_update(i);
@@ -638,8 +636,8 @@ class Exact final : public Engine {
           for (int side = 0; side < 2; ++side) {
             const double gap = side == 0 ? p_[d][k] - r_[k] - box_lo_[d] : box_hi_[d] - r_[k] - p_[d][k];
             if (gap > kTouch * r_[k]) continue;
-            Contact c{k, -1, {0, 0}, 1 / im_[k], 0, 0, gap < -0.5 * kOverlapCap * r_[k]};
-            c.n[d] = side == 0 ? 1 : -1;
+            ClusterContact c{{k, -1, 0, 0, 1 / im_[k], 0}, 0, gap < -0.5 * kOverlapCap * r_[k]};
+            (d == 0 ? c.nx : c.ny) = side == 0 ? 1 : -1;
             if (std::abs(v_[d][k]) > v_rest_ && !jammed) continue;  // a real bounce (its own event), or parting
             contacts_.push_back(c);
           }
@@ -661,7 +659,7 @@ class Exact final : public Engine {
         const double target = pressed(press, Ax, Ay, kVelocityNoise * (speed(k) + speed(m))) ? 0.5 * press * tc_ : 0.0;
         // Crept to the overlap cap, or pressed together: even a slow closing must stop.
         const bool firm = dist < rs * (1 - 0.5 * kOverlapCap) || target > 0;
-        contacts_.push_back({k, asleep_[m] ? -1 : m, {n[0], n[1]}, 1 / (im_[k] + wm), target, 0, firm});
+        contacts_.push_back({{k, asleep_[m] ? -1 : m, n[0], n[1], 1 / (im_[k] + wm), 0}, target, firm});
         if (!asleep_[m]) join(m);
       });
     }
@@ -686,8 +684,8 @@ class Exact final : public Engine {
       }
       size_t kept = 0;
       for (size_t c = 0; c < contacts_.size(); ++c) {
-        Contact cc = contacts_[c];
-        if (asleep_[cc.a] || (cc.b >= 0 && asleep_[cc.b])) continue;
+        ClusterContact cc = contacts_[c];
+        if (asleep_[cc.i] || (cc.j >= 0 && asleep_[cc.j])) continue;
         cc.target = rebound_[c], cc.impulse = 0;
         contacts_[kept++] = cc;
       }
@@ -757,14 +755,14 @@ class Exact final : public Engine {
     const double v0[2] = {v_[0][k], v_[1][k]};
     const double fine = kVelocityNoise * (norm2(v0[0], v0[1]) + v_rest_);  // round-off of a projection
     auto feasible = [&](const double* v) {
-      for (const Contact& c : contacts_)
-        if (v[0] * c.n[0] + v[1] * c.n[1] < c.target - fine) return false;
+      for (const ClusterContact& c : contacts_)
+        if (v[0] * c.nx + v[1] * c.ny < c.target - fine) return false;
       return true;
     };
     // Already within the slack of every contact (the Gauss-Seidel tolerance for slow ones)?
     bool slack = true;
-    for (const Contact& c : contacts_)
-      if (v0[0] * c.n[0] + v0[1] * c.n[1] < c.target - (c.firm || c.target > 0 ? fine : tolerance)) slack = false;
+    for (const ClusterContact& c : contacts_)
+      if (v0[0] * c.nx + v0[1] * c.ny < c.target - (c.firm || c.target > 0 ? fine : tolerance)) slack = false;
     if (slack || feasible(v0)) return;
     double best[2] = {v0[0], v0[1]}, best_d2 = kNever;
     auto offer = [&](double x, double y) {
@@ -774,20 +772,20 @@ class Exact final : public Engine {
     };
     const int m = static_cast<int>(contacts_.size());
     for (int a = 0; a < m; ++a) {
-      const Contact& c = contacts_[a];
-      const double push = c.target - (v0[0] * c.n[0] + v0[1] * c.n[1]);
-      if (push > 0) offer(v0[0] + push * c.n[0], v0[1] + push * c.n[1]);
+      const ClusterContact& c = contacts_[a];
+      const double push = c.target - (v0[0] * c.nx + v0[1] * c.ny);
+      if (push > 0) offer(v0[0] + push * c.nx, v0[1] + push * c.ny);
     }
     for (int a = 0; a < m; ++a)
       for (int b = a + 1; b < m; ++b) {
-        const Contact &ca = contacts_[a], &cb = contacts_[b];
-        const double det = ca.n[0] * cb.n[1] - ca.n[1] * cb.n[0];
+        const ClusterContact &ca = contacts_[a], &cb = contacts_[b];
+        const double det = ca.nx * cb.ny - ca.ny * cb.nx;
         if (std::abs(det) < 1e-12) continue;
         // v.n_a = t_a and v.n_b = t_b; then the impulses along n_a, n_b must both push.
-        const double x = (ca.target * cb.n[1] - cb.target * ca.n[1]) / det;
-        const double y = (ca.n[0] * cb.target - cb.n[0] * ca.target) / det;
+        const double x = (ca.target * cb.ny - cb.target * ca.ny) / det;
+        const double y = (ca.nx * cb.target - cb.nx * ca.target) / det;
         const double dx = x - v0[0], dy = y - v0[1];
-        const double la = (dx * cb.n[1] - dy * cb.n[0]) / det, lb = (ca.n[0] * dy - ca.n[1] * dx) / det;
+        const double la = (dx * cb.ny - dy * cb.nx) / det, lb = (ca.nx * dy - ca.ny * dx) / det;
         if (la >= 0 && lb >= 0) offer(x, y);
       }
     if (best_d2 < kNever) v_[0][k] = best[0], v_[1][k] = best[1];
@@ -808,9 +806,9 @@ class Exact final : public Engine {
     double bmin = 0;
     int r = -1;
     for (int c = 0; c < m; ++c) {
-      const Contact& cc = contacts_[c];
-      double wn = v_[0][cc.a] * cc.n[0] + v_[1][cc.a] * cc.n[1];
-      if (cc.b >= 0) wn -= v_[0][cc.b] * cc.n[0] + v_[1][cc.b] * cc.n[1];
+      const ClusterContact& cc = contacts_[c];
+      double wn = v_[0][cc.i] * cc.nx + v_[1][cc.i] * cc.ny;
+      if (cc.j >= 0) wn -= v_[0][cc.j] * cc.nx + v_[1][cc.j] * cc.ny;
       const double b = wn - cc.target;
       T(c, c) = 1;
       for (int d = 0; d < m; ++d) T(c, m + d) = -coupling(cc, contacts_[d]);
@@ -850,10 +848,10 @@ class Exact final : public Engine {
         for (int i = 0; i < m; ++i)
           if (basis_[i] >= m && basis_[i] < 2 * m) lambda_[basis_[i] - m] = std::max(0.0, T(i, 2 * m + 1));
         for (int c = 0; c < m; ++c) {
-          const Contact& cc = contacts_[c];
+          const ClusterContact& cc = contacts_[c];
           for (int d = 0; d < 2; ++d) {
-            v_[d][cc.a] += lambda_[c] * im_[cc.a] * cc.n[d];
-            if (cc.b >= 0) v_[d][cc.b] -= lambda_[c] * im_[cc.b] * cc.n[d];
+            v_[d][cc.i] += lambda_[c] * im_[cc.i] * cc.n(d);
+            if (cc.j >= 0) v_[d][cc.j] -= lambda_[c] * im_[cc.j] * cc.n(d);
           }
         }
         return true;
@@ -864,13 +862,13 @@ class Exact final : public Engine {
   }
 
   // Normal velocity change of contact c per unit impulse at contact d: J_c M^-1 J_d^T.
-  double coupling(const Contact& c, const Contact& d) const {
-    const double dot = c.n[0] * d.n[0] + c.n[1] * d.n[1];
+  double coupling(const ClusterContact& c, const ClusterContact& d) const {
+    const double dot = c.nx * d.nx + c.ny * d.ny;
     double k = 0;
-    if (c.a == d.a) k += im_[c.a];
-    if (c.b >= 0 && c.b == d.b) k += im_[c.b];
-    if (d.b >= 0 && c.a == d.b) k -= im_[c.a];
-    if (c.b >= 0 && c.b == d.a) k -= im_[c.b];
+    if (c.i == d.i) k += im_[c.i];
+    if (c.j >= 0 && c.j == d.j) k += im_[c.j];
+    if (d.j >= 0 && c.i == d.j) k -= im_[c.i];
+    if (c.j >= 0 && c.j == d.i) k -= im_[c.j];
     return k * dot;
   }
 
@@ -879,19 +877,19 @@ class Exact final : public Engine {
     const int sweeps = kClusterSweeps + 4 * static_cast<int>(cluster_.size());
     for (int sweep = 0; sweep < sweeps; ++sweep) {
       double worst = 0;
-      for (Contact& c : contacts_) {
-        double wn = v_[0][c.a] * c.n[0] + v_[1][c.a] * c.n[1];
-        if (c.b >= 0) wn -= v_[0][c.b] * c.n[0] + v_[1][c.b] * c.n[1];
+      for (ClusterContact& c : contacts_) {
+        double wn = v_[0][c.i] * c.nx + v_[1][c.i] * c.ny;
+        if (c.j >= 0) wn -= v_[0][c.j] * c.nx + v_[1][c.j] * c.ny;
         if (c.impulse == 0 && !c.firm && c.target == 0 && wn >= -tolerance) continue;  // closing within noise
-        const double next = std::max(0.0, c.impulse + (c.target - wn) * c.inv_mass);
+        const double next = std::max(0.0, c.impulse + (c.target - wn) * c.mass);
         const double dJ = next - c.impulse;
         if (dJ == 0) continue;
         c.impulse = next;
         for (int d = 0; d < 2; ++d) {
-          v_[d][c.a] += dJ * im_[c.a] * c.n[d];
-          if (c.b >= 0) v_[d][c.b] -= dJ * im_[c.b] * c.n[d];
+          v_[d][c.i] += dJ * im_[c.i] * c.n(d);
+          if (c.j >= 0) v_[d][c.j] -= dJ * im_[c.j] * c.n(d);
         }
-        worst = std::max(worst, std::abs(dJ) / c.inv_mass);
+        worst = std::max(worst, std::abs(dJ) / c.mass);
       }
       if (worst <= tolerance) break;
     }
@@ -1042,7 +1040,7 @@ class Exact final : public Engine {
   int n_cells_[2] = {1, 1};
   std::vector<int> head_, next_, prev_, cell_;
 
-  std::vector<Contact> contacts_;     // of the cluster being settled
+  std::vector<ClusterContact> contacts_;     // of the cluster being settled
   std::vector<int> cluster_, cluster_pos_;
   std::vector<uint32_t> cluster_mark_, group_mark_;
   std::vector<int> group_;
@@ -1054,7 +1052,7 @@ class Exact final : public Engine {
   std::vector<double> tableau_, lambda_;  // Lemke's method (settle_exact)
   std::vector<int> basis_;
 
-  std::vector<Event> ev_;             // each ball's earliest predicted event
+  std::vector<PredictedEvent> ev_;             // each ball's earliest predicted event
   std::vector<int> heap_, slot_;      // heap of balls; slot_[i]: i's position in heap_
   std::vector<int> touched_, stack_;
   std::vector<uint32_t> mark_;

@@ -15,6 +15,7 @@
 #include "engine_settings.h"
 #include "input_error.h"
 #include "fork_join.h"
+#include "solver/contact.h"
 #include "solver/home_grid.h"
 #include "solver/neighbour_list.h"
 #include "solver/sleep_islands.h"
@@ -24,7 +25,6 @@
 namespace ballbench {
 namespace {
 
-constexpr double kNever = std::numeric_limits<double>::infinity();
 // The list screen's time for a pair that touches at the start of the step (see first_pair_events).
 constexpr double kTouching = -1;
 // first_j_: the ball's first pair event is left to next_event (see first_pair_events).
@@ -77,13 +77,6 @@ HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double r
   return s;
 }
 
-struct Event {
-  double t;         // time within the step (s)
-  int i, j;         // j >= 0: ball pair; j < 0: wall -1 - (2 * axis + side)
-  uint32_t ci, cj;  // collision counters of i and j when predicted; stale if they moved on
-  bool operator>(const Event& o) const { return t > o.t; }
-};
-
 // What the grid needs from the positions and velocities at the start of a step: the largest
 // squared speed and the positions' bounds. Both are exact in any order, so parts may merge them.
 struct StartScan {
@@ -110,13 +103,10 @@ struct Approach {
   double t;
 };
 
-struct Contact {
-  int i, j;         // j < 0: wall, as in Event
-  double nx, ny;    // unit normal, from j (or the wall) towards i
-  double target;    // least normal velocity wanted after the solve (m/s)
-  double inv_mass;  // 1 / (1/m_i + 1/m_j)
-  double impulse;   // accumulated, >= 0
-  bool moved;       // an impulse was applied (warm start or solve): both velocities may have changed
+// A contact of the start-of-step contact pass (contact_pass).
+struct PassContact : Contact {
+  double target;  // least normal velocity wanted after the solve (m/s)
+  bool moved;     // an impulse was applied (warm start or solve): both velocities may have changed
 };
 
 class Home final : public Engine {
@@ -410,12 +400,12 @@ class Home final : public Engine {
   // make_contact writes the contact into `c` from the relative normal velocity vn, or returns false
   // (fast); it reads the state only, so the pair screen's parts call it too.
   void add_contact(int i, int j, double nx, double ny, double gap, double touch, double horizon, bool close_overlap) {
-    Contact c;
+    PassContact c;
     if (make_contact(i, j, nx, ny, relative_normal_velocity(i, j, nx, ny), gap, touch, horizon, close_overlap, c))
       contacts_.push_back(c);
   }
   bool make_contact(int i, int j, double nx, double ny, double vn, double gap, double touch, double horizon,
-                    bool close_overlap, Contact& c) const {
+                    bool close_overlap, PassContact& c) const {
     const bool touching = gap < touch, fast = -vn > v_rest_;
     if (fast) return false;
     double target;
@@ -423,13 +413,13 @@ class Home final : public Engine {
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
     const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
-    c = {i, j, nx, ny, target, eff, 0.0, false};
+    c = {{i, j, nx, ny, eff, 0.0}, target, false};
     return true;
   }
 
   // Warm start (Catto 2005): the impulse contact c ended the last step with, if it had one. Only
   // looked up: the impulses are applied afterwards, in the contacts' order.
-  void find_warm_impulse(Contact& c) const {
+  void find_warm_impulse(PassContact& c) const {
     const double impulse = warm_.find(c.i, c.j);
     if (impulse >= 0) c.impulse = impulse, c.moved = true;
   }
@@ -442,7 +432,7 @@ class Home final : public Engine {
         const double gap = wall_gap(i, axis, side), touch = touch_wall(i);
         if (gap >= std::max(touch, reach)) continue;
         const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
-        add_contact(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
+        add_contact(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
                     close_overlap);
       }
   }
@@ -453,7 +443,7 @@ class Home final : public Engine {
     const double rs = radius(i) + radius(j), limit = rs + std::max(touch_pair(i, j), reach);
     const double d2 = dx * dx + dy * dy;
     if (d2 >= limit * limit || d2 == 0) return false;  // squared first: most candidates are far
-    Contact c;
+    PassContact c;
     if (make_pair_contact(i, j, dx, dy, d2, v_(i, 0) - v_(j, 0), v_(i, 1) - v_(j, 1), rs, horizon, close_overlap, c))
       contacts_.push_back(c);
     return true;
@@ -462,7 +452,7 @@ class Home final : public Engine {
   // make_contact for pair (i, j) at separation (dx, dy), |d|^2 = d2 > 0, relative velocity (wx, wy)
   // and radius sum rs: add_pair_contact's and the pair screen's.
   bool make_pair_contact(int i, int j, double dx, double dy, double d2, double wx, double wy, double rs,
-                         double horizon, bool close_overlap, Contact& c) const {
+                         double horizon, bool close_overlap, PassContact& c) const {
     const double d = std::sqrt(d2), nx = dx / d, ny = dy / d;
     return make_contact(i, j, nx, ny, wx * nx + wy * ny, d - rs, touching_gap(rs), horizon, close_overlap, c);
   }
@@ -481,10 +471,10 @@ class Home final : public Engine {
   // pairs, close but parting (10^6 bowl balls: ~25 000 contacts, half of them such, 10-16 sweeps).
   double solve_contacts(int sweeps, double tolerance) {
     double worst = kNever;  // largest violation seen in the last sweep (m/s)
-    const auto update = [&](Contact& c) {
+    const auto update = [&](PassContact& c) {
       const double vn = relative_normal_velocity(c.i, c.j, c.nx, c.ny);
       const double old = c.impulse;
-      c.impulse = std::max(0.0, old + (c.target - vn) * c.inv_mass);
+      c.impulse = std::max(0.0, old + (c.target - vn) * c.mass);
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
       c.moved |= c.impulse != old;
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
@@ -498,18 +488,18 @@ class Home final : public Engine {
       // cluster's gathering and is left so.
       uint8_t* degree = in_cluster_.data();
       const auto bump = [&](int b) { degree[b] = static_cast<uint8_t>(std::min(degree[b] + 1, 2)); };
-      for (const Contact& c : contacts_) {
+      for (const PassContact& c : contacts_) {
         bump(c.i);
         if (c.j >= 0) bump(c.j);
       }
       worst = 0;
       for (size_t k = 0; k < contacts_.size(); ++k) {
-        Contact& c = contacts_[k];
+        PassContact& c = contacts_[k];
         const bool isolated = degree[c.i] == 1 && (c.j < 0 || degree[c.j] == 1);
         update(c);
         if (!isolated) live_.push_back(static_cast<int>(k));
       }
-      for (const Contact& c : contacts_) {
+      for (const PassContact& c : contacts_) {
         degree[c.i] = 0;
         if (c.j >= 0) degree[c.j] = 0;
       }
@@ -522,7 +512,7 @@ class Home final : public Engine {
     // The isolated contacts were solved by their one update.
     double left = 0;
     for (int k : live_) {
-      const Contact& c = contacts_[k];
+      const PassContact& c = contacts_[k];
       left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
     }
     return left;
@@ -565,19 +555,19 @@ class Home final : public Engine {
     if (sc_.elastic) return;  // no contacts were listed: nothing to solve or remember
     // The pair contacts found their warm-start impulses in the screen.
     for (size_t k = 0; k < wall_contacts; ++k) find_warm_impulse(contacts_[k]);
-    for (const Contact& c : contacts_)
+    for (const PassContact& c : contacts_)
       if (c.moved) apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
     // A contact that moved its balls changed velocities the screen could not know: predict both.
     // One that applied nothing (most, in a gas: close but parting) leaves them to the screen, which
     // saw their velocities as they still are (a partner that changed is predicted, and finds them).
-    for (const Contact& c : contacts_)
+    for (const PassContact& c : contacts_)
       if (c.moved) {
         active_[c.i] = 1;
         if (c.j >= 0) active_[c.j] = 1;
       }
     warm_entries_.clear();
-    for (const Contact& c : contacts_)
+    for (const PassContact& c : contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
     warm_.assign(warm_entries_);
   }
@@ -697,7 +687,7 @@ class Home final : public Engine {
   // section 27), by add_pair_contact's expressions (make_pair_contact). Made inside the kernel
   // instead, they slowed the sweep itself by ~1 ms.
   template <bool kEqualRadii>
-  void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<Contact>& found) {
+  void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<PassContact>& found) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
     const double* __restrict x = p_.col(0).data();
@@ -734,7 +724,7 @@ class Home final : public Engine {
     });
     for (const auto& [a, b] : hits) {
       const double dx = x[a] - x[b], dy = y[a] - y[b];
-      Contact c;
+      PassContact c;
       if (make_pair_contact(a, b, dx, dy, dx * dx + dy * dy, vx[a] - vx[b], vy[a] - vy[b],
                             kEqualRadii ? rs0 : r[a] + r[b], dt, true, c)) {
         find_warm_impulse(c);
@@ -807,7 +797,7 @@ class Home final : public Engine {
 
   // Ball i's earliest event from the start of the step: its walls (next_event's own loop), then its
   // pair event from first_pair_events, or next_event itself where that said kAsk.
-  bool first_event(int i, Event& best) const {
+  bool first_event(int i, PredictedEvent& best) const {
     if (!listed_ || first_j_[i] == kAsk) return next_event<true>(i, best);
     best = {kNever, i, 0, count_[i], 0};
     wall_event<true>(i, best);
@@ -950,7 +940,7 @@ class Home final : public Engine {
     // The mass is set once it is known which balls sleep (below).
     const auto add = [&](int i, int j, double nx, double ny, double gap) {
       const double warm = warm_.find(i, j);
-      soft_contacts_.push_back({i, j, nx, ny, gap, 0.0, 0.0, warm > 0 ? warm * warm_scale : 0.0, 0.0});
+      soft_contacts_.push_back({{i, j, nx, ny, 0.0, warm > 0 ? warm * warm_scale : 0.0}, gap, 0.0, 0.0});
     };
     // A pair that can touch within the step, the lower number first, so the warm start finds it
     // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
@@ -974,7 +964,7 @@ class Home final : public Engine {
           const double gap = wall_gap(i, axis, side);
           if (gap >= toward * dt * kSpeedMargin + margin) continue;
           const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
-          add(i, -1 - (2 * axis + side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
+          add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
         }
       }
     };
@@ -1054,7 +1044,7 @@ class Home final : public Engine {
     const int parts = pool_.parts();
     if (listed_) first_pair_events();
     if (parts == 1) {
-      Event ev;
+      PredictedEvent ev;
       for (int i = 0; i < n_; ++i)
         if (active_[i] && first_event(i, ev)) push_event(ev);
     } else {
@@ -1062,12 +1052,12 @@ class Home final : public Engine {
         first_events_[p].clear();
         const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
         const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-        Event ev;
+        PredictedEvent ev;
         for (int i = b; i < e; ++i)
           if (active_[i] && first_event(i, ev)) first_events_[p].push_back(ev);
       });
       for (const auto& events : first_events_)
-        for (const Event& ev : events) push_event(ev);
+        for (const PredictedEvent& ev : events) push_event(ev);
     }
     if (listed_)
       for (const auto& found : approaches_)
@@ -1075,7 +1065,7 @@ class Home final : public Engine {
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
     while (!queue_.empty()) {
-      const Event ev = pop_event();
+      const PredictedEvent ev = pop_event();
       if (count_[ev.i] != ev.ci) continue;  // i collided since: its new event is queued
       if (ev.j >= 0 && count_[ev.j] != ev.cj) {
         predict(ev.i);  // the partner changed course: look again
@@ -1139,20 +1129,20 @@ class Home final : public Engine {
 
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
   // operated exactly as std::priority_queue does (so the order of simultaneous events is too).
-  void push_event(const Event& ev) {
+  void push_event(const PredictedEvent& ev) {
     queue_.push_back(ev);
     std::push_heap(queue_.begin(), queue_.end(), std::greater<>());
   }
-  Event pop_event() {
+  PredictedEvent pop_event() {
     std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
-    const Event ev = queue_.back();
+    const PredictedEvent ev = queue_.back();
     queue_.pop_back();
     return ev;
   }
 
   // Normal approach speed of an event's pair (or ball and wall) at the event time.
-  double impact_speed(const Event& ev) const {
-    if (ev.j < 0) return std::abs(v_(ev.i, (-1 - ev.j) / 2));
+  double impact_speed(const PredictedEvent& ev) const {
+    if (ev.j < 0) return std::abs(v_(ev.i, wall_axis(ev.j)));
     const double dx = p_(ev.i, 0) - p_(ev.j, 0), dy = p_(ev.i, 1) - p_(ev.j, 1);
     const double d = std::sqrt(dx * dx + dy * dy);
     return d > 0 ? -relative_normal_velocity(ev.i, ev.j, dx / d, dy / d) : 0.0;
@@ -1190,7 +1180,7 @@ class Home final : public Engine {
   // ball and wall) approaching so slowly that it would close less than the slop over the step is
   // not an event: that is round-off, and the next contact pass takes care of it.
   void predict(int i) {
-    Event best;
+    PredictedEvent best;
     if (next_event(i, best)) push_event(best);
   }
 
@@ -1200,7 +1190,7 @@ class Home final : public Engine {
   // brought to a common time (x + v 0 is x): the same events, one array fewer to read per partner
   // and less arithmetic (10^6 bowl balls: the first predictions ~15% faster, PERFORMANCE.md 25).
   template <bool kAtStart = false>
-  bool next_event(int i, Event& best) const {
+  bool next_event(int i, PredictedEvent& best) const {
     best = {kNever, i, 0, count_[i], 0};
     const double ti = kAtStart ? 0.0 : t_local_[i];
     const double v_tol = v_tol_;
@@ -1242,7 +1232,7 @@ class Home final : public Engine {
   // With a neighbour list, a ball not near a wall at its build cannot reach one while the list
   // holds, even after collisions (beyond_skin): its walls are not looked at.
   template <bool kAtStart = false>
-  void wall_event(int i, Event& best) const {
+  void wall_event(int i, PredictedEvent& best) const {
     if (!walls_ || (listed_ && !near_wall_mark_[i])) return;
     const double ti = kAtStart ? 0.0 : t_local_[i];
     for (int axis = 0; axis < 2; ++axis) {
@@ -1254,7 +1244,7 @@ class Home final : public Engine {
       // Touching or overlapping by round-off and approaching: collide now (Bannerman et al.,
       // "Stable algorithms for event-driven molecular dynamics", J. Comput. Phys. 2014).
       const double t = ti + std::max(gap, 0.0) / std::abs(v);
-      if (t < best.t) best = {t, i, -1 - (2 * axis + side), count_[i], 0};
+      if (t < best.t) best = {t, i, wall_partner(axis, side), count_[i], 0};
     }
   }
 
@@ -1279,7 +1269,7 @@ class Home final : public Engine {
   }
 
   void collide_wall(int i, int code) {
-    const int axis = (-1 - code) / 2;
+    const int axis = wall_axis(code);
     v_(i, axis) = -e_ * v_(i, axis);
   }
 
@@ -1304,9 +1294,9 @@ class Home final : public Engine {
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   mutable ForkJoin pool_;  // mutable: read() gathers on it too
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: ball pairs within contact reach
-  std::vector<std::vector<Contact>> pair_contacts_;  // per part: their contacts (screen_slots)
+  std::vector<std::vector<PassContact>> pair_contacts_;  // per part: their contacts (screen_slots)
   std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
-  std::vector<std::vector<Event>> first_events_;  // per part: the active balls' events at the start of drift
+  std::vector<std::vector<PredictedEvent>> first_events_;  // per part: the active balls' events at the start of drift
   StartScan start_;                // this step's start_pass, merged
   std::vector<StartScan> start_parts_;  // per part
   bool walls_screened_ = false;   // start_pass did this step's wall screen
@@ -1331,11 +1321,11 @@ class Home final : public Engine {
   long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
   std::vector<int> ball_of_;      // scene index -> ball (balls are renumbered, see reorder_by_cell)
-  std::vector<Contact> contacts_;
+  std::vector<PassContact> contacts_;
   std::vector<int> live_;         // contacts a sweep after the first still visits (see solve_contacts)
   WarmStart warm_;                // impulses at the end of the last contact pass
   std::vector<WarmStart::Entry> warm_entries_;  // scratch for rebuilding warm_
-  std::vector<Event> queue_;      // a min-heap on t, see push_event
+  std::vector<PredictedEvent> queue_;      // a min-heap on t, see push_event
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
   std::vector<SoftContact> soft_contacts_;
   SleepIslands sleep_;  // sleeping (soft path with sleep_speed > 0)

@@ -14,16 +14,16 @@
 // of its own. The caller finds the contacts (every pair and wall that can touch within the step).
 #include <vector>
 
+#include "solver/contact.h"
+
 namespace ballbench {
 
-struct SoftContact {
-  int i, j;            // balls; j < 0: a wall (the caller's code), which never moves
-  double nx, ny;       // unit normal from j (or the wall) towards i, fixed for the step
+// A contact (contact.h) whose normal is fixed for the step; its impulse is one substep's, and in:
+// the warm start.
+struct SoftContact : Contact {
   double gap;          // separation at the start of the step (m); negative when overlapping
-  double mass;         // effective mass along the normal, 1 / (1 / m_i + 1 / m_j) (kg)
   double vn0;          // relative normal velocity at the start of the step (m/s); < 0 approaching
-  double impulse;      // accumulated impulse of one substep (N s), >= 0; in: the warm start
-  double max_impulse;  // the largest it was during the step: restitution only where it pushed
+  double max_impulse;  // the largest the impulse was during the step: restitution only where it pushed
 };
 
 struct SoftStepSettings {
