@@ -14,10 +14,7 @@ void UniformGrid::build(const Eigen::MatrixX2d& pos, double cell) {
   }
   x0_ = pos.col(0).minCoeff(), y0_ = pos.col(1).minCoeff();
   const double w = pos.col(0).maxCoeff() - x0_, h = pos.col(1).maxCoeff() - y0_;
-  // At most ~4 cells per ball: larger cells stay correct (they only add candidates).
-  const double max_cells = 4.0 * n + 16;
-  cell = std::max(cell, 1e-300);
-  while ((std::floor(w / cell) + 1) * (std::floor(h / cell) + 1) > max_cells) cell *= 2;
+  cell = grid_cell(w, h, cell, n);
   cell_ = cell, inv_cell_ = 1.0 / cell;
   nx_ = static_cast<int>(std::floor(w / cell)) + 1;
   ny_ = static_cast<int>(std::floor(h / cell)) + 1;

@@ -2,7 +2,11 @@
 // A uniform grid over ball centres, rebuilt from scratch by a counting sort (O(n), no allocation
 // once warm). Two balls closer than `cell` are always in the same or adjacent cells, so candidate
 // pairs come from a 3 x 3 block. Used by metrics and the scene loader; the home solver has its own
-// copy of the idea specialised for its hot loop (core/solver/home_grid.h).
+// grid specialised for its hot loop (core/solver/home_grid.h); both size their cells by grid_cell.
+// (exact's grid, fixed over the container and crossed by events, tiles the container with cells
+// of its own rule: its trajectories advance at every crossing, so another tiling changes their
+// round-off, and the reference's figures on chaotic scenes with it.)
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -10,6 +14,17 @@
 #include <Eigen/Core>
 
 namespace ballbench {
+
+// The cell rule of the grids over ball centres: cells at least `cell` wide (m), doubled while a
+// grid over a w x h spread of n centres (its first cell at the least centre) would have more than
+// about 4 cells per ball, so sparse or far-flung scenes cost no more memory than dense ones.
+// Larger cells stay correct: they only add candidates.
+inline double grid_cell(double w, double h, double cell, int n) {
+  const double max_cells = 4.0 * n + 16;
+  cell = std::max(cell, 1e-300);
+  while ((std::floor(w / cell) + 1) * (std::floor(h / cell) + 1) > max_cells) cell *= 2;
+  return cell;
+}
 
 class UniformGrid {
  public:

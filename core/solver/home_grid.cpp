@@ -33,10 +33,7 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius,
   }
   x0_ = bounds->v[0], y0_ = bounds->v[1];
   const double w = bounds->v[2] - x0_, h = bounds->v[3] - y0_;
-  // As UniformGrid::build: at most ~4 cells per ball (larger cells stay correct).
-  const double max_cells = 4.0 * n + 16;
-  cell = std::max(cell, 1e-300);
-  while ((std::floor(w / cell) + 1) * (std::floor(h / cell) + 1) > max_cells) cell *= 2;
+  cell = grid_cell(w, h, cell, n);
   inv_cell_ = 1.0 / cell;
   nx_ = static_cast<int>(std::floor(w / cell)) + 1 + 2;  // + the empty ring
   ny_ = static_cast<int>(std::floor(h / cell)) + 1 + 2;

@@ -6,8 +6,8 @@
 // identity and its pair screen reads the state through it: a copy of positions and velocities in
 // cell order every step cost more than it saved (10^6 bowl balls: PERFORMANCE.md, section 29).
 //
-// Cells and origin are chosen exactly as UniformGrid chooses them (core/uniform_grid.h), so the
-// candidate pairs, and the order the contact pass sees them in, are the ones the solver had before.
+// Cells follow the project's cell rule (grid_cell, core/uniform_grid.h) and start at the least
+// centre, as UniformGrid's do.
 #include <algorithm>
 #include <array>
 #include <cmath>
