@@ -260,12 +260,8 @@ class Home final : public Engine {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
       std::vector<int>& near = wall_hits_[p];
-      if (screen)
-        start_parts_[p] = sc_.equal_radii ? scan_range<true, true, true, true>(b, e, reach, near)
-                                          : scan_range<false, true, true, true>(b, e, reach, near);
-      else
-        start_parts_[p] = sc_.equal_radii ? scan_range<true, true, true, false>(b, e, reach, near)
-                                          : scan_range<false, true, true, false>(b, e, reach, near);
+      start_parts_[p] = screen ? scan<Scan{.start = true, .screen = true}>(b, e, reach, near)
+                               : scan<Scan{.start = true}>(b, e, reach, near);
     });
     unfinished_dt_ = 0;
     start_ = StartScan{};
@@ -583,11 +579,9 @@ class Home final : public Engine {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
       if (sc_.elastic)
-        sc_.equal_radii ? scan_range<true, false, false, true>(b, e, reach, wall_hits_[p])
-                        : scan_range<false, false, false, true>(b, e, reach, wall_hits_[p]);
+        scan<Scan{.contacts = false, .screen = true}>(b, e, reach, wall_hits_[p]);
       else
-        sc_.equal_radii ? scan_range<true, true, false, true>(b, e, reach, wall_hits_[p])
-                        : scan_range<false, true, false, true>(b, e, reach, wall_hits_[p]);
+        scan<Scan{.screen = true}>(b, e, reach, wall_hits_[p]);
     });
   }
 
@@ -608,13 +602,28 @@ class Home final : public Engine {
     return {x - r - box_.min(0), box_.max(0) - r - x, y - r - box_.min(1), box_.max(1) - r - y};
   }
 
-  // Balls [b, e): with kScreen the wall screen (screen_walls); kContacts false (the elastic
-  // shortcut): no contact pass, so touching a wall is no reason to be predicted and no ball is
-  // listed; an approach within the step still is. With kStart (start_pass) each ball is first
-  // brought to the end of the last step (if unfinished) and kicked, and the speeds and positions
-  // are returned (else an empty StartScan).
-  template <bool kEqualRadii, bool kContacts, bool kStart, bool kScreen>
+  // What a pass of scan_range over balls does; each set is its own compiled loop.
+  struct Scan {
+    bool equal_radii = false;  // every ball has radius r0_ (scan sets it from the shortcut)
+    // A contact pass follows: a ball touching a wall is active and listed. False for the elastic
+    // shortcut: no contact pass, so touching a wall is no reason to be predicted and no ball is
+    // listed; an approach within the step still is.
+    bool contacts = true;
+    // start_pass: each ball is first brought to the end of the last step (if unfinished) and
+    // kicked, and the speeds and positions are returned (else an empty StartScan).
+    bool start = false;
+    bool screen = false;  // the wall screen (screen_walls)
+  };
+  template <Scan kScan>
+  StartScan scan(int b, int e, double reach, std::vector<int>& near) {
+    constexpr Scan equal{.equal_radii = true, .contacts = kScan.contacts, .start = kScan.start, .screen = kScan.screen};
+    return sc_.equal_radii ? scan_range<equal>(b, e, reach, near) : scan_range<kScan>(b, e, reach, near);
+  }
+  // Balls [b, e), as kScan says.
+  template <Scan kScan>
   StartScan scan_range(int b, int e, double reach, std::vector<int>& near) {
+    constexpr bool kEqualRadii = kScan.equal_radii, kContacts = kScan.contacts, kStart = kScan.start,
+                   kScreen = kScan.screen;
     const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
     double* __restrict x = p_.col(0).data();
     double* __restrict y = p_.col(1).data();
