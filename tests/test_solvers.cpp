@@ -59,8 +59,8 @@ TEST_P(HomeOnTheBowl, NeitherTunnelsNorSticksAtOtherSteps) {
 INSTANTIATE_TEST_SUITE_P(Steps, HomeOnTheBowl, ::testing::Values(0.0025, 0.005, 0.02, 0.03));
 
 // The same pile with its balls in other orders: the order of the contact solves changes, and with it
-// every trajectory. Bounce targets inside those solves once blew this pile apart on some orders
-// (energy 10^5 times its start within one step; core/solver/PERFORMANCE.md, section 31).
+// every trajectory. Bounce targets inside those solves blow this pile apart on some orders (energy
+// 10^5 times its start within one step), which is why impacts are never bounce targets.
 TEST(HomeOnTheBowl, HoldsInAnyBallOrder) {
   const Scene scene = load_scene("seed-bowl");
   std::mt19937 rng(11);

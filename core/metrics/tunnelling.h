@@ -88,7 +88,7 @@ class TunnellingCheck {
  public:
   // `threads` 0: one below kParallelBalls balls, else the machine's cores (at most 8).
   TunnellingCheck(const Eigen::VectorXd& radius, const Container& box, double tolerance, int threads = 0);
-  // Measured (bench/harness_benchmark.cpp, PERFORMANCE.md "Harness overhead").
+  // Below it the hand-overs cost more than a second core saves (bench/harness_benchmark.cpp).
   static constexpr int kParallelBalls = 50'000;
 
   StepTunnelling step(const State& prev, const State& cur);

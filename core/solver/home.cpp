@@ -38,16 +38,15 @@ constexpr int kClusterIterations = 200;
 // Fraction of its gap a speculative contact may close in one step (see add_contact).
 constexpr double kSpeculativeFraction = 0.5;
 // From this many balls the per-ball loops run on every core. A hand-over costs ~7 us and a step
-// has about a dozen; two threads lost at 10^4, 2 x 10^4 and 5 x 10^4 balls in every run, were a
-// toss-up at 10^5 and won at 10^6 (PERFORMANCE.md, round 2).
+// has about a dozen: two threads lose below 10^5 balls, break even there and win at 10^6
+// (ballbench_home_benchmark's home/threads/; PERFORMANCE.md, "Threads").
 constexpr int kParallelBalls = 100'000;
 // Every this many steps the balls are renumbered in the grid's cell order, so that neighbours in
-// space are neighbours in memory (measured at 10^4 .. 10^6 balls: PERFORMANCE.md). Balls drift by
-// under a cell per step, so the order stays good for a while; read() maps back to the scene's order.
-// Only from kReorderBalls balls: it was measured to pay from 10^4 (not below), and renumbering
-// changes the order of the contact solve, to which seed-bowl is sensitive (a known issue,
-// PERFORMANCE.md: permuting its balls in the scene file makes it diverge, with or without
-// renumbering); every scene in tests/ and the regression suite is far below 10^4 balls.
+// space are neighbours in memory (home/reorder/ in ballbench_home_benchmark; PERFORMANCE.md,
+// "Renumbering"). Balls drift by under a cell per step, so the order stays good for a while; read()
+// maps back to the scene's order. Only from kReorderBalls balls, where it pays: renumbering
+// changes the order of the contact solve, and so the trajectory of every scene in tests/ and the
+// regression suite, all far below 10^4 balls.
 constexpr int kReorderSteps = 16;
 constexpr int kReorderBalls = 10'000;
 // The soft step's contacts reach this fraction of the largest radius beyond what the balls' motion
@@ -248,8 +247,8 @@ class Home final : public Engine {
   // The first pass over the balls without a neighbour list, in parallel: the end of the last step
   // (each ball from its own clock to the step's end, as finish_step does with a list), the kick
   // (symplectic Euler's velocity update), then the largest speed and the positions' bounds for the
-  // grid, and the wall screen (screen_walls) unless a renumbering is due. One read of the state
-  // instead of five (10^6 bowl balls: PERFORMANCE.md, sections 21 and 27).
+  // grid, and the wall screen (screen_walls) unless a renumbering is due: one read of the state
+  // instead of five.
   void start_pass() {
     const int parts = pool_.parts();
     const bool screen = walls_ && !sc_.no_walls && !renumber_due();
@@ -377,10 +376,9 @@ class Home final : public Engine {
   // The velocity constraint of one contact, for the sequential-impulse solve:
   // - approaching faster than v_rest, touching or not: an impact, left to the exact event loop (a
   //   touching pair that approaches is collided at once there, pair by pair, each impact losing
-  //   energy to restitution). Bounce targets (-e vn) inside the solve, as this once had, can feed on
-  //   each other in a jammed cluster: the cluster solves of seed-bowl's pile escalated to ~10^5 m/s
-  //   within one step on 4 of 17 runs, and a fifth gained 50x its energy (shuffled ball orders,
-  //   other steps; PERFORMANCE.md, section 31);
+  //   energy to restitution). Bounce targets (-e vn) inside the solve cannot all be met in a jammed
+  //   cluster, and then the cluster solves of one step feed on each other (seed-bowl's pile, in
+  //   some ball orders, escalates to ~10^5 m/s within one step: HomeOnTheBowl.HoldsInAnyBallOrder);
   // - touching and slower: resting contact, target 0 (do not approach). Not a small separation:
   //   a jammed chain (seed-bowl's row of 20 balls spans its 10 m box exactly, wall to wall) cannot
   //   separate everywhere at once, and an infeasible target keeps the solve from converging. What
@@ -461,10 +459,9 @@ class Home final : public Engine {
   // first update solves it: it ends at its target with a positive impulse (the update's algebra
   // gives the relative normal velocity exactly the target, up to round-off), or with none and
   // separating faster. Later sweeps skip it. Visited again, it would only move by round-off (an
-  // ulp-level walk of its impulse that kept ~8 000 isolated contacts in every sweep at 10^6 bowl
-  // balls, ~100 000 updates a step; PERFORMANCE.md, section 32), far below any tolerance, so it
-  // cannot decide whether another sweep is needed. In a falling gas most contacts are isolated
-  // pairs, close but parting (10^6 bowl balls: ~25 000 contacts, half of them such, 10-16 sweeps).
+  // ulp-level walk of its impulse), far below any tolerance, so it cannot decide whether another
+  // sweep is needed. In a falling gas most contacts are isolated pairs, close but parting (10^6
+  // bowl balls: ~25 000 contacts, half of them such).
   double solve_contacts(int sweeps, double tolerance) {
     double worst = kNever;  // largest violation seen in the last sweep (m/s)
     const auto update = [&](PassContact& c) {
@@ -687,14 +684,12 @@ class Home final : public Engine {
   }
 
   // The screen's kernel over slots [s0, s1), reading the state through the slot -> ball map (nearly
-  // the identity between renumberings, so nearly front to back; a cell-ordered copy made every
-  // step cost more: PERFORMANCE.md, section 29). The rare outcome (a contact, or an approach within
-  // the step) takes one branch, decided by both tests at once.
-  // Tried and not kept (PERFORMANCE.md): blocks of four candidates without loop branches (slower).
-  // The part then makes its pairs' contacts, from the state it has just read, rather than a serial
-  // pass over all pairs afterwards (10^6 bowl balls, ~25 000 contacts: ~2 ms a step; PERFORMANCE.md,
-  // section 27), by add_pair_contact's expressions (make_pair_contact). Made inside the kernel
-  // instead, they slowed the sweep itself by ~1 ms.
+  // the identity between renumberings, so nearly front to back). The rare outcome (a contact, or
+  // an approach within the step) takes one branch, decided by both tests at once, and the kernel
+  // only records the pair: making the contact inside it would grow the rare branch and slow the
+  // sweep. The part then makes its pairs' contacts, from the state it has just read, in parallel
+  // (a serial pass over all pairs afterwards would read the state again), by add_pair_contact's
+  // expressions (make_pair_contact).
   template <bool kEqualRadii>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<PassContact>& found) {
     const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
@@ -1197,7 +1192,7 @@ class Home final : public Engine {
   // Reads the state only, so the first predictions of a step may run in parallel (see drift).
   // kAtStart: every ball's clock is 0 (the start of drift), so no clock is read and no ball is
   // brought to a common time (x + v 0 is x): the same events, one array fewer to read per partner
-  // and less arithmetic (10^6 bowl balls: the first predictions ~15% faster, PERFORMANCE.md 25).
+  // and less arithmetic.
   template <bool kAtStart = false>
   bool next_event(int i, PredictedEvent& best) const {
     best = {kNever, i, 0, count_[i], 0};

@@ -68,8 +68,8 @@ struct HomeSettings {
   int threads = 0;      // threads for the per-ball loops; 0: all cores from 100 000 balls, else 1
   int reorder_steps = -1;  // renumber balls in cell order every this many steps; 0 never; -1: 16 from 10 000 balls
   // Elastic scenes' neighbour list: its skin lets the fastest ball at the build move for this many
-  // steps (2 measured best at 10^4 gas balls once the final advance measured the check: PERFORMANCE.md,
-  // section 12).
+  // steps (shorter lists rebuild more often, longer ones screen more pairs: 2 is the fastest at 10^4
+  // gas balls).
   double list_steps = 2.0;
 };
 

@@ -77,9 +77,8 @@ void HomeGrid::build(const Eigen::MatrixX2d& pos, const Eigen::VectorXd& radius,
   // then it counts the strays others listed for it, takes the running sums over its cells, and
   // places its balls from the last backwards (the strays of later ranges, its own range, the strays
   // of earlier ones: ball order), which leaves each cell's first slot in start_. The same slots for
-  // any cuts and any number of parts; each part reads n / parts cells plus the strays, where it
-  // read all n twice before (10^6 bowl balls, the sort from cell indices to placing: 6.0 - 7.6 ->
-  // 4.7 - 5.7 ms a step; PERFORMANCE.md, section 25).
+  // any cuts and any number of parts; each part reads n / parts cells plus the strays, instead of
+  // every ball's cell twice (counting and placing) for one shared histogram.
   start_.resize(cells + 1);
   pool.run([&](int p) {
     const long b = ForkJoin::range_begin(n, p, parts), e = ForkJoin::range_begin(n, p + 1, parts);

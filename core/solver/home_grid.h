@@ -3,8 +3,8 @@
 // request a copy of the positions in cell order (for the neighbour list's build).
 // The balls themselves are not moved here. The solver renumbers them in the grid's cell order every
 // few steps (Home::reorder_by_cell), so between renumberings the slot -> ball map is nearly the
-// identity and its pair screen reads the state through it: a copy of positions and velocities in
-// cell order every step cost more than it saved (10^6 bowl balls: PERFORMANCE.md, section 29).
+// identity and its pair screen reads the state through it, which costs less than copying positions
+// and velocities into cell order every step (core/solver/PERFORMANCE.md, "Broad phase").
 //
 // Cells follow the project's cell rule (grid_cell, core/uniform_grid.h) and start at the least
 // centre, as UniformGrid's do.
