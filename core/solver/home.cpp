@@ -17,6 +17,7 @@
 #include "fork_join.h"
 #include "solver/contact.h"
 #include "solver/home_grid.h"
+#include "solver/home_world.h"
 #include "solver/neighbour_list.h"
 #include "solver/sleep_islands.h"
 #include "solver/soft_step.h"
@@ -114,18 +115,9 @@ class Home final : public Engine {
       : s_(s),
         sc_(shortcuts(scene, s.allow, s.rest_velocity)),
         reorder_(reorder_steps(scene.n(), s.reorder_steps)),
-        n_(scene.n()),
-        e_(scene.restitution),
-        g_(scene.gravity),
-        box_(scene.container),
-        walls_(scene.container.kind == ContainerKind::Box),
+        w_(scene, sc_.equal_radii, sc_.equal_masses),
+        n_(w_.n),
         listed_(sc_.elastic && !sc_.no_pairs),
-        r0_(n_ > 0 ? scene.radius(0) : 0.0),
-        inv_m0_(n_ > 0 ? 1.0 / scene.mass(0) : 0.0),
-        rmax_(scene.radius.maxCoeff()),
-        rmin_(n_ > 0 ? scene.radius.minCoeff() : 0.0),
-        p_(scene.initial.pos),
-        v_(scene.initial.vel),
         t_local_(n_),
         count_(n_, 0),
         in_cluster_(n_, 0),
@@ -138,12 +130,7 @@ class Home final : public Engine {
         approaches_(pool_.parts()),
         extent_(pool_.parts()),
         soft_(s.resting == "soft" && scene.features().gravity) {
-    // One radius or one mass for all: the arrays are not kept (8 bytes per ball each).
-    if (!sc_.equal_radii) r_ = scene.radius;
-    if (!sc_.equal_masses) inv_m_ = scene.mass.cwiseInverse();
     if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
-    ball_of_.resize(n_);
-    for (int i = 0; i < n_; ++i) ball_of_[i] = i;
     if (soft_ && s.sleep_speed > 0) sleep_ = SleepIslands(n_, s.sleep_speed, s.sleep_time);
   }
 
@@ -151,7 +138,7 @@ class Home final : public Engine {
     ++steps_;
     t_ += dt;
     dt_ = dt;
-    v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * g_.norm() * dt;
+    v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * w_.g.norm() * dt;
     if (soft_) return soft_path();
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
@@ -161,8 +148,8 @@ class Home final : public Engine {
     if (!listed_) {
       start_pass();
     } else if (!sc_.no_gravity) {
-      v_.col(0).array() += g_.x() * dt;
-      v_.col(1).array() += g_.y() * dt;
+      w_.v.col(0).array() += w_.g.x() * dt;
+      w_.v.col(1).array() += w_.g.y() * dt;
     }
     build_broad_phase(dt);
     v_tol_ = velocity_tolerance();
@@ -181,18 +168,18 @@ class Home final : public Engine {
     const double end = unfinished_dt_;
     const double* __restrict tl = t_local_.data();
     if (!renumbered_ && end == 0) {
-      out.pos = p_, out.vel = v_;
+      out.pos = w_.p, out.vel = w_.v;
       return;
     }
     // A gather through the renumbering (random reads): on the step's threads, each part over its
     // own range of the scene's order.
-    const int* at = renumbered_ ? ball_of_.data() : nullptr;
+    const int* at = renumbered_ ? w_.ball_of.data() : nullptr;
     const int parts = pool_.parts();
     pool_.run([&](int part) {
       const long b = ForkJoin::range_begin(n_, part, parts), e = ForkJoin::range_begin(n_, part + 1, parts);
       for (int c = 0; c < 2; ++c) {
-        const double* __restrict p = p_.col(c).data();
-        const double* __restrict v = v_.col(c).data();
+        const double* __restrict p = w_.p.col(c).data();
+        const double* __restrict v = w_.v.col(c).data();
         double* __restrict op = out.pos.col(c).data();
         double* __restrict ov = out.vel.col(c).data();
         if (end == 0)
@@ -233,13 +220,13 @@ class Home final : public Engine {
   // it does not (in mid-step, rebuild_mid_step rebuilds it itself).
   void build_broad_phase(double horizon, bool mid_step = false) {
     if (listed_) {
-      if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, p_, start_speed());
+      if (!mid_step && !list_covers(horizon)) rebuild_list(horizon, true, w_.p, start_speed());
       return;
     }
     // At the start of a step start_pass has measured the speeds and bounds; in mid-step they are taken afresh.
     vbound_ = (mid_step ? max_speed() : std::sqrt(start_.speed2)) * kSpeedMargin;
     if (sc_.no_pairs) return;
-    grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * vbound_ * horizon, pool_, false, mid_step ? nullptr : &start_.bounds);
+    grid_.build(w_.p, w_.r, 2.0 * w_.rmax + 2.0 * vbound_ * horizon, pool_, false, mid_step ? nullptr : &start_.bounds);
     // A renumbering moves the balls: the wall screen start_pass did is done again after it.
     if (!mid_step && renumber_if_due()) walls_screened_ = false;
   }
@@ -251,7 +238,7 @@ class Home final : public Engine {
   // instead of five.
   void start_pass() {
     const int parts = pool_.parts();
-    const bool screen = walls_ && !sc_.no_walls && !renumber_due();
+    const bool screen = w_.walls && !sc_.no_walls && !renumber_due();
     const double reach = v_rest_ * dt_;
     start_parts_.resize(parts);
     pool_.run([&](int p) {
@@ -278,7 +265,7 @@ class Home final : public Engine {
     return true;
   }
 
-  double max_speed() const { return n_ > 0 ? std::sqrt(v_.rowwise().squaredNorm().maxCoeff()) : 0.0; }
+  double max_speed() const { return n_ > 0 ? std::sqrt(w_.v.rowwise().squaredNorm().maxCoeff()) : 0.0; }
 
   // Every ball stays within half the skin of where it was at the list's build over the next
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
@@ -302,14 +289,14 @@ class Home final : public Engine {
   }
 
   bool beyond_skin(int i, double t) const {
-    return (p_.row(i) - built_at_.row(i)).norm() + v_.row(i).norm() * (dt_ - t) > half_skin_;
+    return (w_.p.row(i) - built_at_.row(i)).norm() + w_.v.row(i).norm() * (dt_ - t) > half_skin_;
   }
 
   // A fresh neighbour list from the positions now: a grid with cells of 2 r_max + skin, its
   // adjacent pairs closer than r_i + r_j + skin kept. The skin lets the fastest ball move for
   // list_steps steps (and at least over `horizon`). Renumbering in cell order, when due, happens
   // here, on this grid, so the list is built in the new numbers.
-  // `at`: every ball's position now (p_ at the start of a step; in mid-step, where each ball's line
+  // `at`: every ball's position now (w_.p at the start of a step; in mid-step, where each ball's line
   // has taken it, the balls themselves left where they are, so a rebuild changes no trajectory).
   // `vmax`: the largest speed now.
   void rebuild_list(double horizon, bool may_renumber, const Eigen::MatrixX2d& at, double vmax) {
@@ -317,24 +304,24 @@ class Home final : public Engine {
     half_skin_ = vmax * std::max(s_.list_steps * dt_, horizon) * (1.0 + 1e-9);
     for (int i : near_wall_) near_wall_mark_[i] = 0;  // in the numbers before a renumbering
     // The list is built from the grid's copy of the positions.
-    grid_.build(at, r_, 2.0 * rmax_ + 2.0 * half_skin_, pool_, true);
-    // Renumbering (at the start of a step only, where `at` is p_) leaves the grid's slot -> ball map
-    // the identity and p_ in the new order: the list and built_at_ then use the new numbers.
+    grid_.build(at, w_.r, 2.0 * w_.rmax + 2.0 * half_skin_, pool_, true);
+    // Renumbering (at the start of a step only, where `at` is w_.p) leaves the grid's slot -> ball map
+    // the identity and w_.p in the new order: the list and built_at_ then use the new numbers.
     if (may_renumber) renumber_if_due();
-    list_.build(grid_, sc_.equal_radii, r0_, 2.0 * half_skin_, pool_);
+    list_.build(grid_, sc_.equal_radii, w_.r0, 2.0 * half_skin_, pool_);
     built_at_ = at;
     // A ball farther than 2 half_skin from every wall now starts each step the list covers within
     // half_skin - |v| dt of here (list_covers), so more than half_skin + |v| dt from every wall: it
     // cannot reach one before a collision changes its course (and then it is predicted anyway).
     // Only the grid's edge cells can hold such a ball: the rest are not looked at.
     near_wall_.clear();
-    if (!walls_) return;
-    const double reach = rmax_ + 2.0 * half_skin_;
+    if (!w_.walls) return;
+    const double reach = w_.rmax + 2.0 * half_skin_;
     const int* id = grid_.id();
-    grid_.for_each_slot_beyond(box_.min(0) + reach, box_.max(0) - reach, box_.min(1) + reach, box_.max(1) - reach,
+    grid_.for_each_slot_beyond(w_.box.min(0) + reach, w_.box.max(0) - reach, w_.box.min(1) + reach, w_.box.max(1) - reach,
                                [&](int s) {
                                  const int i = id[s];
-                                 const auto [gx0, gx1, gy0, gy1] = wall_gaps(built_at_(i, 0), built_at_(i, 1), radius(i));
+                                 const auto [gx0, gx1, gy0, gy1] = wall_gaps(built_at_(i, 0), built_at_(i, 1), w_.radius(i));
                                  if (std::min(std::min(gx0, gx1), std::min(gy0, gy1)) <= 2.0 * half_skin_)
                                    near_wall_.push_back(i);
                                });
@@ -343,33 +330,27 @@ class Home final : public Engine {
 
 
   // One branch on a flag fixed at construction; the hot pair screen is compiled per case instead.
-  double radius(int i) const { return sc_.equal_radii ? r0_ : r_(i); }
-  double inv_mass(int i) const { return sc_.equal_masses ? inv_m0_ : inv_m_(i); }
 
   // A gap below this counts as touching: the contact slop times the radius sum (of a pair, or of a
   // ball alone at a wall). The hot kernels (scan_range, screen_slots) keep the slop in a local and
   // apply the same product.
   double touching_gap(double radius_sum) const { return s_.contact_slop * radius_sum; }
-  double touch_pair(int i, int j) const { return touching_gap(radius(i) + radius(j)); }
-  double touch_wall(int i) const { return touching_gap(radius(i)); }
+  double touch_pair(int i, int j) const { return touching_gap(w_.radius(i) + w_.radius(j)); }
+  double touch_wall(int i) const { return touching_gap(w_.radius(i)); }
 
-  // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
-  double wall_gap(int i, int axis, int side) const {
-    return side == 0 ? p_(i, axis) - radius(i) - box_.min(axis) : box_.max(axis) - radius(i) - p_(i, axis);
-  }
 
   double relative_normal_velocity(int i, int j, double nx, double ny) const {
-    double wx = v_(i, 0), wy = v_(i, 1);
-    if (j >= 0) wx -= v_(j, 0), wy -= v_(j, 1);
+    double wx = w_.v(i, 0), wy = w_.v(i, 1);
+    if (j >= 0) wx -= w_.v(j, 0), wy -= w_.v(j, 1);
     return wx * nx + wy * ny;
   }
 
   void apply_impulse(int i, int j, double nx, double ny, double J) {
-    const double mi = inv_mass(i);
-    v_(i, 0) += J * mi * nx, v_(i, 1) += J * mi * ny;
+    const double mi = w_.inv_mass(i);
+    w_.v(i, 0) += J * mi * nx, w_.v(i, 1) += J * mi * ny;
     if (j >= 0) {
-      const double mj = inv_mass(j);
-      v_(j, 0) -= J * mj * nx, v_(j, 1) -= J * mj * ny;
+      const double mj = w_.inv_mass(j);
+      w_.v(j, 0) -= J * mj * nx, w_.v(j, 1) -= J * mj * ny;
     }
   }
 
@@ -406,7 +387,7 @@ class Home final : public Engine {
     if (touching) target = close_overlap ? std::min(std::max(-gap, 0.0) / horizon, v_rest_) : 0.0;
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
-    const double eff = 1.0 / (inv_mass(i) + (j >= 0 ? inv_mass(j) : 0.0));
+    const double eff = 1.0 / (w_.inv_mass(i) + (j >= 0 ? w_.inv_mass(j) : 0.0));
     c = {{i, j, nx, ny, eff, 0.0}, target, false};
     return true;
   }
@@ -420,10 +401,10 @@ class Home final : public Engine {
 
   // Adds a contact for every wall within max(touch, reach) of ball i.
   void add_wall_contacts(int i, double reach, double horizon, bool close_overlap) {
-    if (!walls_) return;
+    if (!w_.walls) return;
     for (int axis = 0; axis < 2; ++axis)
       for (int side = 0; side < 2; ++side) {
-        const double gap = wall_gap(i, axis, side), touch = touch_wall(i);
+        const double gap = w_.wall_gap(i, axis, side), touch = touch_wall(i);
         if (gap >= std::max(touch, reach)) continue;
         const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
         add_contact(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap, touch, horizon,
@@ -433,12 +414,12 @@ class Home final : public Engine {
 
   // Adds the contact of pair (i, j) if their gap is below max(touch, reach); returns whether it was.
   bool add_pair_contact(int i, int j, double reach, double horizon, bool close_overlap) {
-    const double dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
-    const double rs = radius(i) + radius(j), limit = rs + std::max(touch_pair(i, j), reach);
+    const double dx = w_.p(i, 0) - w_.p(j, 0), dy = w_.p(i, 1) - w_.p(j, 1);
+    const double rs = w_.radius(i) + w_.radius(j), limit = rs + std::max(touch_pair(i, j), reach);
     const double d2 = dx * dx + dy * dy;
     if (d2 >= limit * limit || d2 == 0) return false;  // squared first: most candidates are far
     PassContact c;
-    if (make_pair_contact(i, j, dx, dy, d2, v_(i, 0) - v_(j, 0), v_(i, 1) - v_(j, 1), rs, horizon, close_overlap, c))
+    if (make_pair_contact(i, j, dx, dy, d2, w_.v(i, 0) - w_.v(j, 0), w_.v(i, 1) - w_.v(j, 1), rs, horizon, close_overlap, c))
       contacts_.push_back(c);
     return true;
   }
@@ -529,7 +510,7 @@ class Home final : public Engine {
       // Only balls near a wall when the list was built can reach one before it expires.
       std::fill(active_.begin(), active_.end(), 0);
       const double k = dt_ * (1.0 + 1e-9);
-      for (int i : near_wall_) active_[i] = reaches_wall(p_(i, 0), p_(i, 1), v_(i, 0), v_(i, 1), radius(i), k);
+      for (int i : near_wall_) active_[i] = reaches_wall(w_.p(i, 0), w_.p(i, 1), w_.v(i, 0), w_.v(i, 1), w_.radius(i), k);
     } else {
       if (!walls_screened_) screen_walls(reach);
       for (const auto& near : wall_hits_)
@@ -596,12 +577,12 @@ class Home final : public Engine {
   }
   // Gaps (m) between a ball at (x, y) of radius r and the walls: min x, max x, min y, max y.
   std::array<double, 4> wall_gaps(double x, double y, double r) const {
-    return {x - r - box_.min(0), box_.max(0) - r - x, y - r - box_.min(1), box_.max(1) - r - y};
+    return {x - r - w_.box.min(0), w_.box.max(0) - r - x, y - r - w_.box.min(1), w_.box.max(1) - r - y};
   }
 
   // What a pass of scan_range over balls does; each set is its own compiled loop.
   struct Scan {
-    bool equal_radii = false;  // every ball has radius r0_ (scan sets it from the shortcut)
+    bool equal_radii = false;  // every ball has radius w_.r0 (scan sets it from the shortcut)
     // A contact pass follows: a ball touching a wall is active and listed. False for the elastic
     // shortcut: no contact pass, so touching a wall is no reason to be predicted and no ball is
     // listed; an approach within the step still is.
@@ -622,21 +603,21 @@ class Home final : public Engine {
     constexpr bool kEqualRadii = kScan.equal_radii, kContacts = kScan.contacts, kStart = kScan.start,
                    kScreen = kScan.screen;
     const double k = dt_ * (1.0 + 1e-9), slop = s_.contact_slop;
-    double* __restrict x = p_.col(0).data();
-    double* __restrict y = p_.col(1).data();
+    double* __restrict x = w_.p.col(0).data();
+    double* __restrict y = w_.p.col(1).data();
     double* __restrict tl = t_local_.data();
     const double end = unfinished_dt_;
-    double* __restrict vx = v_.col(0).data();
-    double* __restrict vy = v_.col(1).data();
-    const double* __restrict rad = r_.data();
+    double* __restrict vx = w_.v.col(0).data();
+    double* __restrict vy = w_.v.col(1).data();
+    const double* __restrict rad = w_.r.data();
     uint8_t* __restrict active = active_.data();
-    const double x0 = box_.min(0), x1 = box_.max(0), y0 = box_.min(1), y1 = box_.max(1), r0 = r0_;
-    if (kScreen && !walls_) {  // open space without the no-walls shortcut: nothing reaches a wall
+    const double x0 = w_.box.min(0), x1 = w_.box.max(0), y0 = w_.box.min(1), y1 = w_.box.max(1), r0 = w_.r0;
+    if (kScreen && !w_.walls) {  // open space without the no-walls shortcut: nothing reaches a wall
       std::fill(active + b, active + e, 0);
       if (!kStart) return {};
     }
     const bool kick = kStart && !sc_.no_gravity;
-    const double gx = g_.x() * dt_, gy = g_.y() * dt_;
+    const double gx = w_.g.x() * dt_, gy = w_.g.y() * dt_;
     StartScan q;
     for (int i = b; i < e; ++i) {
       if constexpr (kStart) {
@@ -647,7 +628,7 @@ class Home final : public Engine {
         if (kick) vx[i] += gx, vy[i] += gy;  // as the Eigen kick: v + g dt, each component
         q.add(x[i], y[i], vx[i] * vx[i] + vy[i] * vy[i]);
       }
-      if (!kScreen || !walls_) continue;
+      if (!kScreen || !w_.walls) continue;
       const double r = kEqualRadii ? r0 : rad[i];
       const double gx0 = x[i] - r - x0, gx1 = x1 - r - x[i], gy0 = y[i] - r - y0, gy1 = y1 - r - y[i];
       const bool hit = reaches_wall(gx0, gx1, gy0, gy1, vx[i], vy[i], k);
@@ -692,13 +673,13 @@ class Home final : public Engine {
   // expressions (make_pair_contact).
   template <bool kEqualRadii>
   void screen_slots(int s0, int s1, double reach, std::vector<std::pair<int, int>>& hits, std::vector<PassContact>& found) {
-    const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = r0_ + r0_;
+    const double slop = s_.contact_slop, two = 2.0, dt = dt_, rs0 = w_.r0 + w_.r0;
     const double lim0 = rs0 + std::max(slop * rs0, reach), lim0_2 = lim0 * lim0, rs0_2 = rs0 * rs0;
-    const double* __restrict x = p_.col(0).data();
-    const double* __restrict y = p_.col(1).data();
-    const double* __restrict vx = v_.col(0).data();
-    const double* __restrict vy = v_.col(1).data();
-    const double* __restrict r = r_.data();
+    const double* __restrict x = w_.p.col(0).data();
+    const double* __restrict y = w_.p.col(1).data();
+    const double* __restrict vx = w_.v.col(0).data();
+    const double* __restrict vy = w_.v.col(1).data();
+    const double* __restrict r = w_.r.data();
     const int* __restrict id = grid_.id();
     uint8_t* active = active_.data();
     grid_.for_each_forward_pair(s0, s1, [&](int sa, int sb) {
@@ -748,17 +729,17 @@ class Home final : public Engine {
   void screen_list() {
     const int parts = pool_.parts();
     const long m = list_.pairs();
-    const double dt = dt_, two = 2.0, rs0_2 = 4.0 * r0_ * r0_;
+    const double dt = dt_, two = 2.0, rs0_2 = 4.0 * w_.r0 * w_.r0;
     pool_.run([&](int p) {
       std::vector<Approach>& found = approaches_[p];
       found.clear();
       const long k0 = ForkJoin::range_begin(m, p, parts), k1 = ForkJoin::range_begin(m, p + 1, parts);
       const int* __restrict first = list_.first();
       const int* __restrict second = list_.second();
-      const double* __restrict x = p_.col(0).data();
-      const double* __restrict y = p_.col(1).data();
-      const double* __restrict vx = v_.col(0).data();
-      const double* __restrict vy = v_.col(1).data();
+      const double* __restrict x = w_.p.col(0).data();
+      const double* __restrict y = w_.p.col(1).data();
+      const double* __restrict vx = w_.v.col(0).data();
+      const double* __restrict vy = w_.v.col(1).data();
       uint8_t* active = active_.data();
       for (long k = k0; k < k1; ++k) {
         const int a = first[k], b = second[k];
@@ -767,13 +748,13 @@ class Home final : public Engine {
         const double d2 = dx * dx + dy * dy, bb = dx * wx + dy * wy;
         double rs2 = rs0_2;
         if constexpr (!kEqualRadii) {
-          const double rs = r_(a) + r_(b);
+          const double rs = w_.r(a) + w_.r(b);
           rs2 = rs * rs;
         }
         if ((bb < 0) & ((d2 - rs2) + two * bb * dt <= 0)) [[unlikely]] {
           std::atomic_ref<uint8_t>(active[a]).store(1, std::memory_order_relaxed);
           std::atomic_ref<uint8_t>(active[b]).store(1, std::memory_order_relaxed);
-          const double rs = radius(a) + radius(b), touch = rs + touch_pair(a, b);
+          const double rs = w_.radius(a) + w_.radius(b), touch = rs + touch_pair(a, b);
           // next_event's expressions from t0 = 0 (0 + t is t): the pair touches now, or meets at t.
           const double t = d2 < touch * touch ? kTouching : approach_root(bb, d2 - rs * rs, wx, wy);
           if (t <= dt) found.push_back({a, b, t});
@@ -821,7 +802,7 @@ class Home final : public Engine {
     const int* id = grid_.id();
     const int parts = pool_.parts();
     double* scratch = t_local_.data();
-    for (double* column : {p_.col(0).data(), p_.col(1).data(), v_.col(0).data(), v_.col(1).data()}) {
+    for (double* column : {w_.p.col(0).data(), w_.p.col(1).data(), w_.v.col(0).data(), w_.v.col(1).data()}) {
       pool_.run([&](int p) {
         const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
         for (long s = b; s < e; ++s) scratch[s] = column[id[s]];
@@ -845,12 +826,12 @@ class Home final : public Engine {
         a[k] = first, active_[k] = 1;
       }
     };
-    if (r_.size()) permute(r_.data());
-    if (inv_m_.size()) permute(inv_m_.data());
+    if (w_.r.size()) permute(w_.r.data());
+    if (w_.inv_m.size()) permute(w_.inv_m.data());
     permute(count_.data());
     sleep_.permute(permute);
     grid_.renumbered([&](const int* new_number) {
-      for (int& b : ball_of_) b = new_number[b];
+      for (int& b : w_.ball_of) b = new_number[b];
       warm_entries_.clear();
       warm_.for_each([&](const WarmStart::Entry& e) {
         int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
@@ -913,8 +894,8 @@ class Home final : public Engine {
   void soft_path() {
     if (sleep_.all_asleep()) return;  // every ball asleep: nothing can move or wake one
     const StartScan first = scan_state();
-    const double travel = (std::sqrt(first.speed2) + g_.norm() * dt_) * dt_;
-    const double parts = std::ceil(travel / (s_.max_stride * rmin_));
+    const double travel = (std::sqrt(first.speed2) + w_.g.norm() * dt_) * dt_;
+    const double parts = std::ceil(travel / (s_.max_stride * w_.rmin));
     const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.max_parts))) : 1;
     for (int part = 0; part < k; ++part) soft_part(dt_ / k, part == 0 ? first : scan_state());
   }
@@ -922,7 +903,7 @@ class Home final : public Engine {
   // The largest squared speed and the positions' bounds, now.
   StartScan scan_state() const {
     StartScan scan;
-    for (int i = 0; i < n_; ++i) scan.add(p_(i, 0), p_(i, 1), v_(i, 0) * v_(i, 0) + v_(i, 1) * v_(i, 1));
+    for (int i = 0; i < n_; ++i) scan.add(w_.p(i, 0), w_.p(i, 1), w_.v(i, 0) * w_.v(i, 0) + w_.v(i, 1) * w_.v(i, 1));
     return scan;
   }
 
@@ -930,7 +911,7 @@ class Home final : public Engine {
   // whose cells cover the fastest ball's motion; `start`: the state's scan at its start.
   void soft_part(double dt, const StartScan& start) {
     if (sleep_.all_asleep()) return;
-    const double g = g_.norm();
+    const double g = w_.g.norm();
     const double speed2 = start.speed2;
     const HomeGrid::Bounds& bounds = start.bounds;
     // The warm start holds one substep's impulses; a substep of another length scales them.
@@ -939,7 +920,7 @@ class Home final : public Engine {
     warm_h_ = h;
     // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin).
     const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
-    const double margin = kSoftMargin * rmax_;
+    const double margin = kSoftMargin * w_.rmax;
     soft_contacts_.clear();
     // The mass is set once it is known which balls sleep (below).
     const auto add = [&](int i, int j, double nx, double ny, double gap) {
@@ -952,9 +933,9 @@ class Home final : public Engine {
     // lower one lands. (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
     const auto try_pair = [&](int a, int b) {
       if (a > b) std::swap(a, b);
-      const double dx = p_(a, 0) - p_(b, 0), dy = p_(a, 1) - p_(b, 1);
-      const double speed2 = v_(a, 0) * v_(a, 0) + v_(a, 1) * v_(a, 1) + v_(b, 0) * v_(b, 0) + v_(b, 1) * v_(b, 1);
-      const double rs = radius(a) + radius(b);
+      const double dx = w_.p(a, 0) - w_.p(b, 0), dy = w_.p(a, 1) - w_.p(b, 1);
+      const double speed2 = w_.v(a, 0) * w_.v(a, 0) + w_.v(a, 1) * w_.v(a, 1) + w_.v(b, 0) * w_.v(b, 0) + w_.v(b, 1) * w_.v(b, 1);
+      const double rs = w_.radius(a) + w_.radius(b);
       const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
       const double d2 = dx * dx + dy * dy;
       if (d2 >= lim * lim || d2 == 0) return;
@@ -963,9 +944,9 @@ class Home final : public Engine {
     };
     const auto try_walls = [&](int i) {
       for (int axis = 0; axis < 2; ++axis) {
-        const double v = v_(i, axis), toward = std::abs(v) + g * dt;
+        const double v = w_.v(i, axis), toward = std::abs(v) + g * dt;
         for (int side = 0; side < 2; ++side) {
-          const double gap = wall_gap(i, axis, side);
+          const double gap = w_.wall_gap(i, axis, side);
           if (gap >= toward * dt * kSpeedMargin + margin) continue;
           const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
           add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
@@ -976,7 +957,7 @@ class Home final : public Engine {
     const int sleeping = sleep_.sleeping();
     const auto asleep = [&](int i) { return sleep_.asleep(i); };
     if (!sc_.no_pairs) {
-      grid_.build(p_, r_, 2.0 * rmax_ + 2.0 * reach + margin, pool_, false, &bounds);
+      grid_.build(w_.p, w_.r, 2.0 * w_.rmax + 2.0 * reach + margin, pool_, false, &bounds);
       renumber_if_due();
       if (sleeping > 0 && 2 * sleeping > n_) {
         // Mostly asleep: the pairs around the balls awake, not every pair of the grid.
@@ -993,39 +974,39 @@ class Home final : public Engine {
         });
       }
     }
-    if (walls_)
+    if (w_.walls)
       for (int i = 0; i < n_; ++i)
         if (sleeping == 0 || !asleep(i)) try_walls(i);
     if (sleeping > 0) {
       // A ball woken now gains the contacts it had none of while it slept.
-      sleep_.wake_touched(soft_contacts_, v_.col(0).data(), v_.col(1).data());
+      sleep_.wake_touched(soft_contacts_, w_.v.col(0).data(), w_.v.col(1).data());
       for (int i : sleep_.woken()) {
         if (!sc_.no_pairs)
           grid_.for_each_near(i, [&](int j) {
             const SleepIslands::State sj = sleep_.state(j);
             if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i)) try_pair(i, j);
           });
-        if (walls_) try_walls(i);
+        if (w_.walls) try_walls(i);
       }
       sleep_.finish_waking();
     }
-    const double* inv_m = sc_.equal_masses ? nullptr : inv_m_.data();
-    const std::vector<int>& awake = sleep_.awake(n_, inv_m, inv_m0_);
+    const double* inv_m = sc_.equal_masses ? nullptr : w_.inv_m.data();
+    const std::vector<int>& awake = sleep_.awake(n_, inv_m, w_.inv_m0);
     if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
     for (SoftContact& c : soft_contacts_) {
-      const double wi = inv_m ? inv_m[c.i] : inv_m0_, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : inv_m0_;
+      const double wi = inv_m ? inv_m[c.i] : w_.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w_.inv_m0;
       c.mass = 1.0 / (wi + wj);
     }
-    const SoftBodies bodies{p_.col(0).data(),
-                            p_.col(1).data(),
-                            v_.col(0).data(),
-                            v_.col(1).data(),
+    const SoftBodies bodies{w_.p.col(0).data(),
+                            w_.p.col(1).data(),
+                            w_.v.col(0).data(),
+                            w_.v.col(1).data(),
                             inv_m,
-                            inv_m0_,
+                            w_.inv_m0,
                             sleep_.sleeping() > 0 ? awake.data() : nullptr,
                             static_cast<int>(awake.size())};
-    soft_step(bodies, n_, soft_contacts_, g_.x(), g_.y(), dt, s_.soft, {e_, v_rest_}, soft_scratch_);
-    if (sleep_.enabled()) sleep_.fall_asleep(soft_contacts_, v_.col(0).data(), v_.col(1).data(), dt);
+    soft_step(bodies, n_, soft_contacts_, w_.g.x(), w_.g.y(), dt, s_.soft, {w_.e, v_rest_}, soft_scratch_);
+    if (sleep_.enabled()) sleep_.fall_asleep(soft_contacts_, w_.v.col(0).data(), w_.v.col(1).data(), dt);
     warm_entries_.clear();
     for (const SoftContact& c : soft_contacts_)
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
@@ -1033,7 +1014,7 @@ class Home final : public Engine {
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
-  double velocity_tolerance() const { return s_.contact_slop * rmax_ / dt_; }
+  double velocity_tolerance() const { return s_.contact_slop * w_.rmax / dt_; }
 
   // Event-driven motion over [0, dt]: every ball moves on its straight line until its next
   // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
@@ -1112,10 +1093,10 @@ class Home final : public Engine {
   // step; the same pass measures the largest squared displacement from the list's build and the
   // largest squared speed, which the next step's list_covers needs.
   void finish_step(int b, int e, std::pair<double, double>& extent) {
-    double* __restrict x = p_.col(0).data();
-    double* __restrict y = p_.col(1).data();
-    const double* __restrict vx = v_.col(0).data();
-    const double* __restrict vy = v_.col(1).data();
+    double* __restrict x = w_.p.col(0).data();
+    double* __restrict y = w_.p.col(1).data();
+    const double* __restrict vx = w_.v.col(0).data();
+    const double* __restrict vy = w_.v.col(1).data();
     double* __restrict tl = t_local_.data();
     const double* __restrict bx = built_at_.col(0).data();
     const double* __restrict by = built_at_.col(1).data();
@@ -1146,8 +1127,8 @@ class Home final : public Engine {
 
   // Normal approach speed of an event's pair (or ball and wall) at the event time.
   double impact_speed(const PredictedEvent& ev) const {
-    if (ev.j < 0) return std::abs(v_(ev.i, wall_axis(ev.j)));
-    const double dx = p_(ev.i, 0) - p_(ev.j, 0), dy = p_(ev.i, 1) - p_(ev.j, 1);
+    if (ev.j < 0) return std::abs(w_.v(ev.i, wall_axis(ev.j)));
+    const double dx = w_.p(ev.i, 0) - w_.p(ev.j, 0), dy = w_.p(ev.i, 1) - w_.p(ev.j, 1);
     const double d = std::sqrt(dx * dx + dy * dy);
     return d > 0 ? -relative_normal_velocity(ev.i, ev.j, dx / d, dy / d) : 0.0;
   }
@@ -1155,14 +1136,14 @@ class Home final : public Engine {
   // Ball i, just brought to time t with a new velocity, may now reach balls the broad phase did not
   // allow for: faster than the grid's speed bound, or beyond the neighbour list's skin.
   bool too_fast(int i, double t) const {
-    return listed_ ? beyond_skin(i, t) : v_.row(i).squaredNorm() > vbound_ * vbound_;
+    return listed_ ? beyond_skin(i, t) : w_.v.row(i).squaredNorm() > vbound_ * vbound_;
   }
 
   // A collision made a ball faster than the broad phase allows for: bring every ball to time t and
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
     if (listed_) {
-      scratch_ = p_ + (v_.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
+      scratch_ = w_.p + (w_.v.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
       rebuild_list(dt_ - t, false, scratch_, max_speed());
     } else {
       for (int i = 0; i < n_; ++i) advance(i, t);
@@ -1176,7 +1157,7 @@ class Home final : public Engine {
   }
 
   void advance(int i, double t) {
-    p_(i, 0) = on_line(p_(i, 0), v_(i, 0), t, t_local_[i]), p_(i, 1) = on_line(p_(i, 1), v_(i, 1), t, t_local_[i]);
+    w_.p(i, 0) = on_line(w_.p(i, 0), w_.v(i, 0), t, t_local_[i]), w_.p(i, 1) = on_line(w_.p(i, 1), w_.v(i, 1), t, t_local_[i]);
     t_local_[i] = t;
   }
 
@@ -1205,15 +1186,15 @@ class Home final : public Engine {
       const double t0 = std::max(ti, tj);
       double dx, dy;  // i - j at t0
       if constexpr (kAtStart) {
-        dx = p_(i, 0) - p_(j, 0), dy = p_(i, 1) - p_(j, 1);
+        dx = w_.p(i, 0) - w_.p(j, 0), dy = w_.p(i, 1) - w_.p(j, 1);
       } else {
-        dx = on_line(p_(i, 0), v_(i, 0), t0, ti) - on_line(p_(j, 0), v_(j, 0), t0, tj);
-        dy = on_line(p_(i, 1), v_(i, 1), t0, ti) - on_line(p_(j, 1), v_(j, 1), t0, tj);
+        dx = on_line(w_.p(i, 0), w_.v(i, 0), t0, ti) - on_line(w_.p(j, 0), w_.v(j, 0), t0, tj);
+        dy = on_line(w_.p(i, 1), w_.v(i, 1), t0, ti) - on_line(w_.p(j, 1), w_.v(j, 1), t0, tj);
       }
-      const double wx = v_(i, 0) - v_(j, 0), wy = v_(i, 1) - v_(j, 1);
+      const double wx = w_.v(i, 0) - w_.v(j, 0), wy = w_.v(i, 1) - w_.v(j, 1);
       const double b = dx * wx + dy * wy;  // < 0: approaching
       const double d2 = dx * dx + dy * dy;
-      const double rs = radius(i) + radius(j);
+      const double rs = w_.radius(i) + w_.radius(j);
       const double c = d2 - rs * rs;
       // Not approaching, or: |d(t)|^2 = d2 + 2 b t + a t^2 >= d2 + 2 b t (a >= 0), and even that
       // stays above rs^2 until the earliest event found so far (or the step's end): no root is
@@ -1237,13 +1218,13 @@ class Home final : public Engine {
   // holds, even after collisions (beyond_skin): its walls are not looked at.
   template <bool kAtStart = false>
   void wall_event(int i, PredictedEvent& best) const {
-    if (!walls_ || (listed_ && !near_wall_mark_[i])) return;
+    if (!w_.walls || (listed_ && !near_wall_mark_[i])) return;
     const double ti = kAtStart ? 0.0 : t_local_[i];
     for (int axis = 0; axis < 2; ++axis) {
-      const double v = v_(i, axis);
+      const double v = w_.v(i, axis);
       if (v == 0) continue;
       const int side = v < 0 ? 0 : 1;
-      const double gap = wall_gap(i, axis, side);
+      const double gap = w_.wall_gap(i, axis, side);
       if (gap < touch_wall(i) && std::abs(v) < v_tol_) continue;
       // Touching or overlapping by round-off and approaching: collide now (Bannerman et al.,
       // "Stable algorithms for event-driven molecular dynamics", J. Comput. Phys. 2014).
@@ -1263,34 +1244,26 @@ class Home final : public Engine {
 
   // Restitution on the normal component only; tangential velocity is untouched (frictionless).
   void collide_pair(int i, int j) {
-    double nx = p_(i, 0) - p_(j, 0), ny = p_(i, 1) - p_(j, 1);
+    double nx = w_.p(i, 0) - w_.p(j, 0), ny = w_.p(i, 1) - w_.p(j, 1);
     const double d = std::sqrt(nx * nx + ny * ny);
     if (d == 0) return;  // coincident centres: no normal exists
     nx /= d, ny /= d;
     const double vn = relative_normal_velocity(i, j, nx, ny);
     if (vn >= 0) return;
-    apply_impulse(i, j, nx, ny, -(1.0 + e_) * vn / (inv_mass(i) + inv_mass(j)));
+    apply_impulse(i, j, nx, ny, -(1.0 + w_.e) * vn / (w_.inv_mass(i) + w_.inv_mass(j)));
   }
 
   void collide_wall(int i, int code) {
     const int axis = wall_axis(code);
-    v_(i, axis) = -e_ * v_(i, axis);
+    w_.v(i, axis) = -w_.e * w_.v(i, axis);
   }
 
   HomeSettings s_;
   HomeShortcuts sc_;  // the shortcuts taken, fixed at construction
   int reorder_;       // renumber the balls in cell order every this many steps (0: never)
-  int n_;
-  double e_;
-  Eigen::Vector2d g_;
-  Container box_;
-  bool walls_;
+  HomeWorld w_;                   // the balls and the scene's constants
+  int n_;                         // w_.n
   bool listed_;                   // elastic: a neighbour list with a skin instead of a grid per step
-  double r0_, inv_m0_;            // ball 0's radius and inverse mass: everyone's, if equal
-  Eigen::VectorXd r_, inv_m_;     // per ball; empty when the shortcut makes them equal
-  double rmax_;
-  double rmin_;                   // smallest radius
-  Eigen::MatrixX2d p_, v_;        // column-major: x, y (and vx, vy) are contiguous arrays
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
   std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each); solve_contacts' scratch
@@ -1324,7 +1297,6 @@ class Home final : public Engine {
   bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
-  std::vector<int> ball_of_;      // scene index -> ball (balls are renumbered, see reorder_by_cell)
   std::vector<PassContact> contacts_;
   std::vector<int> live_;         // contacts a sweep after the first still visits (see solve_contacts)
   WarmStart warm_;                // impulses at the end of the last contact pass

@@ -1,0 +1,57 @@
+#pragma once
+// The world `home` steps: the balls' state as plain structure of arrays, in the solver's own ball
+// order (renumbered in cell order from 10^4 balls: `ball_of` maps the scene's order to it), and the
+// scene's constants. Every stage of the step reads and writes it; none keeps a copy.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "scene.h"
+
+namespace ballbench {
+
+struct HomeWorld {
+  int n = 0;
+  Eigen::MatrixX2d p, v;  // positions (m) and velocities (m/s), one row per ball
+  // Radius and inverse mass per ball; empty when every ball has r0 (equal_radii) or inv_m0
+  // (equal_masses), which saves 8 bytes per ball each.
+  Eigen::VectorXd r, inv_m;
+  double r0 = 0, inv_m0 = 0;
+  bool equal_radii = false, equal_masses = false;
+  double rmax = 0, rmin = 0;  // the largest and the smallest radius (m)
+  double e = 1;               // restitution
+  Eigen::Vector2d g = Eigen::Vector2d::Zero();
+  Container box;
+  bool walls = false;  // the container is a box
+  std::vector<int> ball_of;  // scene index -> ball
+
+  HomeWorld() = default;
+  HomeWorld(const Scene& scene, bool equal_radii, bool equal_masses)
+      : n(scene.n()),
+        p(scene.initial.pos),
+        v(scene.initial.vel),
+        r0(n > 0 ? scene.radius(0) : 0.0),
+        inv_m0(n > 0 ? 1.0 / scene.mass(0) : 0.0),
+        equal_radii(equal_radii),
+        equal_masses(equal_masses),
+        rmax(scene.radius.maxCoeff()),
+        rmin(n > 0 ? scene.radius.minCoeff() : 0.0),
+        e(scene.restitution),
+        g(scene.gravity),
+        box(scene.container),
+        walls(scene.container.kind == ContainerKind::Box),
+        ball_of(n) {
+    if (!equal_radii) r = scene.radius;
+    if (!equal_masses) inv_m = scene.mass.cwiseInverse();
+    for (int i = 0; i < n; ++i) ball_of[i] = i;
+  }
+
+  double radius(int i) const { return equal_radii ? r0 : r(i); }
+  double inv_mass(int i) const { return equal_masses ? inv_m0 : inv_m(i); }
+  // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
+  double wall_gap(int i, int axis, int side) const {
+    return side == 0 ? p(i, axis) - radius(i) - box.min(axis) : box.max(axis) - radius(i) - p(i, axis);
+  }
+};
+
+}  // namespace ballbench
