@@ -28,7 +28,7 @@ namespace {
 
 // The list screen's time for a pair that touches at the start of the step (see first_pair_events).
 constexpr double kTouching = -1;
-// first_j_: the ball's first pair event is left to next_event (see first_pair_events).
+// tmp_.first_j: the ball's first pair event is left to next_event (see first_pair_events).
 constexpr int kAsk = -2;
 // How much faster than the fastest ball at the start of the step a ball may become through
 // collisions before the broad phase must be rebuilt (equal-mass elastic impacts can reach sqrt(2)).
@@ -109,6 +109,40 @@ struct PassContact : Contact {
   bool moved;     // an impulse was applied (warm start or solve): both velocities may have changed
 };
 
+// The step's scratch: per-step and per-part buffers, each with one job, sized once and reused
+// every step (no allocation once warm). Nothing here outlives the step that fills it, except as
+// the capacity it keeps.
+struct StepScratch {
+  // Per part of the thread team (ForkJoin), filled in parallel, read in part order.
+  std::vector<std::vector<std::pair<int, int>>> pair_hits;  // ball pairs within contact reach
+  std::vector<std::vector<PassContact>> pair_contacts;      // their contacts (screen_slots)
+  std::vector<std::vector<int>> wall_hits;                  // balls within contact reach of a wall
+  std::vector<std::vector<PredictedEvent>> first_events;    // the active balls' events at the start of drift
+  std::vector<StartScan> start_parts;                       // each part's share of start_pass
+  std::vector<std::vector<Approach>> approaches;            // listed: the list screen's approaching pairs
+  std::vector<std::pair<double, double>> extent;            // listed: largest squared displacement and speed
+  // The contact pass and the cluster solves.
+  std::vector<PassContact> contacts;
+  std::vector<int> live;            // contacts a sweep after the first still visits (see solve_contacts)
+  std::vector<uint8_t> degree;      // per ball: its contacts in the solve, saturating at 2; 0 between solves
+  std::vector<int> cluster;         // the balls of the resting cluster being solved
+  std::vector<uint8_t> in_cluster;  // per ball: 1 while in that cluster; 0 between clusters
+  std::vector<WarmStart::Entry> warm_entries;  // for rebuilding the warm start
+  // The event loop.
+  std::vector<PredictedEvent> queue;  // a min-heap on t, see push_event
+  std::vector<double> first_t;        // listed: each ball's first pair event at the start of drift (kNever: none)
+  std::vector<int> first_j;           // listed: its partner (-1: none, kAsk: next_event decides)
+  Eigen::MatrixX2d rebuild_at;        // listed: positions at a rebuild in mid-step
+  // Renumbering (from kReorderBalls balls): one column of the state in the new order, and the
+  // slots whose permutation cycle is done.
+  std::vector<double> column;
+  std::vector<uint8_t> placed;
+
+  explicit StepScratch(int parts)
+      : pair_hits(parts), pair_contacts(parts), wall_hits(parts), first_events(parts), approaches(parts),
+        extent(parts) {}
+};
+
 class Home final : public Engine {
  public:
   Home(const Scene& scene, HomeSettings s)
@@ -120,17 +154,12 @@ class Home final : public Engine {
         listed_(sc_.elastic && !sc_.no_pairs),
         t_local_(n_),
         count_(n_, 0),
-        in_cluster_(n_, 0),
         active_(n_, 0),
         pool_(ForkJoin::threads_for(n_, kParallelBalls, s.threads)),
-        pair_hits_(pool_.parts()),
-        pair_contacts_(pool_.parts()),
-        wall_hits_(pool_.parts()),
-        first_events_(pool_.parts()),
-        approaches_(pool_.parts()),
-        extent_(pool_.parts()),
+        tmp_(pool_.parts()),
         soft_(s.resting == "soft" && scene.features().gravity) {
-    if (listed_) first_t_.assign(n_, kNever), first_j_.assign(n_, -1), near_wall_mark_.assign(n_, 0);
+    if (listed_) tmp_.first_t.assign(n_, kNever), tmp_.first_j.assign(n_, -1), near_wall_mark_.assign(n_, 0);
+    if (!soft_ && !sc_.elastic) tmp_.degree.assign(n_, 0), tmp_.in_cluster.assign(n_, 0);  // contact solves
     if (soft_ && s.sleep_speed > 0) sleep_ = SleepIslands(n_, s.sleep_speed, s.sleep_time);
   }
 
@@ -240,18 +269,18 @@ class Home final : public Engine {
     const int parts = pool_.parts();
     const bool screen = w_.walls && !sc_.no_walls && !renumber_due();
     const double reach = v_rest_ * dt_;
-    start_parts_.resize(parts);
+    tmp_.start_parts.resize(parts);
     pool_.run([&](int p) {
-      wall_hits_[p].clear();
+      tmp_.wall_hits[p].clear();
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      std::vector<int>& near = wall_hits_[p];
-      start_parts_[p] = screen ? scan<Scan{.start = true, .screen = true}>(b, e, reach, near)
+      std::vector<int>& near = tmp_.wall_hits[p];
+      tmp_.start_parts[p] = screen ? scan<Scan{.start = true, .screen = true}>(b, e, reach, near)
                                : scan<Scan{.start = true}>(b, e, reach, near);
     });
     unfinished_dt_ = 0;
     start_ = StartScan{};
-    for (const StartScan& q : start_parts_) start_.merge(q);
+    for (const StartScan& q : tmp_.start_parts) start_.merge(q);
     walls_screened_ = screen;
   }
 
@@ -271,11 +300,11 @@ class Home final : public Engine {
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
   // ends decide). A collision that changes a velocity is checked again (beyond_skin). The largest
   // displacement plus the largest speed bounds every ball's own sum; the last step's final advance
-  // measured both (extent_), and nothing has moved since.
+  // measured both (tmp_.extent), and nothing has moved since.
   bool list_covers(double horizon) const {
     if (half_skin_ < 0) return false;  // no list yet
     double moved2 = 0;
-    for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m);
+    for (const auto& [m, v] : tmp_.extent) moved2 = std::max(moved2, m);
     return std::sqrt(moved2) + start_speed() * horizon <= half_skin_;
   }
 
@@ -284,7 +313,7 @@ class Home final : public Engine {
   double start_speed() const {
     if (half_skin_ < 0) return max_speed();
     double speed2 = 0;
-    for (const auto& e : extent_) speed2 = std::max(speed2, e.second);
+    for (const auto& e : tmp_.extent) speed2 = std::max(speed2, e.second);
     return std::sqrt(speed2);
   }
 
@@ -377,7 +406,7 @@ class Home final : public Engine {
   void add_contact(int i, int j, double nx, double ny, double gap, double touch, double horizon, bool close_overlap) {
     PassContact c;
     if (make_contact(i, j, nx, ny, relative_normal_velocity(i, j, nx, ny), gap, touch, horizon, close_overlap, c))
-      contacts_.push_back(c);
+      tmp_.contacts.push_back(c);
   }
   bool make_contact(int i, int j, double nx, double ny, double vn, double gap, double touch, double horizon,
                     bool close_overlap, PassContact& c) const {
@@ -420,7 +449,7 @@ class Home final : public Engine {
     if (d2 >= limit * limit || d2 == 0) return false;  // squared first: most candidates are far
     PassContact c;
     if (make_pair_contact(i, j, dx, dy, d2, w_.v(i, 0) - w_.v(j, 0), w_.v(i, 1) - w_.v(j, 1), rs, horizon, close_overlap, c))
-      contacts_.push_back(c);
+      tmp_.contacts.push_back(c);
     return true;
   }
 
@@ -433,7 +462,7 @@ class Home final : public Engine {
   }
 
   // Sequential impulses (Catto, "Iterative Dynamics with Temporal Coherence", GDC 2005): sweeps
-  // over contacts_ until every contact is within `tolerance` of its target or `sweeps` ran.
+  // over tmp_.contacts until every contact is within `tolerance` of its target or `sweeps` ran.
   // Returns the largest approach beyond a target left after the last sweep (m/s).
   //
   // A contact that shares no ball with another (isolated) sees velocities only it changes, so its
@@ -453,40 +482,39 @@ class Home final : public Engine {
       c.moved |= c.impulse != old;
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
     };
-    // live_: the contacts a sweep after the first visits (all but the isolated ones).
-    live_.clear();
+    // tmp_.live: the contacts a sweep after the first visits (all but the isolated ones).
+    tmp_.live.clear();
     if (sweeps <= 0) {
-      for (size_t k = 0; k < contacts_.size(); ++k) live_.push_back(static_cast<int>(k));
+      for (size_t k = 0; k < tmp_.contacts.size(); ++k) tmp_.live.push_back(static_cast<int>(k));
     } else {
-      // Balls' contact counts (saturating at 2) in in_cluster_, which is all zero outside a
-      // cluster's gathering and is left so.
-      uint8_t* degree = in_cluster_.data();
+      // Balls' contact counts (saturating at 2), all zero between solves and left so.
+      uint8_t* degree = tmp_.degree.data();
       const auto bump = [&](int b) { degree[b] = static_cast<uint8_t>(std::min(degree[b] + 1, 2)); };
-      for (const PassContact& c : contacts_) {
+      for (const PassContact& c : tmp_.contacts) {
         bump(c.i);
         if (c.j >= 0) bump(c.j);
       }
       worst = 0;
-      for (size_t k = 0; k < contacts_.size(); ++k) {
-        PassContact& c = contacts_[k];
+      for (size_t k = 0; k < tmp_.contacts.size(); ++k) {
+        PassContact& c = tmp_.contacts[k];
         const bool isolated = degree[c.i] == 1 && (c.j < 0 || degree[c.j] == 1);
         update(c);
-        if (!isolated) live_.push_back(static_cast<int>(k));
+        if (!isolated) tmp_.live.push_back(static_cast<int>(k));
       }
-      for (const PassContact& c : contacts_) {
+      for (const PassContact& c : tmp_.contacts) {
         degree[c.i] = 0;
         if (c.j >= 0) degree[c.j] = 0;
       }
     }
     for (int it = 1; it < sweeps && worst > tolerance; ++it) {
       worst = 0;
-      for (int k : live_) update(contacts_[k]);
+      for (int k : tmp_.live) update(tmp_.contacts[k]);
     }
     if (worst <= tolerance) return 0.0;
     // The isolated contacts were solved by their one update.
     double left = 0;
-    for (int k : live_) {
-      const PassContact& c = contacts_[k];
+    for (int k : tmp_.live) {
+      const PassContact& c = tmp_.contacts[k];
       left = std::max(left, c.target - relative_normal_velocity(c.i, c.j, c.nx, c.ny));
     }
     return left;
@@ -502,7 +530,7 @@ class Home final : public Engine {
   // The same sweep screens the drift (see screen_pairs): a ball is `active` when it may have an
   // event this step; only active balls are predicted, the rest just move dt along their lines.
   void contact_pass() {
-    contacts_.clear();
+    tmp_.contacts.clear();
     const double reach = v_rest_ * dt_;
     if (sc_.no_walls) {
       std::fill(active_.begin(), active_.end(), 0);
@@ -513,53 +541,53 @@ class Home final : public Engine {
       for (int i : near_wall_) active_[i] = reaches_wall(w_.p(i, 0), w_.p(i, 1), w_.v(i, 0), w_.v(i, 1), w_.radius(i), k);
     } else {
       if (!walls_screened_) screen_walls(reach);
-      for (const auto& near : wall_hits_)
+      for (const auto& near : tmp_.wall_hits)
         for (int i : near) add_wall_contacts(i, reach, dt_, true);
     }
-    const size_t wall_contacts = contacts_.size();
+    const size_t wall_contacts = tmp_.contacts.size();
     if (!sc_.no_pairs) {
       // With pairs, the elastic shortcut always has its neighbour list (listed_), and no contacts.
       if (listed_) {
         sc_.equal_radii ? screen_list<true>() : screen_list<false>();
       } else {
         sc_.equal_radii ? screen_pairs<true>(reach) : screen_pairs<false>(reach);
-        for (const auto& found : pair_contacts_) contacts_.insert(contacts_.end(), found.begin(), found.end());
+        for (const auto& found : tmp_.pair_contacts) tmp_.contacts.insert(tmp_.contacts.end(), found.begin(), found.end());
       }
     }
     if (sc_.elastic) return;  // no contacts were listed: nothing to solve or remember
     // The pair contacts found their warm-start impulses in the screen.
-    for (size_t k = 0; k < wall_contacts; ++k) find_warm_impulse(contacts_[k]);
-    for (const PassContact& c : contacts_)
+    for (size_t k = 0; k < wall_contacts; ++k) find_warm_impulse(tmp_.contacts[k]);
+    for (const PassContact& c : tmp_.contacts)
       if (c.moved) apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
     // A contact that moved its balls changed velocities the screen could not know: predict both.
     // One that applied nothing (most, in a gas: close but parting) leaves them to the screen, which
     // saw their velocities as they still are (a partner that changed is predicted, and finds them).
-    for (const PassContact& c : contacts_)
+    for (const PassContact& c : tmp_.contacts)
       if (c.moved) {
         active_[c.i] = 1;
         if (c.j >= 0) active_[c.j] = 1;
       }
-    warm_entries_.clear();
-    for (const PassContact& c : contacts_)
-      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
-    warm_.assign(warm_entries_);
+    tmp_.warm_entries.clear();
+    for (const PassContact& c : tmp_.contacts)
+      if (c.impulse > 0) tmp_.warm_entries.push_back({c.i, c.j, c.impulse});
+    warm_.assign(tmp_.warm_entries);
   }
 
   // Per ball, in parallel: `active` if it can reach the wall it moves towards within the step
   // (predict's test max(gap, 0) / |v| <= dt, as gap <= |v| dt with a relative margin far above
-  // round-off, so it never says no where predict would say yes), and listed in wall_hits_, in
+  // round-off, so it never says no where predict would say yes), and listed in tmp_.wall_hits, in
   // ball order, if a wall is within contact reach (add_wall_contacts' test, the same expressions).
   void screen_walls(double reach) {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
-      wall_hits_[p].clear();
+      tmp_.wall_hits[p].clear();
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
       if (sc_.elastic)
-        scan<Scan{.contacts = false, .screen = true}>(b, e, reach, wall_hits_[p]);
+        scan<Scan{.contacts = false, .screen = true}>(b, e, reach, tmp_.wall_hits[p]);
       else
-        scan<Scan{.screen = true}>(b, e, reach, wall_hits_[p]);
+        scan<Scan{.screen = true}>(b, e, reach, tmp_.wall_hits[p]);
     });
   }
 
@@ -655,12 +683,12 @@ class Home final : public Engine {
   void screen_pairs(double reach) {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
-      pair_hits_[p].clear();
-      pair_contacts_[p].clear();
+      tmp_.pair_hits[p].clear();
+      tmp_.pair_contacts[p].clear();
       const int n = grid_.balls();
       screen_slots<kEqualRadii>(static_cast<int>(ForkJoin::range_begin(n, p, parts)),
-                                static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, pair_hits_[p],
-                                pair_contacts_[p]);
+                                static_cast<int>(ForkJoin::range_begin(n, p + 1, parts)), reach, tmp_.pair_hits[p],
+                                tmp_.pair_contacts[p]);
     });
   }
 
@@ -723,7 +751,7 @@ class Home final : public Engine {
   // passes it but is not listed cannot touch within the step (the list covers it), so it has no
   // event and the balls predicted are those the grid's screen would give events to.
   // Every pair that passes also gets its collision time here, by next_event's own expressions
-  // (approach_root), into approaches_: drift takes the balls' first events from them instead of
+  // (approach_root), into tmp_.approaches: drift takes the balls' first events from them instead of
   // walking each active ball's 3 x 3 cells again (first_pair_events).
   template <bool kEqualRadii>
   void screen_list() {
@@ -731,7 +759,7 @@ class Home final : public Engine {
     const long m = list_.pairs();
     const double dt = dt_, two = 2.0, rs0_2 = 4.0 * w_.r0 * w_.r0;
     pool_.run([&](int p) {
-      std::vector<Approach>& found = approaches_[p];
+      std::vector<Approach>& found = tmp_.approaches[p];
       found.clear();
       const long k0 = ForkJoin::range_begin(m, p, parts), k1 = ForkJoin::range_begin(m, p + 1, parts);
       const int* __restrict first = list_.first();
@@ -769,12 +797,12 @@ class Home final : public Engine {
   // is shared by two partners gets kAsk (next_event decides), as does one in a pair that touches now:
   // such a pair's event (t0) depends on the pairs met before it (its prune). Both are rare.
   void first_pair_events() {
-    for (const auto& found : approaches_)
+    for (const auto& found : tmp_.approaches)
       for (const Approach& f : found) {
         const auto note = [&](int i, int j) {
-          if (first_j_[i] == kAsk) return;
-          if (f.t == kTouching || f.t == first_t_[i]) first_j_[i] = kAsk;
-          else if (f.t < first_t_[i]) first_t_[i] = f.t, first_j_[i] = j;
+          if (tmp_.first_j[i] == kAsk) return;
+          if (f.t == kTouching || f.t == tmp_.first_t[i]) tmp_.first_j[i] = kAsk;
+          else if (f.t < tmp_.first_t[i]) tmp_.first_t[i] = f.t, tmp_.first_j[i] = j;
         };
         note(f.a, f.b), note(f.b, f.a);
       }
@@ -783,47 +811,44 @@ class Home final : public Engine {
   // Ball i's earliest event from the start of the step: its walls (next_event's own loop), then its
   // pair event from first_pair_events, or next_event itself where that said kAsk.
   bool first_event(int i, PredictedEvent& best) const {
-    if (!listed_ || first_j_[i] == kAsk) return next_event<true>(i, best);
+    if (!listed_ || tmp_.first_j[i] == kAsk) return next_event<true>(i, best);
     best = {kNever, i, 0, count_[i], 0};
     wall_event<true>(i, best);
-    const int j = first_j_[i];
+    const int j = tmp_.first_j[i];
     // A pair event earlier than the wall's is never pruned in next_event (its bound holds until then).
-    if (j >= 0 && first_t_[i] < best.t) best = {first_t_[i], i, j, count_[i], count_[j]};
+    if (j >= 0 && tmp_.first_t[i] < best.t) best = {tmp_.first_t[i], i, j, count_[i], count_[j]};
     return best.t <= dt_;
   }
 
   // Renumbers the balls in the cell order of the grid just built (slot s becomes ball s). Everything
-  // indexed by ball moves with them; the warm-start impulses are re-keyed. No array is allocated
-  // (at 10^6 balls each would raise the peak memory): positions and velocities are gathered in slot
-  // order one column at a time through t_local_, which is 0 for every ball at the start of a step
-  // (the last step's final advance or this one's start_pass left it so) and is zeroed again after;
-  // the other per-ball arrays are permuted in place along the permutation's cycles.
+  // indexed by ball moves with them; the warm-start impulses are re-keyed. Positions and velocities
+  // are gathered in slot order one column at a time (in parallel, through tmp_.column); the other
+  // per-ball arrays are permuted in place along the permutation's cycles.
   void reorder_by_cell() {
     const int* id = grid_.id();
     const int parts = pool_.parts();
-    double* scratch = t_local_.data();
+    tmp_.column.resize(n_);
+    double* column_in_order = tmp_.column.data();
     for (double* column : {w_.p.col(0).data(), w_.p.col(1).data(), w_.v.col(0).data(), w_.v.col(1).data()}) {
       pool_.run([&](int p) {
         const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
-        for (long s = b; s < e; ++s) scratch[s] = column[id[s]];
+        for (long s = b; s < e; ++s) column_in_order[s] = column[id[s]];
       });
       pool_.run([&](int p) {
         const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
-        std::copy(scratch + b, scratch + e, column + b);
+        std::copy(column_in_order + b, column_in_order + e, column + b);
       });
     }
-    pool_.run([&](int p) {
-      std::fill(scratch + ForkJoin::range_begin(n_, p, parts), scratch + ForkJoin::range_begin(n_, p + 1, parts), 0.0);
-    });
-    // active_ is free here (the contact pass sets it after the broad phase): it marks the slots done.
+    tmp_.placed.resize(n_);
+    uint8_t* placed = tmp_.placed.data();
     auto permute = [&](auto* a) {
-      std::fill(active_.begin(), active_.end(), 0);
+      std::fill(placed, placed + n_, 0);
       for (int s = 0; s < n_; ++s) {
-        if (active_[s]) continue;
+        if (placed[s]) continue;
         const auto first = a[s];  // the cycle s <- id[s] <- id[id[s]] ... back to s
         int k = s;
-        for (; id[k] != s; k = id[k]) a[k] = a[id[k]], active_[k] = 1;
-        a[k] = first, active_[k] = 1;
+        for (; id[k] != s; k = id[k]) a[k] = a[id[k]], placed[k] = 1;
+        a[k] = first, placed[k] = 1;
       }
     };
     if (w_.r.size()) permute(w_.r.data());
@@ -832,38 +857,38 @@ class Home final : public Engine {
     sleep_.permute(permute);
     grid_.renumbered([&](const int* new_number) {
       for (int& b : w_.ball_of) b = new_number[b];
-      warm_entries_.clear();
+      tmp_.warm_entries.clear();
       warm_.for_each([&](const WarmStart::Entry& e) {
         int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
         if (soft_ && j >= 0 && i > j) std::swap(i, j);  // the soft path keys a pair by its lower number first
-        warm_entries_.push_back({i, j, e.impulse});
+        tmp_.warm_entries.push_back({i, j, e.impulse});
       });
     });
-    warm_.assign(warm_entries_);
+    warm_.assign(tmp_.warm_entries);
   }
 
   // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
   // touching cluster around it at once (the same sequential impulses, to the velocity tolerance),
   // rather than one zero-time event at a time (an inelastic collapse of round-off otherwise).
   void resolve_resting_cluster(int i, int j, double t) {
-    cluster_.clear();
-    contacts_.clear();
+    tmp_.cluster.clear();
+    tmp_.contacts.clear();
     auto enter = [&](int b) {
-      if (in_cluster_[b]) return;
-      in_cluster_[b] = 1;
+      if (tmp_.in_cluster[b]) return;
+      tmp_.in_cluster[b] = 1;
       advance(b, t);
-      cluster_.push_back(b);
+      tmp_.cluster.push_back(b);
     };
     enter(i);
     if (j >= 0) enter(j);
     const double horizon = dt_ - t;
-    for (size_t k = 0; k < cluster_.size(); ++k) {
-      const int a = cluster_[k];
+    for (size_t k = 0; k < tmp_.cluster.size(); ++k) {
+      const int a = tmp_.cluster[k];
       add_wall_contacts(a, 0.0, horizon, false);
       if (sc_.no_pairs) continue;
       grid_.for_each_near(a, [&](int b) {
         if (b == a) return;
-        if (in_cluster_[b]) {
+        if (tmp_.in_cluster[b]) {
           if (b > a) return;  // both in the cluster: the pair is added once, from the larger index
         } else {
           advance(b, t);  // along its own line: its queued prediction stays valid
@@ -875,16 +900,16 @@ class Home final : public Engine {
     // slowly); then the step's round-off tolerance rises to twice what the solve left,
     // so the same residual cannot fire the same cluster again. Overlap stays below residual x dt,
     // and the next contact pass closes it.
-    for (int b : cluster_) in_cluster_[b] = 0;
+    for (int b : tmp_.cluster) tmp_.in_cluster[b] = 0;
     const double left = solve_contacts(kClusterIterations, 0.5 * v_tol_);
     v_tol_ = std::max(v_tol_, 2.0 * left);
-    for (int b : cluster_) ++count_[b];
+    for (int b : tmp_.cluster) ++count_[b];
     // A neighbour list only covers balls within their skin. (The grid's speed bound is not
     // checked here: resting impulses are far below it.)
     if (listed_)
-      for (int b : cluster_)
+      for (int b : tmp_.cluster)
         if (beyond_skin(b, t)) return rebuild_mid_step(t);
-    for (int b : cluster_) predict(b);
+    for (int b : tmp_.cluster) predict(b);
   }
 
   // Scenes with gravity: the step as soft steps (soft_part). The soft step fixes each contact's
@@ -1007,10 +1032,10 @@ class Home final : public Engine {
                             static_cast<int>(awake.size())};
     soft_step(bodies, n_, soft_contacts_, w_.g.x(), w_.g.y(), dt, s_.soft, {w_.e, v_rest_}, soft_scratch_);
     if (sleep_.enabled()) sleep_.fall_asleep(soft_contacts_, w_.v.col(0).data(), w_.v.col(1).data(), dt);
-    warm_entries_.clear();
+    tmp_.warm_entries.clear();
     for (const SoftContact& c : soft_contacts_)
-      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
-    warm_.assign(warm_entries_);
+      if (c.impulse > 0) tmp_.warm_entries.push_back({c.i, c.j, c.impulse});
+    warm_.assign(tmp_.warm_entries);
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
@@ -1022,7 +1047,7 @@ class Home final : public Engine {
   void drift() {
     // t_local_ is 0 for every ball here: the last step's final advance (or this one's start_pass)
     // left it so.
-    queue_.clear();
+    tmp_.queue.clear();
     // The active balls' predictions read only the state at the start of the step: on several
     // parts each predicts its fixed range of balls, and the events are queued in ball order, as
     // predicting one ball after the other would queue them.
@@ -1034,22 +1059,22 @@ class Home final : public Engine {
         if (active_[i] && first_event(i, ev)) push_event(ev);
     } else {
       pool_.run([&](int p) {
-        first_events_[p].clear();
+        tmp_.first_events[p].clear();
         const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
         const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
         PredictedEvent ev;
         for (int i = b; i < e; ++i)
-          if (active_[i] && first_event(i, ev)) first_events_[p].push_back(ev);
+          if (active_[i] && first_event(i, ev)) tmp_.first_events[p].push_back(ev);
       });
-      for (const auto& events : first_events_)
+      for (const auto& events : tmp_.first_events)
         for (const PredictedEvent& ev : events) push_event(ev);
     }
     if (listed_)
-      for (const auto& found : approaches_)
-        for (const Approach& f : found) first_t_[f.a] = first_t_[f.b] = kNever, first_j_[f.a] = first_j_[f.b] = -1;
+      for (const auto& found : tmp_.approaches)
+        for (const Approach& f : found) tmp_.first_t[f.a] = tmp_.first_t[f.b] = kNever, tmp_.first_j[f.a] = tmp_.first_j[f.b] = -1;
     const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
     int64_t events = 0;
-    while (!queue_.empty()) {
+    while (!tmp_.queue.empty()) {
       const PredictedEvent ev = pop_event();
       if (count_[ev.i] != ev.ci) continue;  // i collided since: its new event is queued
       if (ev.j >= 0 && count_[ev.j] != ev.cj) {
@@ -1085,7 +1110,7 @@ class Home final : public Engine {
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      finish_step(b, e, extent_[p]);
+      finish_step(b, e, tmp_.extent[p]);
     });
   }
 
@@ -1115,13 +1140,13 @@ class Home final : public Engine {
   // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
   // operated exactly as std::priority_queue does (so the order of simultaneous events is too).
   void push_event(const PredictedEvent& ev) {
-    queue_.push_back(ev);
-    std::push_heap(queue_.begin(), queue_.end(), std::greater<>());
+    tmp_.queue.push_back(ev);
+    std::push_heap(tmp_.queue.begin(), tmp_.queue.end(), std::greater<>());
   }
   PredictedEvent pop_event() {
-    std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
-    const PredictedEvent ev = queue_.back();
-    queue_.pop_back();
+    std::pop_heap(tmp_.queue.begin(), tmp_.queue.end(), std::greater<>());
+    const PredictedEvent ev = tmp_.queue.back();
+    tmp_.queue.pop_back();
     return ev;
   }
 
@@ -1143,13 +1168,13 @@ class Home final : public Engine {
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
     if (listed_) {
-      scratch_ = w_.p + (w_.v.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
-      rebuild_list(dt_ - t, false, scratch_, max_speed());
+      tmp_.rebuild_at = w_.p + (w_.v.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
+      rebuild_list(dt_ - t, false, tmp_.rebuild_at, max_speed());
     } else {
       for (int i = 0; i < n_; ++i) advance(i, t);
       build_broad_phase(dt_ - t, true);
     }
-    queue_.clear();
+    tmp_.queue.clear();
     for (int i = 0; i < n_; ++i) {
       ++count_[i];
       predict(i);
@@ -1266,20 +1291,11 @@ class Home final : public Engine {
   bool listed_;                   // elastic: a neighbour list with a skin instead of a grid per step
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events
-  std::vector<uint8_t> in_cluster_;  // in the cluster being gathered (cleared after each); solve_contacts' scratch
-  std::vector<int> cluster_;
   std::vector<uint8_t> active_;   // may have an event this step (see screen_pairs)
   mutable ForkJoin pool_;  // mutable: read() gathers on it too
-  std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // per part: ball pairs within contact reach
-  std::vector<std::vector<PassContact>> pair_contacts_;  // per part: their contacts (screen_slots)
-  std::vector<std::vector<int>> wall_hits_;                   // per part: balls within contact reach of a wall
-  std::vector<std::vector<PredictedEvent>> first_events_;  // per part: the active balls' events at the start of drift
+  StepScratch tmp_;
   StartScan start_;                // this step's start_pass, merged
-  std::vector<StartScan> start_parts_;  // per part
   bool walls_screened_ = false;   // start_pass did this step's wall screen
-  std::vector<std::vector<Approach>> approaches_;  // listed_, per part: the list screen's approaching pairs
-  std::vector<double> first_t_;   // listed_: each ball's first pair event at the start of drift (kNever: none)
-  std::vector<int> first_j_;      // listed_: its partner (-1: none, kAsk: next_event decides)
   double t_ = 0;                  // simulated time (s)
   double dt_ = 0;                 // the step in progress (s)
   double unfinished_dt_ = 0;      // > 0: the last step (this long) awaits its final advance (see drift)
@@ -1291,17 +1307,11 @@ class Home final : public Engine {
   Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
   std::vector<uint8_t> near_wall_mark_;  // listed_: 1 for the balls in near_wall_
-  Eigen::MatrixX2d scratch_;      // listed_: positions at a rebuild in mid-step
-  std::vector<std::pair<double, double>> extent_;  // listed_, per part: largest squared displacement and speed
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
   bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
-  std::vector<PassContact> contacts_;
-  std::vector<int> live_;         // contacts a sweep after the first still visits (see solve_contacts)
   WarmStart warm_;                // impulses at the end of the last contact pass
-  std::vector<WarmStart::Entry> warm_entries_;  // scratch for rebuilding warm_
-  std::vector<PredictedEvent> queue_;      // a min-heap on t, see push_event
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
   std::vector<SoftContact> soft_contacts_;
   SleepIslands sleep_;  // sleeping (soft path with sleep_speed > 0)
