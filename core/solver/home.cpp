@@ -19,8 +19,7 @@
 #include "solver/home_grid.h"
 #include "solver/home_world.h"
 #include "solver/neighbour_list.h"
-#include "solver/sleep_islands.h"
-#include "solver/soft_step.h"
+#include "solver/home_soft.h"
 #include "solver/warm_start.h"
 
 namespace ballbench {
@@ -30,9 +29,6 @@ namespace {
 constexpr double kTouching = -1;
 // tmp_.first_j: the ball's first pair event is left to next_event (see first_pair_events).
 constexpr int kAsk = -2;
-// How much faster than the fastest ball at the start of the step a ball may become through
-// collisions before the broad phase must be rebuilt (equal-mass elastic impacts can reach sqrt(2)).
-constexpr double kSpeedMargin = 1.5;
 // Sweeps the cluster solve may take to bring every contact within the velocity tolerance; a
 // cluster that needs more is left to the event loop, which finishes the job one event at a time.
 constexpr int kClusterIterations = 200;
@@ -50,9 +46,6 @@ constexpr int kParallelBalls = 100'000;
 // regression suite, all far below 10^4 balls.
 constexpr int kReorderSteps = 16;
 constexpr int kReorderBalls = 10'000;
-// The soft step's contacts reach this fraction of the largest radius beyond what the balls' motion
-// can close within the step (speculative margin).
-constexpr double kSoftMargin = 0.1;
 
 int reorder_steps(int n, int requested) {
   if (requested >= 0) return requested;
@@ -76,21 +69,6 @@ HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double r
   s.elastic = allow.elastic && f.elastic && no_rest;
   return s;
 }
-
-// What the grid needs from the positions and velocities at the start of a step: the largest
-// squared speed and the positions' bounds. Both are exact in any order, so parts may merge them.
-struct StartScan {
-  double speed2 = 0;
-  HomeGrid::Bounds bounds;
-  void add(double x, double y, double v2) {
-    speed2 = std::max(speed2, v2);
-    bounds.add(x, y);
-  }
-  void merge(const StartScan& o) {
-    speed2 = std::max(speed2, o.speed2);
-    bounds.merge(o.bounds);
-  }
-};
 
 // Where a ball that was at x with velocity v at its own clock t_own is at time t (one coordinate).
 // Every advance along a line (the event loop's, the end of a step, read()'s end positions) is this
@@ -160,7 +138,7 @@ class Home final : public Engine {
         soft_(s.resting == "soft" && scene.features().gravity) {
     if (listed_) tmp_.first_t.assign(n_, kNever), tmp_.first_j.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     if (!soft_ && !sc_.elastic) tmp_.degree.assign(n_, 0), tmp_.in_cluster.assign(n_, 0);  // contact solves
-    if (soft_ && s.sleep_speed > 0) sleep_ = SleepIslands(n_, s.sleep_speed, s.sleep_time);
+    if (soft_) soft_path_ = SoftResting(s, n_);
   }
 
   void step(double dt) override {
@@ -168,7 +146,7 @@ class Home final : public Engine {
     t_ += dt;
     dt_ = dt;
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * w_.g.norm() * dt;
-    if (soft_) return soft_path();
+    if (soft_) return soft_path_.step(w_, dt, v_rest_, sc_.no_pairs, grid_, pool_, [&] { renumber_if_due(); });
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
     // Without a neighbour list one parallel pass kicks and measures what the grid and the wall
@@ -854,17 +832,12 @@ class Home final : public Engine {
     if (w_.r.size()) permute(w_.r.data());
     if (w_.inv_m.size()) permute(w_.inv_m.data());
     permute(count_.data());
-    sleep_.permute(permute);
+    soft_path_.permute_per_ball(permute);
     grid_.renumbered([&](const int* new_number) {
       for (int& b : w_.ball_of) b = new_number[b];
-      tmp_.warm_entries.clear();
-      warm_.for_each([&](const WarmStart::Entry& e) {
-        int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
-        if (soft_ && j >= 0 && i > j) std::swap(i, j);  // the soft path keys a pair by its lower number first
-        tmp_.warm_entries.push_back({i, j, e.impulse});
-      });
+      warm_.renumber(new_number, false, tmp_.warm_entries);
+      soft_path_.renumbered(new_number);
     });
-    warm_.assign(tmp_.warm_entries);
   }
 
   // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
@@ -910,132 +883,6 @@ class Home final : public Engine {
       for (int b : tmp_.cluster)
         if (beyond_skin(b, t)) return rebuild_mid_step(t);
     for (int b : tmp_.cluster) predict(b);
-  }
-
-  // Scenes with gravity: the step as soft steps (soft_part). The soft step fixes each contact's
-  // normal for its step and tracks the separation along it, which holds while the balls move a
-  // small part of their size; a step in which the fastest ball would move further than max_stride
-  // of the smallest radius is cut into parts that do not, each with its contacts gathered afresh.
-  void soft_path() {
-    if (sleep_.all_asleep()) return;  // every ball asleep: nothing can move or wake one
-    const StartScan first = scan_state();
-    const double travel = (std::sqrt(first.speed2) + w_.g.norm() * dt_) * dt_;
-    const double parts = std::ceil(travel / (s_.max_stride * w_.rmin));
-    const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(s_.max_parts))) : 1;
-    for (int part = 0; part < k; ++part) soft_part(dt_ / k, part == 0 ? first : scan_state());
-  }
-
-  // The largest squared speed and the positions' bounds, now.
-  StartScan scan_state() const {
-    StartScan scan;
-    for (int i = 0; i < n_; ++i) scan.add(w_.p(i, 0), w_.p(i, 1), w_.v(i, 0) * w_.v(i, 0) + w_.v(i, 1) * w_.v(i, 1));
-    return scan;
-  }
-
-  // One soft step (soft_step.h) of dt over every contact that can touch within it, found on a grid
-  // whose cells cover the fastest ball's motion; `start`: the state's scan at its start.
-  void soft_part(double dt, const StartScan& start) {
-    if (sleep_.all_asleep()) return;
-    const double g = w_.g.norm();
-    const double speed2 = start.speed2;
-    const HomeGrid::Bounds& bounds = start.bounds;
-    // The warm start holds one substep's impulses; a substep of another length scales them.
-    const double h = dt / std::max(s_.soft.substeps, 1);
-    const double warm_scale = warm_h_ > 0 ? h / warm_h_ : 1.0;
-    warm_h_ = h;
-    // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin).
-    const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
-    const double margin = kSoftMargin * w_.rmax;
-    soft_contacts_.clear();
-    // The mass is set once it is known which balls sleep (below).
-    const auto add = [&](int i, int j, double nx, double ny, double gap) {
-      const double warm = warm_.find(i, j);
-      soft_contacts_.push_back({{i, j, nx, ny, 0.0, warm > 0 ? warm * warm_scale : 0.0}, gap, 0.0, 0.0});
-    };
-    // A pair that can touch within the step, the lower number first, so the warm start finds it
-    // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
-    // of their speeds, not their relative speed: two balls falling together close at once when the
-    // lower one lands. (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
-    const auto try_pair = [&](int a, int b) {
-      if (a > b) std::swap(a, b);
-      const double dx = w_.p(a, 0) - w_.p(b, 0), dy = w_.p(a, 1) - w_.p(b, 1);
-      const double speed2 = w_.v(a, 0) * w_.v(a, 0) + w_.v(a, 1) * w_.v(a, 1) + w_.v(b, 0) * w_.v(b, 0) + w_.v(b, 1) * w_.v(b, 1);
-      const double rs = w_.radius(a) + w_.radius(b);
-      const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
-      const double d2 = dx * dx + dy * dy;
-      if (d2 >= lim * lim || d2 == 0) return;
-      const double d = std::sqrt(d2);
-      add(a, b, dx / d, dy / d, d - rs);
-    };
-    const auto try_walls = [&](int i) {
-      for (int axis = 0; axis < 2; ++axis) {
-        const double v = w_.v(i, axis), toward = std::abs(v) + g * dt;
-        for (int side = 0; side < 2; ++side) {
-          const double gap = w_.wall_gap(i, axis, side);
-          if (gap >= toward * dt * kSpeedMargin + margin) continue;
-          const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
-          add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
-        }
-      }
-    };
-    // Two sleeping balls have no contact: neither moves (unless one wakes, below).
-    const int sleeping = sleep_.sleeping();
-    const auto asleep = [&](int i) { return sleep_.asleep(i); };
-    if (!sc_.no_pairs) {
-      grid_.build(w_.p, w_.r, 2.0 * w_.rmax + 2.0 * reach + margin, pool_, false, &bounds);
-      renumber_if_due();
-      if (sleeping > 0 && 2 * sleeping > n_) {
-        // Mostly asleep: the pairs around the balls awake, not every pair of the grid.
-        for (int i = 0; i < n_; ++i)
-          if (!asleep(i))
-            grid_.for_each_near(i, [&](int j) {
-              if (j != i && (asleep(j) || j > i)) try_pair(i, j);
-            });
-      } else {
-        const int* id = grid_.id();
-        grid_.for_each_forward_pair(0, grid_.balls(), [&](int sa, int sb) {
-          const int a = id[sa], b = id[sb];
-          if (sleeping == 0 || !(asleep(a) && asleep(b))) try_pair(a, b);
-        });
-      }
-    }
-    if (w_.walls)
-      for (int i = 0; i < n_; ++i)
-        if (sleeping == 0 || !asleep(i)) try_walls(i);
-    if (sleeping > 0) {
-      // A ball woken now gains the contacts it had none of while it slept.
-      sleep_.wake_touched(soft_contacts_, w_.v.col(0).data(), w_.v.col(1).data());
-      for (int i : sleep_.woken()) {
-        if (!sc_.no_pairs)
-          grid_.for_each_near(i, [&](int j) {
-            const SleepIslands::State sj = sleep_.state(j);
-            if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i)) try_pair(i, j);
-          });
-        if (w_.walls) try_walls(i);
-      }
-      sleep_.finish_waking();
-    }
-    const double* inv_m = sc_.equal_masses ? nullptr : w_.inv_m.data();
-    const std::vector<int>& awake = sleep_.awake(n_, inv_m, w_.inv_m0);
-    if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
-    for (SoftContact& c : soft_contacts_) {
-      const double wi = inv_m ? inv_m[c.i] : w_.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w_.inv_m0;
-      c.mass = 1.0 / (wi + wj);
-    }
-    const SoftBodies bodies{w_.p.col(0).data(),
-                            w_.p.col(1).data(),
-                            w_.v.col(0).data(),
-                            w_.v.col(1).data(),
-                            inv_m,
-                            w_.inv_m0,
-                            sleep_.sleeping() > 0 ? awake.data() : nullptr,
-                            static_cast<int>(awake.size())};
-    soft_step(bodies, n_, soft_contacts_, w_.g.x(), w_.g.y(), dt, s_.soft, {w_.e, v_rest_}, soft_scratch_);
-    if (sleep_.enabled()) sleep_.fall_asleep(soft_contacts_, w_.v.col(0).data(), w_.v.col(1).data(), dt);
-    tmp_.warm_entries.clear();
-    for (const SoftContact& c : soft_contacts_)
-      if (c.impulse > 0) tmp_.warm_entries.push_back({c.i, c.j, c.impulse});
-    warm_.assign(tmp_.warm_entries);
   }
 
   // Approach speeds that close less than the contact slop over a step are round-off, not motion.
@@ -1311,12 +1158,9 @@ class Home final : public Engine {
   bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering
   long steps_ = 0;                // steps taken
-  WarmStart warm_;                // impulses at the end of the last contact pass
+  WarmStart warm_;                // impulses at the end of the last contact pass (events path)
   bool soft_;                     // resting contact by the soft step (scenes with gravity)
-  std::vector<SoftContact> soft_contacts_;
-  SleepIslands sleep_;  // sleeping (soft path with sleep_speed > 0)
-  SoftStepScratch soft_scratch_;
-  double warm_h_ = 0;               // the substep the warm start's impulses were accumulated over (s)
+  SoftResting soft_path_;         // soft_ only
 };
 
 }  // namespace

@@ -131,4 +131,23 @@ class HomeGrid {
   CellOrderedBalls copy_;     // positions (and radii) in slot order, as of the last build with `copy`
 };
 
+// How much faster than the fastest ball at the start of the step a ball may become through
+// collisions before the broad phase must be rebuilt (equal-mass elastic impacts can reach sqrt(2)).
+inline constexpr double kSpeedMargin = 1.5;
+
+// What the grid needs from the positions and velocities at the start of a step: the largest
+// squared speed and the positions' bounds. Both are exact in any order, so parts may merge them.
+struct StartScan {
+  double speed2 = 0;
+  HomeGrid::Bounds bounds;
+  void add(double x, double y, double v2) {
+    speed2 = std::max(speed2, v2);
+    bounds.add(x, y);
+  }
+  void merge(const StartScan& o) {
+    speed2 = std::max(speed2, o.speed2);
+    bounds.merge(o.bounds);
+  }
+};
+
 }  // namespace ballbench

@@ -8,6 +8,7 @@
 // balls every step, ~2 ms at 10^6 bowl balls with a few thousand contacts stored), nor a node and
 // an allocation per contact (std::unordered_map).
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace ballbench {
@@ -42,6 +43,18 @@ class WarmStart {
       if (k == kEmpty) return -1.0;
       if (entries_[k].i == i && entries_[k].j == j) return entries_[k].impulse;
     }
+  }
+
+  // The balls were renumbered (new_number[old ball]): the stored contacts follow them, a pair keyed
+  // with its lower number first if `lower_first`. `scratch` is reused.
+  void renumber(const int* new_number, bool lower_first, std::vector<Entry>& scratch) {
+    scratch.clear();
+    for (const Entry& e : entries_) {
+      int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
+      if (lower_first && j >= 0 && i > j) std::swap(i, j);
+      scratch.push_back({i, j, e.impulse});
+    }
+    assign(scratch);
   }
 
   // Calls f(Entry) for every stored contact.
