@@ -61,11 +61,17 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
   // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
   // of their speeds, not their relative speed: two balls falling together close at once when the
   // lower one lands. (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
+  const double* __restrict px = w.p.col(0).data();
+  const double* __restrict py = w.p.col(1).data();
+  const double* __restrict vx = w.v.col(0).data();
+  const double* __restrict vy = w.v.col(1).data();
+  const double* __restrict radius = w.equal_radii ? nullptr : w.r.data();
+  const double r0 = w.r0;
   const auto try_pair = [&](int a, int b) {
     if (a > b) std::swap(a, b);
-    const double dx = w.p(a, 0) - w.p(b, 0), dy = w.p(a, 1) - w.p(b, 1);
-    const double speed2 = w.v(a, 0) * w.v(a, 0) + w.v(a, 1) * w.v(a, 1) + w.v(b, 0) * w.v(b, 0) + w.v(b, 1) * w.v(b, 1);
-    const double rs = w.radius(a) + w.radius(b);
+    const double dx = px[a] - px[b], dy = py[a] - py[b];
+    const double speed2 = vx[a] * vx[a] + vy[a] * vy[a] + vx[b] * vx[b] + vy[b] * vy[b];
+    const double rs = radius ? radius[a] + radius[b] : r0 + r0;
     const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= lim * lim || d2 == 0) return;
