@@ -36,58 +36,202 @@ void SoftResting::step(HomeWorld& w, double dt, double v_rest, bool no_pairs, Ho
   for (int p = 0; p < k; ++p) part(w, dt / k, v_rest, no_pairs, p == 0 ? first : scan(w), grid, pool, renumber_if_due);
 }
 
-// One soft step (soft_step.h) of dt over every contact that can touch within it, found on a grid
-// whose cells cover the fastest ball's motion; `start`: the state's scan at its start.
-void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, const StartScan& start, HomeGrid& grid,
-                       ForkJoin& pool, const std::function<void()>& renumber_if_due) {
-  if (sleep_.all_asleep()) return;
-  const int n = w.n;
-  const double g = w.g.norm();
-  const double speed2 = start.speed2;
-  // The warm start holds one substep's impulses; a substep of another length scales them.
-  const double h = dt / std::max(soft_.substeps, 1);
-  const double warm_scale = warm_h_ > 0 ? h / warm_h_ : 1.0;
-  warm_h_ = h;
-  // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin).
-  const double reach = (std::sqrt(speed2) + g * dt) * dt * kSpeedMargin;
-  const double margin = kSoftMargin * w.rmax;
-  contacts_.clear();
-  // The mass is set once it is known which balls sleep (below).
-  const auto add = [&](int i, int j, double nx, double ny, double gap) {
-    const double warm = warm_.find(i, j);
-    contacts_.push_back({{i, j, nx, ny, 0.0, warm > 0 ? warm * warm_scale : 0.0}, gap, 0.0, 0.0});
-  };
-  // A pair that can touch within the step, the lower number first, so the warm start finds it
-  // whichever cell order the grid gave it this step. Their closing speed is bounded by the sum
-  // of their speeds, not their relative speed: two balls falling together close at once when the
-  // lower one lands. (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
-  const double* __restrict px = w.p.col(0).data();
-  const double* __restrict py = w.p.col(1).data();
-  const double* __restrict vx = w.v.col(0).data();
-  const double* __restrict vy = w.v.col(1).data();
-  const double* __restrict radius = w.equal_radii ? nullptr : w.r.data();
-  const double r0 = w.r0;
-  const auto try_pair = [&](int a, int b) {
-    if (a > b) std::swap(a, b);
+namespace {
+
+// Which contacts can touch within a part of dt: a pair whose gap the sum of the two balls' speeds
+// (not their relative speed: two balls falling together close at once when the lower one lands),
+// with what gravity adds, can close within it, or a wall a ball can reach, plus `margin`.
+struct ContactTest {
+  const double* __restrict px;
+  const double* __restrict py;
+  const double* __restrict vx;
+  const double* __restrict vy;
+  const double* __restrict radius;  // null: every ball has r0
+  double r0, g, dt, margin;
+  const HomeWorld& w;
+
+  ContactTest(const HomeWorld& w, double dt, double margin)
+      : px(w.p.col(0).data()),
+        py(w.p.col(1).data()),
+        vx(w.v.col(0).data()),
+        vy(w.v.col(1).data()),
+        radius(w.equal_radii ? nullptr : w.r.data()),
+        r0(w.r0),
+        g(w.g.norm()),
+        dt(dt),
+        margin(margin),
+        w(w) {}
+
+  // Pair a < b: if it can touch, its contact to `add(a, b, nx, ny, gap)`; whether it did.
+  // (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
+  template <class Add>
+  bool pair(int a, int b, Add&& add) const {
     const double dx = px[a] - px[b], dy = py[a] - py[b];
     const double speed2 = vx[a] * vx[a] + vy[a] * vy[a] + vx[b] * vx[b] + vy[b] * vy[b];
     const double rs = radius ? radius[a] + radius[b] : r0 + r0;
     const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
     const double d2 = dx * dx + dy * dy;
-    if (d2 >= lim * lim || d2 == 0) return;
+    if (d2 >= lim * lim || d2 == 0) return false;
     const double d = std::sqrt(d2);
     add(a, b, dx / d, dy / d, d - rs);
-  };
-  const auto try_walls = [&](int i) {
-    for (int axis = 0; axis < 2; ++axis) {
-      const double v = w.v(i, axis), toward = std::abs(v) + g * dt;
-      for (int side = 0; side < 2; ++side) {
-        const double gap = w.wall_gap(i, axis, side);
-        if (gap >= toward * dt * kSpeedMargin + margin) continue;
-        const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
-        add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
-      }
+    return true;
+  }
+
+  // Wall `side` of `axis` for ball i, as pair().
+  template <class Add>
+  bool wall(int i, int axis, int side, Add&& add) const {
+    const double toward = std::abs(axis == 0 ? vx[i] : vy[i]) + g * dt;
+    const double gap = w.wall_gap(i, axis, side);
+    if (gap >= toward * dt * kSpeedMargin + margin) return false;
+    const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
+    add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
+    return true;
+  }
+  template <class Add>
+  void walls(int i, Add&& add) const {
+    for (int axis = 0; axis < 2; ++axis)
+      for (int side = 0; side < 2; ++side) wall(i, axis, side, add);
+  }
+};
+
+// How far beyond what can touch within the step the candidates reach, in radii of the largest ball:
+// in a settled hexagonal pile the next shell of neighbours is 1.46 radii beyond touching, so half a
+// radius adds no candidate there, and a pile at rest keeps its candidates for good.
+constexpr double kCandidateSkin = 0.5;
+
+}  // namespace
+
+// One soft step (soft_step.h) of dt over every contact that can touch within it; `start`: the
+// state's scan at its start.
+void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, const StartScan& start, HomeGrid& grid,
+                       ForkJoin& pool, const std::function<void()>& renumber_if_due) {
+  if (sleep_.all_asleep()) return;
+  const int n = w.n;
+  // The warm start holds one substep's impulses; a substep of another length scales them.
+  const double h = dt / std::max(soft_.substeps, 1);
+  warm_scale_ = warm_h_ > 0 ? h / warm_h_ : 1.0;
+  warm_h_ = h;
+  contacts_.clear();
+  if (sleep_.enabled())
+    gather_awake(w, dt, no_pairs, start, grid, pool, renumber_if_due);
+  else
+    gather_from_candidates(w, dt, no_pairs, start, grid, pool, renumber_if_due);
+  const double* inv_m = w.equal_masses ? nullptr : w.inv_m.data();
+  const std::vector<int>& awake = sleep_.awake(n, inv_m, w.inv_m0);
+  if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
+  for (SoftContact& c : contacts_) {
+    const double wi = inv_m ? inv_m[c.i] : w.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w.inv_m0;
+    c.mass = 1.0 / (wi + wj);
+  }
+  const SoftBodies bodies{w.p.col(0).data(),
+                          w.p.col(1).data(),
+                          w.v.col(0).data(),
+                          w.v.col(1).data(),
+                          inv_m,
+                          w.inv_m0,
+                          sleep_.sleeping() > 0 ? awake.data() : nullptr,
+                          static_cast<int>(awake.size())};
+  soft_step(bodies, n, contacts_, w.g.x(), w.g.y(), dt, soft_, {w.e, v_rest}, scratch_);
+  if (sleep_.enabled()) {
+    sleep_.fall_asleep(contacts_, w.v.col(0).data(), w.v.col(1).data(), dt);
+    warm_entries_.clear();
+    for (const SoftContact& c : contacts_)
+      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+    warm_.assign(warm_entries_);
+  } else {
+    // A candidate whose contact was not in this part, or pushed nothing, starts the next from 0.
+    for (Candidate& c : candidates_) c.impulse = 0;
+    for (size_t k = 0; k < contacts_.size(); ++k) candidates_[candidate_of_[k]].impulse = contacts_[k].impulse;
+  }
+}
+
+void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_pairs, const StartScan& start,
+                                         HomeGrid& grid, ForkJoin& pool,
+                                         const std::function<void()>& renumber_if_due) {
+  // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin). A pair
+  // closes at most 2 reach, a ball reaches a wall within reach.
+  const double reach = (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+  // The candidates hold while no pair can have come within reach of touching that was not within
+  // reach of touching plus the skin at their build: each ball moved at most `moved` since.
+  bool hold = built_reach_ >= 0;
+  if (hold) {
+    double moved2 = 0;
+    for (int i = 0; i < w.n; ++i) {
+      const double dx = w.p(i, 0) - built_at_(i, 0), dy = w.p(i, 1) - built_at_(i, 1);
+      moved2 = std::max(moved2, dx * dx + dy * dy);
     }
+    hold = 2 * std::sqrt(moved2) + 2 * reach <= 2 * built_reach_ + kCandidateSkin * w.rmax;
+  }
+  if (!hold) build_candidates(w, reach, no_pairs, start, grid, pool, renumber_if_due);
+  const ContactTest test(w, dt, kSoftMargin * w.rmax);
+  candidate_of_.clear();
+  int k = 0;
+  const auto add = [&](int i, int j, double nx, double ny, double gap) {
+    contacts_.push_back({{i, j, nx, ny, 0.0, candidates_[k].impulse * warm_scale_}, gap, 0.0, 0.0});
+    candidate_of_.push_back(k);
+  };
+  for (const int m = static_cast<int>(candidates_.size()); k < m; ++k) {
+    const Candidate& c = candidates_[k];
+    if (c.j >= 0)
+      test.pair(c.i, c.j, add);
+    else
+      test.wall(c.i, wall_axis(c.j), wall_side(c.j), add);
+  }
+}
+
+// The candidates: every pair within 2 reach + margin + skin of touching (on a grid with cells that
+// wide), the lower number first, and every wall within reach + margin + skin of a ball; each with
+// the impulse its contact ended the last part with.
+void SoftResting::build_candidates(const HomeWorld& w, double reach, bool no_pairs, const StartScan& start,
+                                   HomeGrid& grid, ForkJoin& pool, const std::function<void()>& renumber_if_due) {
+  warm_entries_.clear();
+  for (const Candidate& c : candidates_)
+    if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+  warm_.assign(warm_entries_);  // a renumbering (below) re-keys it
+  const double extra = kSoftMargin * w.rmax + kCandidateSkin * w.rmax;
+  candidates_.clear();
+  const auto keep = [&](int i, int j) {
+    const double warm = warm_.find(i, j);
+    candidates_.push_back({i, j, warm > 0 ? warm : 0.0});
+  };
+  if (!no_pairs) {
+    grid.build(w.p, w.r, 2.0 * w.rmax + 2.0 * reach + extra, pool, false, &start.bounds);
+    renumber_if_due();
+    const double* px = w.p.col(0).data();
+    const double* py = w.p.col(1).data();
+    const int* id = grid.id();
+    grid.for_each_forward_pair(0, grid.balls(), [&](int sa, int sb) {
+      int a = id[sa], b = id[sb];
+      if (a > b) std::swap(a, b);
+      const double lim = w.radius(a) + w.radius(b) + 2.0 * reach + extra;
+      const double dx = px[a] - px[b], dy = py[a] - py[b];
+      if (dx * dx + dy * dy < lim * lim) keep(a, b);
+    });
+  }
+  if (w.walls)
+    for (int i = 0; i < w.n; ++i)
+      for (int axis = 0; axis < 2; ++axis)
+        for (int side = 0; side < 2; ++side)
+          if (w.wall_gap(i, axis, side) < reach + extra) keep(i, wall_partner(axis, side));
+  built_at_ = w.p;
+  built_reach_ = reach;
+}
+
+void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid,
+                               ForkJoin& pool, const std::function<void()>& renumber_if_due) {
+  const int n = w.n;
+  const double reach = (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+  const double margin = kSoftMargin * w.rmax;
+  const ContactTest test(w, dt, margin);
+  const auto add = [&](int i, int j, double nx, double ny, double gap) {
+    const double warm = warm_.find(i, j);
+    contacts_.push_back({{i, j, nx, ny, 0.0, warm > 0 ? warm * warm_scale_ : 0.0}, gap, 0.0, 0.0});
+  };
+  // A pair, the lower number first, so the warm start finds it whichever cell order the grid gave
+  // it this step.
+  const auto try_pair = [&](int a, int b) {
+    if (a > b) std::swap(a, b);
+    test.pair(a, b, add);
   };
   // Two sleeping balls have no contact: neither moves (unless one wakes, below).
   const int sleeping = sleep_.sleeping();
@@ -112,7 +256,7 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
   }
   if (w.walls)
     for (int i = 0; i < n; ++i)
-      if (sleeping == 0 || !asleep(i)) try_walls(i);
+      if (sleeping == 0 || !asleep(i)) test.walls(i, add);
   if (sleeping > 0) {
     // A ball woken now gains the contacts it had none of while it slept.
     sleep_.wake_touched(contacts_, w.v.col(0).data(), w.v.col(1).data());
@@ -122,31 +266,10 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
           const SleepIslands::State sj = sleep_.state(j);
           if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i)) try_pair(i, j);
         });
-      if (w.walls) try_walls(i);
+      if (w.walls) test.walls(i, add);
     }
     sleep_.finish_waking();
   }
-  const double* inv_m = w.equal_masses ? nullptr : w.inv_m.data();
-  const std::vector<int>& awake = sleep_.awake(n, inv_m, w.inv_m0);
-  if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
-  for (SoftContact& c : contacts_) {
-    const double wi = inv_m ? inv_m[c.i] : w.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w.inv_m0;
-    c.mass = 1.0 / (wi + wj);
-  }
-  const SoftBodies bodies{w.p.col(0).data(),
-                          w.p.col(1).data(),
-                          w.v.col(0).data(),
-                          w.v.col(1).data(),
-                          inv_m,
-                          w.inv_m0,
-                          sleep_.sleeping() > 0 ? awake.data() : nullptr,
-                          static_cast<int>(awake.size())};
-  soft_step(bodies, n, contacts_, w.g.x(), w.g.y(), dt, soft_, {w.e, v_rest}, scratch_);
-  if (sleep_.enabled()) sleep_.fall_asleep(contacts_, w.v.col(0).data(), w.v.col(1).data(), dt);
-  warm_entries_.clear();
-  for (const SoftContact& c : contacts_)
-    if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
-  warm_.assign(warm_entries_);
 }
 
 }  // namespace ballbench
