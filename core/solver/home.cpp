@@ -98,7 +98,6 @@ struct StepScratch {
   std::vector<std::vector<PredictedEvent>> first_events;    // the active balls' events at the start of drift
   std::vector<StartScan> start_parts;                       // each part's share of start_pass
   std::vector<std::vector<Approach>> approaches;            // listed: the list screen's approaching pairs
-  std::vector<std::pair<double, double>> extent;            // listed: largest squared displacement and speed
   // The contact pass and the cluster solves.
   std::vector<PassContact> contacts;
   std::vector<int> live;            // contacts a sweep after the first still visits (see solve_contacts)
@@ -117,8 +116,7 @@ struct StepScratch {
   std::vector<uint8_t> placed;
 
   explicit StepScratch(int parts)
-      : pair_hits(parts), pair_contacts(parts), wall_hits(parts), first_events(parts), approaches(parts),
-        extent(parts) {}
+      : pair_hits(parts), pair_contacts(parts), wall_hits(parts), first_events(parts), approaches(parts) {}
 };
 
 class Home final : public Engine {
@@ -135,6 +133,7 @@ class Home final : public Engine {
         active_(n_, 0),
         pool_(ForkJoin::threads_for(n_, kParallelBalls, s.threads)),
         tmp_(pool_.parts()),
+        extent_(pool_.parts()),
         soft_(s.resting == "soft" && scene.features().gravity) {
     if (listed_) tmp_.first_t.assign(n_, kNever), tmp_.first_j.assign(n_, -1), near_wall_mark_.assign(n_, 0);
     if (!soft_ && !sc_.elastic) tmp_.degree.assign(n_, 0), tmp_.in_cluster.assign(n_, 0);  // contact solves
@@ -278,11 +277,11 @@ class Home final : public Engine {
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
   // ends decide). A collision that changes a velocity is checked again (beyond_skin). The largest
   // displacement plus the largest speed bounds every ball's own sum; the last step's final advance
-  // measured both (tmp_.extent), and nothing has moved since.
+  // measured both (extent_), and nothing has moved since.
   bool list_covers(double horizon) const {
     if (half_skin_ < 0) return false;  // no list yet
     double moved2 = 0;
-    for (const auto& [m, v] : tmp_.extent) moved2 = std::max(moved2, m);
+    for (const auto& [m, v] : extent_) moved2 = std::max(moved2, m);
     return std::sqrt(moved2) + start_speed() * horizon <= half_skin_;
   }
 
@@ -291,7 +290,7 @@ class Home final : public Engine {
   double start_speed() const {
     if (half_skin_ < 0) return max_speed();
     double speed2 = 0;
-    for (const auto& e : tmp_.extent) speed2 = std::max(speed2, e.second);
+    for (const auto& e : extent_) speed2 = std::max(speed2, e.second);
     return std::sqrt(speed2);
   }
 
@@ -957,7 +956,7 @@ class Home final : public Engine {
     pool_.run([&](int p) {
       const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
       const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
-      finish_step(b, e, tmp_.extent[p]);
+      finish_step(b, e, extent_[p]);
     });
   }
 
@@ -1154,6 +1153,9 @@ class Home final : public Engine {
   Eigen::MatrixX2d built_at_;     // listed_: positions when the list was built
   std::vector<int> near_wall_;    // listed_: balls that can reach a wall before the list expires
   std::vector<uint8_t> near_wall_mark_;  // listed_: 1 for the balls in near_wall_
+  // listed_, per part: the largest squared displacement since the list's build and the largest
+  // squared speed, measured by a step's final advance for the next step's list check.
+  std::vector<std::pair<double, double>> extent_;
   double half_skin_ = -1;         // listed_: how far a ball may move from there (negative: no list yet)
   bool renumbered_ = false;       // ever renumbered
   long renumbered_at_ = 0;        // the step of the last renumbering
