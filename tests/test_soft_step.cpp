@@ -166,6 +166,38 @@ TEST(HomeSoft, SeedBowlEndsNearExactsEnergy) {
   EXPECT_NEAR(soft.metrics.energy.final / exact.metrics.energy.final, 1.0, 0.03);
 }
 
+// The soft path keeps its contact candidates while no ball can have moved beyond them: a ball
+// that starts 15 m above another (no candidate between them at the first build) and falls onto it
+// must be caught by a rebuild in time, and end resting on it. Candidates held too long would let
+// it fall through.
+TEST(HomeSoft, ABallFallingOntoARestingBallLandsOnIt) {
+  const std::string text = R"(
+dt = 0.01
+duration = 4.0
+gravity = [0.0, -9.81]
+restitution = 0.5
+[container]
+min = [-2.0, 0.0]
+max = [2.0, 20.0]
+[[ball]]
+pos = [0.0, 0.25]
+radius = 0.25
+[[ball]]
+pos = [0.0, 15.0]
+radius = 0.25
+)";
+  const Scene scene = parse_scene(text, "fall-onto");
+  const Result r = run_soft(scene);
+  ASSERT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
+  EXPECT_LT(r.metrics.penetration_max, 0.05);
+  std::unique_ptr<Engine> e = find_engine("home").create(scene, "default", {{"resting", "soft"}});
+  for (long k = 0; k < scene.steps(); ++k) e->step(scene.dt);
+  State s;
+  e->read(s);
+  EXPECT_NEAR(s.pos(1, 1) - s.pos(0, 1), 0.5, 0.01) << "the upper ball should rest on the lower one";
+}
+
 // A ball passing another at 50 m/s (10 radii per step), 2 cm clear of it, never touches it. A
 // step taken whole fixes the contact's normal at the start, along which the passing ball seems to
 // close 0.46 m, and pushes the other away; cut into parts of half a radius, it does not.
