@@ -19,25 +19,6 @@ StartScan scan(const HomeWorld& w) {
   return s;
 }
 
-}  // namespace
-
-SoftResting::SoftResting(const HomeSettings& s, int n)
-    : soft_(s.soft), max_stride_(s.max_stride), max_parts_(s.max_parts) {
-  if (s.sleep_speed > 0) sleep_ = SleepIslands(n, s.sleep_speed, s.sleep_time);
-}
-
-void SoftResting::step(HomeWorld& w, double dt, double v_rest, bool no_pairs, HomeGrid& grid, ForkJoin& pool,
-                       const std::function<void()>& renumber_if_due) {
-  if (sleep_.all_asleep()) return;  // every ball asleep: nothing can move or wake one
-  const StartScan first = scan(w);
-  const double travel = (std::sqrt(first.speed2) + w.g.norm() * dt) * dt;
-  const double parts = std::ceil(travel / (max_stride_ * w.rmin));
-  const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(max_parts_))) : 1;
-  for (int p = 0; p < k; ++p) part(w, dt / k, v_rest, no_pairs, p == 0 ? first : scan(w), grid, pool, renumber_if_due);
-}
-
-namespace {
-
 // Which contacts can touch within a part of dt: a pair whose gap the sum of the two balls' speeds
 // (not their relative speed: two balls falling together close at once when the lower one lands),
 // with what gravity adds, can close within it, or a wall a ball can reach, plus `margin`.
@@ -100,6 +81,21 @@ struct ContactTest {
 constexpr double kCandidateSkin = 0.5;
 
 }  // namespace
+
+SoftResting::SoftResting(const HomeSettings& s, int n)
+    : soft_(s.soft), max_stride_(s.max_stride), max_parts_(s.max_parts) {
+  if (s.sleep_speed > 0) sleep_ = SleepIslands(n, s.sleep_speed, s.sleep_time);
+}
+
+void SoftResting::step(HomeWorld& w, double dt, double v_rest, bool no_pairs, HomeGrid& grid, ForkJoin& pool,
+                       const std::function<void()>& renumber_if_due) {
+  if (sleep_.all_asleep()) return;  // every ball asleep: nothing can move or wake one
+  const StartScan first = scan(w);
+  const double travel = (std::sqrt(first.speed2) + w.g.norm() * dt) * dt;
+  const double parts = std::ceil(travel / (max_stride_ * w.rmin));
+  const int k = parts > 1 ? static_cast<int>(std::min(parts, static_cast<double>(max_parts_))) : 1;
+  for (int p = 0; p < k; ++p) part(w, dt / k, v_rest, no_pairs, p == 0 ? first : scan(w), grid, pool, renumber_if_due);
+}
 
 // One soft step (soft_step.h) of dt over every contact that can touch within it; `start`: the
 // state's scan at its start.
