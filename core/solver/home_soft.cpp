@@ -147,6 +147,8 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
   // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin). A pair
   // closes at most 2 reach, a ball reaches a wall within reach.
   const double reach = (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+  const ContactTest test(w, dt, kSoftMargin * w.rmax);
+  candidate_of_.clear();
   // The candidates hold while no pair can have come within reach of touching that was not within
   // reach of touching plus the skin at their build: each ball moved at most `moved` since.
   bool hold = built_reach_ >= 0;
@@ -156,11 +158,9 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
       const double dx = w.p(i, 0) - built_at_(i, 0), dy = w.p(i, 1) - built_at_(i, 1);
       moved2 = std::max(moved2, dx * dx + dy * dy);
     }
-    hold = 2 * std::sqrt(moved2) + 2 * reach <= 2 * built_reach_ + kCandidateSkin * w.rmax;
+    hold = 2 * std::sqrt(moved2) + 2 * reach <= 2 * built_reach_ + built_skin_;
   }
-  if (!hold) build_candidates(w, reach, no_pairs, start, grid, pool, renumber_if_due);
-  const ContactTest test(w, dt, kSoftMargin * w.rmax);
-  candidate_of_.clear();
+  if (!hold) return build_candidates(w, dt, reach, no_pairs, start, grid, pool, renumber_if_due);
   int k = 0;
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
     contacts_.push_back({{i, j, nx, ny, 0.0, candidates_[k].impulse * warm_scale_}, gap, 0.0, 0.0});
@@ -177,15 +177,24 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
 
 // The candidates: every pair within 2 reach + margin + skin of touching (on a grid with cells that
 // wide), the lower number first, and every wall within reach + margin + skin of a ball; each with
-// the impulse its contact ended the last part with.
-void SoftResting::build_candidates(const HomeWorld& w, double reach, bool no_pairs, const StartScan& start,
+// the impulse its contact ended the last part with; and this part's contacts among them. The skin
+// is left out while a ball moves so fast that the candidates would not hold for a few parts (the
+// fluid's pour), where it would only add candidates.
+void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, bool no_pairs, const StartScan& start,
                                    HomeGrid& grid, ForkJoin& pool, const std::function<void()>& renumber_if_due) {
+  const ContactTest test(w, dt, kSoftMargin * w.rmax);
   warm_entries_.clear();
   for (const Candidate& c : candidates_)
     if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
   warm_.assign(warm_entries_);  // a renumbering (below) re-keys it
-  const double extra = kSoftMargin * w.rmax + kCandidateSkin * w.rmax;
+  const double skin = reach <= 0.25 * kCandidateSkin * w.rmax ? kCandidateSkin * w.rmax : 0.0;
+  const double extra = kSoftMargin * w.rmax + skin;
   candidates_.clear();
+  const auto add = [&](int i, int j, double nx, double ny, double gap) {
+    const int k = static_cast<int>(candidates_.size()) - 1;
+    contacts_.push_back({{i, j, nx, ny, 0.0, candidates_[k].impulse * warm_scale_}, gap, 0.0, 0.0});
+    candidate_of_.push_back(k);
+  };
   const auto keep = [&](int i, int j) {
     const double warm = warm_.find(i, j);
     candidates_.push_back({i, j, warm > 0 ? warm : 0.0});
@@ -201,16 +210,22 @@ void SoftResting::build_candidates(const HomeWorld& w, double reach, bool no_pai
       if (a > b) std::swap(a, b);
       const double lim = w.radius(a) + w.radius(b) + 2.0 * reach + extra;
       const double dx = px[a] - px[b], dy = py[a] - py[b];
-      if (dx * dx + dy * dy < lim * lim) keep(a, b);
+      if (dx * dx + dy * dy >= lim * lim) return;
+      keep(a, b);
+      test.pair(a, b, add);
     });
   }
   if (w.walls)
     for (int i = 0; i < w.n; ++i)
       for (int axis = 0; axis < 2; ++axis)
         for (int side = 0; side < 2; ++side)
-          if (w.wall_gap(i, axis, side) < reach + extra) keep(i, wall_partner(axis, side));
+          if (w.wall_gap(i, axis, side) < reach + extra) {
+            keep(i, wall_partner(axis, side));
+            test.wall(i, axis, side, add);
+          }
   built_at_ = w.p;
   built_reach_ = reach;
+  built_skin_ = skin;
 }
 
 void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid,

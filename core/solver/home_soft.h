@@ -44,8 +44,8 @@ class SoftResting {
   // beyond them (without sleeping).
   void gather_from_candidates(const HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid,
                               ForkJoin& pool, const std::function<void()>& renumber_if_due);
-  void build_candidates(const HomeWorld& w, double reach, bool no_pairs, const StartScan& start, HomeGrid& grid,
-                        ForkJoin& pool, const std::function<void()>& renumber_if_due);
+  void build_candidates(const HomeWorld& w, double dt, double reach, bool no_pairs, const StartScan& start,
+                        HomeGrid& grid, ForkJoin& pool, const std::function<void()>& renumber_if_due);
   // Every contact gathered afresh on the grid, around the balls awake (with sleeping).
   void gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid, ForkJoin& pool,
                     const std::function<void()>& renumber_if_due);
@@ -55,8 +55,9 @@ class SoftResting {
   int max_parts_ = 64;
   std::vector<SoftContact> contacts_;
   // Without sleeping, the contacts come from candidates (Verlet's idea, as home's neighbour list):
-  // every pair and wall within reach of touching at the build plus `skin_`, kept while no ball can
-  // have moved beyond them, each with the impulse its contact ended the last part with.
+  // every pair and wall within reach of touching at the build plus a skin (none while balls move
+  // too fast for it to pay), kept while no ball can have moved beyond them, each with the impulse
+  // its contact ended the last part with.
   struct Candidate {
     int i, j;  // j < 0: a wall (wall_partner)
     double impulse;
@@ -65,6 +66,7 @@ class SoftResting {
   std::vector<int> candidate_of_;  // per contact of the part: its candidate
   Eigen::MatrixX2d built_at_;      // positions at the candidates' build
   double built_reach_ = -1;        // the reach they were built for (m); negative: none built
+  double built_skin_ = 0;          // and the skin (m)
   WarmStart warm_;  // each contact's impulse at the end of the last part, a pair keyed lower ball first
   std::vector<WarmStart::Entry> warm_entries_;  // for rebuilding warm_
   double warm_h_ = 0;  // the substep the warm start's impulses were accumulated over (s)

@@ -20,32 +20,35 @@ Softness make_soft(double hertz, double zeta, double h) {
   return {omega / a1, a2 * a3, a3};
 }
 
+// The solve's view of the balls: each ball's velocity and displacement since the start of the
+// step in one record (a contact update reads both balls' four values, so one cache line per ball
+// instead of four), and the inverse masses.
 struct Kernel {
-  const SoftBodies& b;
-  const double* dx;
-  const double* dy;
+  SoftStepScratch::Motion* __restrict m;
+  const double* inv_masses;  // null: every ball has inv_mass0
+  double inv_mass0;
 
-  double inv_mass(int i) const { return b.inv_mass ? b.inv_mass[i] : b.inv_mass0; }
+  double inv_mass(int i) const { return inv_masses ? inv_masses[i] : inv_mass0; }
 
   double normal_velocity(const SoftContact& c) const {
-    double wx = b.vx[c.i], wy = b.vy[c.i];
-    if (c.j >= 0) wx -= b.vx[c.j], wy -= b.vy[c.j];
+    double wx = m[c.i].vx, wy = m[c.i].vy;
+    if (c.j >= 0) wx -= m[c.j].vx, wy -= m[c.j].vy;
     return wx * c.nx + wy * c.ny;
   }
 
   // The separation now: the gap at the start plus the balls' displacements along the fixed normal.
   double separation(const SoftContact& c) const {
-    double ux = dx[c.i], uy = dy[c.i];
-    if (c.j >= 0) ux -= dx[c.j], uy -= dy[c.j];
+    double ux = m[c.i].dx, uy = m[c.i].dy;
+    if (c.j >= 0) ux -= m[c.j].dx, uy -= m[c.j].dy;
     return c.gap + ux * c.nx + uy * c.ny;
   }
 
   void apply(const SoftContact& c, double impulse) const {
     const double mi = inv_mass(c.i) * impulse;
-    b.vx[c.i] += mi * c.nx, b.vy[c.i] += mi * c.ny;
+    m[c.i].vx += mi * c.nx, m[c.i].vy += mi * c.ny;
     if (c.j >= 0) {
       const double mj = inv_mass(c.j) * impulse;
-      b.vx[c.j] -= mj * c.nx, b.vy[c.j] -= mj * c.ny;
+      m[c.j].vx -= mj * c.nx, m[c.j].vy -= mj * c.ny;
     }
   }
 
@@ -78,42 +81,43 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   const double h = dt / substeps, inv_h = 1 / h;
   // A contact spring stiffer than a quarter of the substep rate is not resolved by the substeps.
   const Softness soft = make_soft(std::min(s.contact_hertz, 0.25 * inv_h), s.damping_ratio, h);
-  if (scratch.dx.size() != static_cast<size_t>(n)) scratch.dx.assign(n, 0.0), scratch.dy.assign(n, 0.0);
-  const Kernel k{b, scratch.dx.data(), scratch.dy.data()};
+  // The velocities into the records, displacements 0; back after the last substep.
+  scratch.motion.resize(n);
+  SoftStepScratch::Motion* __restrict m = scratch.motion.data();
+  for (int i = 0; i < n; ++i) m[i] = {b.vx[i], b.vy[i], 0.0, 0.0};
+  const Kernel k{m, b.inv_mass, b.inv_mass0};
   for (SoftContact& c : contacts) c.vn0 = k.normal_velocity(c), c.max_impulse = 0;
   const double gxh = gx * h, gyh = gy * h;
-  double* __restrict ux = scratch.dx.data();
-  double* __restrict uy = scratch.dy.data();
   // Over every ball, or only over those that move (the others have inverse mass 0).
   const auto for_moving = [&](auto&& f) {
     if (b.moving)
-      for (int m = 0; m < b.moving_count; ++m) f(b.moving[m]);
+      for (int q = 0; q < b.moving_count; ++q) f(b.moving[q]);
     else
       for (int i = 0; i < n; ++i) f(i);
   };
   for (int step = 0; step < substeps; ++step) {
-    for_moving([&](int i) { b.vx[i] += gxh, b.vy[i] += gyh; });
+    for_moving([&](int i) { m[i].vx += gxh, m[i].vy += gyh; });
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
     for (int it = 0; it < s.substep_iterations; ++it)
       for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
     for_moving([&](int i) {
-      const double mx = b.vx[i] * h, my = b.vy[i] * h;
-      b.x[i] += mx, b.y[i] += my, ux[i] += mx, uy[i] += my;
+      const double mx = m[i].vx * h, my = m[i].vy * h;
+      b.x[i] += mx, b.y[i] += my, m[i].dx += mx, m[i].dy += my;
     });
     for (int it = 0; it < s.relax_iterations; ++it)
       for (SoftContact& c : contacts) k.solve(c, inv_h, soft, false, s.push_speed);
   }
-  for_moving([&](int i) { ux[i] = uy[i] = 0; });  // zero for the next step, as the held balls are
   // Restitution (Box2D v3's b2ApplyRestitution): a contact that approached faster than the
   // threshold at the start and pushed during the step leaves at e times that speed.
-  if (restitution.e == 0) return;
-  for (SoftContact& c : contacts) {
-    if (c.vn0 > -restitution.threshold || c.max_impulse == 0) continue;
-    const double vn = k.normal_velocity(c);
-    const double total = std::max(c.impulse - c.mass * (vn + restitution.e * c.vn0), 0.0);
-    k.apply(c, total - c.impulse);
-    c.impulse = total;
-  }
+  if (restitution.e != 0)
+    for (SoftContact& c : contacts) {
+      if (c.vn0 > -restitution.threshold || c.max_impulse == 0) continue;
+      const double vn = k.normal_velocity(c);
+      const double total = std::max(c.impulse - c.mass * (vn + restitution.e * c.vn0), 0.0);
+      k.apply(c, total - c.impulse);
+      c.impulse = total;
+    }
+  for_moving([&](int i) { b.vx[i] = m[i].vx, b.vy[i] = m[i].vy; });
 }
 
 }  // namespace ballbench

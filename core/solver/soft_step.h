@@ -58,7 +58,11 @@ struct SoftBodies {
 
 // Scratch the step reuses between calls (no allocation once warm).
 struct SoftStepScratch {
-  std::vector<double> dx, dy;  // each ball's displacement since the start of the step (m); 0 between steps
+  // A ball's velocity (m/s) and displacement since the start of the step (m), during the step.
+  struct Motion {
+    double vx, vy, dx, dy;
+  };
+  std::vector<Motion> motion;
 };
 
 // Advances the balls by dt under gravity (gx, gy), solving `contacts`; their impulses are left
