@@ -190,12 +190,14 @@ radius = 0.25
   const Result r = run_soft(scene);
   ASSERT_EQ(r.status, "ok") << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
-  EXPECT_LT(r.metrics.penetration_max, 0.05);
+  EXPECT_LT(r.metrics.penetration_max, 0.01);  // measured 0.0036 of a radius: the landing at 17 m/s compresses the spring
   std::unique_ptr<Engine> e = find_engine("home").create(scene, "default", {{"resting", "soft"}});
   for (long k = 0; k < scene.steps(); ++k) e->step(scene.dt);
   State s;
   e->read(s);
-  EXPECT_NEAR(s.pos(1, 1) - s.pos(0, 1), 0.5, 0.01) << "the upper ball should rest on the lower one";
+  // Measured 0.49990: the spring holds the upper ball's weight at 1e-4 m of overlap. Fallen
+  // through, the difference would be negative.
+  EXPECT_NEAR(s.pos(1, 1) - s.pos(0, 1), 0.5, 1e-3) << "the upper ball should rest on the lower one";
 }
 
 // A ball passing another at 50 m/s (10 radii per step), 2 cm clear of it, never touches it. A

@@ -126,18 +126,17 @@ class Home final : public Engine {
         sc_(shortcuts(scene, s.allow, s.rest_velocity)),
         reorder_(reorder_steps(scene.n(), s.reorder_steps)),
         w_(scene, sc_.equal_radii, sc_.equal_masses),
-        n_(w_.n),
         listed_(sc_.elastic && !sc_.no_pairs),
-        t_local_(n_),
-        count_(n_, 0),
-        active_(n_, 0),
-        pool_(ForkJoin::threads_for(n_, kParallelBalls, s.threads)),
+        t_local_(w_.n),
+        count_(w_.n, 0),
+        active_(w_.n, 0),
+        pool_(ForkJoin::threads_for(w_.n, kParallelBalls, s.threads)),
         tmp_(pool_.parts()),
         extent_(pool_.parts()),
         soft_(s.resting == "soft" && scene.features().gravity) {
-    if (listed_) tmp_.first_t.assign(n_, kNever), tmp_.first_j.assign(n_, -1), near_wall_mark_.assign(n_, 0);
-    if (!soft_ && !sc_.elastic) tmp_.degree.assign(n_, 0), tmp_.in_cluster.assign(n_, 0);  // contact solves
-    if (soft_) soft_path_ = SoftResting(s, n_);
+    if (listed_) tmp_.first_t.assign(w_.n, kNever), tmp_.first_j.assign(w_.n, -1), near_wall_mark_.assign(w_.n, 0);
+    if (!soft_ && !sc_.elastic) tmp_.degree.assign(w_.n, 0), tmp_.in_cluster.assign(w_.n, 0);  // contact solves
+    if (soft_) soft_path_ = SoftResting(s, w_.n);
   }
 
   void step(double dt) override {
@@ -170,7 +169,7 @@ class Home final : public Engine {
   // positions here, by finish_step's expressions: the same numbers.
   void read(State& out) const override {
     out.t = t_;
-    out.resize(n_);
+    out.resize(w_.n);
     const double end = unfinished_dt_;
     const double* __restrict tl = t_local_.data();
     if (!renumbered_ && end == 0) {
@@ -182,7 +181,7 @@ class Home final : public Engine {
     const int* at = renumbered_ ? w_.ball_of.data() : nullptr;
     const int parts = pool_.parts();
     pool_.run([&](int part) {
-      const long b = ForkJoin::range_begin(n_, part, parts), e = ForkJoin::range_begin(n_, part + 1, parts);
+      const long b = ForkJoin::range_begin(w_.n, part, parts), e = ForkJoin::range_begin(w_.n, part + 1, parts);
       for (int c = 0; c < 2; ++c) {
         const double* __restrict p = w_.p.col(c).data();
         const double* __restrict v = w_.v.col(c).data();
@@ -249,8 +248,8 @@ class Home final : public Engine {
     tmp_.start_parts.resize(parts);
     pool_.run([&](int p) {
       tmp_.wall_hits[p].clear();
-      const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
-      const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+      const int b = static_cast<int>(ForkJoin::range_begin(w_.n, p, parts));
+      const int e = static_cast<int>(ForkJoin::range_begin(w_.n, p + 1, parts));
       std::vector<int>& near = tmp_.wall_hits[p];
       tmp_.start_parts[p] = screen ? scan<Scan{.start = true, .screen = true}>(b, e, reach, near)
                                : scan<Scan{.start = true}>(b, e, reach, near);
@@ -265,13 +264,13 @@ class Home final : public Engine {
   // at the first, then when reorder_ steps have passed since the last. Returns whether it did.
   bool renumber_due() const { return reorder_ > 0 && !(renumbered_ && steps_ - renumbered_at_ < reorder_); }
   bool renumber_if_due() {
-    if (!renumber_due() || grid_.balls() != n_) return false;
+    if (!renumber_due() || grid_.balls() != w_.n) return false;
     reorder_by_cell();
     renumbered_ = true, renumbered_at_ = steps_;
     return true;
   }
 
-  double max_speed() const { return n_ > 0 ? std::sqrt(w_.v.rowwise().squaredNorm().maxCoeff()) : 0.0; }
+  double max_speed() const { return w_.n > 0 ? std::sqrt(w_.v.rowwise().squaredNorm().maxCoeff()) : 0.0; }
 
   // Every ball stays within half the skin of where it was at the list's build over the next
   // `horizon` at its present velocity (its path is straight, its distance from there convex, so the
@@ -559,8 +558,8 @@ class Home final : public Engine {
     const int parts = pool_.parts();
     pool_.run([&](int p) {
       tmp_.wall_hits[p].clear();
-      const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
-      const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+      const int b = static_cast<int>(ForkJoin::range_begin(w_.n, p, parts));
+      const int e = static_cast<int>(ForkJoin::range_begin(w_.n, p + 1, parts));
       if (sc_.elastic)
         scan<Scan{.contacts = false, .screen = true}>(b, e, reach, tmp_.wall_hits[p]);
       else
@@ -804,23 +803,23 @@ class Home final : public Engine {
   void reorder_by_cell() {
     const int* id = grid_.id();
     const int parts = pool_.parts();
-    tmp_.column.resize(n_);
+    tmp_.column.resize(w_.n);
     double* column_in_order = tmp_.column.data();
     for (double* column : {w_.p.col(0).data(), w_.p.col(1).data(), w_.v.col(0).data(), w_.v.col(1).data()}) {
       pool_.run([&](int p) {
-        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+        const long b = ForkJoin::range_begin(w_.n, p, parts), e = ForkJoin::range_begin(w_.n, p + 1, parts);
         for (long s = b; s < e; ++s) column_in_order[s] = column[id[s]];
       });
       pool_.run([&](int p) {
-        const long b = ForkJoin::range_begin(n_, p, parts), e = ForkJoin::range_begin(n_, p + 1, parts);
+        const long b = ForkJoin::range_begin(w_.n, p, parts), e = ForkJoin::range_begin(w_.n, p + 1, parts);
         std::copy(column_in_order + b, column_in_order + e, column + b);
       });
     }
-    tmp_.placed.resize(n_);
+    tmp_.placed.resize(w_.n);
     uint8_t* placed = tmp_.placed.data();
     auto permute = [&](auto* a) {
-      std::fill(placed, placed + n_, 0);
-      for (int s = 0; s < n_; ++s) {
+      std::fill(placed, placed + w_.n, 0);
+      for (int s = 0; s < w_.n; ++s) {
         if (placed[s]) continue;
         const auto first = a[s];  // the cycle s <- id[s] <- id[id[s]] ... back to s
         int k = s;
@@ -901,13 +900,13 @@ class Home final : public Engine {
     if (listed_) first_pair_events();
     if (parts == 1) {
       PredictedEvent ev;
-      for (int i = 0; i < n_; ++i)
+      for (int i = 0; i < w_.n; ++i)
         if (active_[i] && first_event(i, ev)) push_event(ev);
     } else {
       pool_.run([&](int p) {
         tmp_.first_events[p].clear();
-        const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
-        const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+        const int b = static_cast<int>(ForkJoin::range_begin(w_.n, p, parts));
+        const int e = static_cast<int>(ForkJoin::range_begin(w_.n, p + 1, parts));
         PredictedEvent ev;
         for (int i = b; i < e; ++i)
           if (active_[i] && first_event(i, ev)) tmp_.first_events[p].push_back(ev);
@@ -918,7 +917,7 @@ class Home final : public Engine {
     if (listed_)
       for (const auto& found : tmp_.approaches)
         for (const Approach& f : found) tmp_.first_t[f.a] = tmp_.first_t[f.b] = kNever, tmp_.first_j[f.a] = tmp_.first_j[f.b] = -1;
-    const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * n_ + 1000;
+    const int64_t budget = static_cast<int64_t>(s_.max_events_per_ball) * w_.n + 1000;
     int64_t events = 0;
     while (!tmp_.queue.empty()) {
       const PredictedEvent ev = pop_event();
@@ -954,8 +953,8 @@ class Home final : public Engine {
       return;
     }
     pool_.run([&](int p) {
-      const int b = static_cast<int>(ForkJoin::range_begin(n_, p, parts));
-      const int e = static_cast<int>(ForkJoin::range_begin(n_, p + 1, parts));
+      const int b = static_cast<int>(ForkJoin::range_begin(w_.n, p, parts));
+      const int e = static_cast<int>(ForkJoin::range_begin(w_.n, p + 1, parts));
       finish_step(b, e, extent_[p]);
     });
   }
@@ -1014,14 +1013,14 @@ class Home final : public Engine {
   // rebuild the grid for the rest of the step. Rare (large mass ratios, chains of impacts).
   void rebuild_mid_step(double t) {
     if (listed_) {
-      tmp_.rebuild_at = w_.p + (w_.v.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), n_))).matrix();
+      tmp_.rebuild_at = w_.p + (w_.v.array().colwise() * (t - Eigen::Map<const Eigen::ArrayXd>(t_local_.data(), w_.n))).matrix();
       rebuild_list(dt_ - t, false, tmp_.rebuild_at, max_speed());
     } else {
-      for (int i = 0; i < n_; ++i) advance(i, t);
+      for (int i = 0; i < w_.n; ++i) advance(i, t);
       build_broad_phase(dt_ - t, true);
     }
     tmp_.queue.clear();
-    for (int i = 0; i < n_; ++i) {
+    for (int i = 0; i < w_.n; ++i) {
       ++count_[i];
       predict(i);
     }
@@ -1133,7 +1132,6 @@ class Home final : public Engine {
   HomeShortcuts sc_;  // the shortcuts taken, fixed at construction
   int reorder_;       // renumber the balls in cell order every this many steps (0: never)
   HomeWorld w_;                   // the balls and the scene's constants
-  int n_;                         // w_.n
   bool listed_;                   // elastic: a neighbour list with a skin instead of a grid per step
   std::vector<double> t_local_;   // each ball's own time within the step (s)
   std::vector<uint32_t> count_;   // collisions so far, to recognise stale events

@@ -12,6 +12,12 @@ namespace {
 // can close within the step (speculative margin).
 constexpr double kSoftMargin = 0.1;
 
+// How far a ball may move within a part of dt that starts at `start`: gravity adds at most g dt,
+// and contacts can speed a ball up (kSpeedMargin). A pair closes at most twice as far.
+double part_reach(const HomeWorld& w, const StartScan& start, double dt) {
+  return (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+}
+
 // The largest squared speed and the positions' bounds, now.
 StartScan scan(const HomeWorld& w) {
   StartScan s;
@@ -113,7 +119,7 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
   else
     gather_from_candidates(w, dt, no_pairs, start, grid, pool, renumber_if_due);
   const double* inv_m = w.equal_masses ? nullptr : w.inv_m.data();
-  const std::vector<int>& awake = sleep_.awake(n, inv_m, w.inv_m0);
+  const std::vector<int>& awake = sleep_.awake(inv_m, w.inv_m0);
   if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
   for (SoftContact& c : contacts_) {
     const double wi = inv_m ? inv_m[c.i] : w.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w.inv_m0;
@@ -135,8 +141,8 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
       if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
     warm_.assign(warm_entries_);
   } else {
-    // A candidate whose contact was not in this part, or pushed nothing, starts the next from 0.
-    for (Candidate& c : candidates_) c.impulse = 0;
+    // A candidate whose contact pushed nothing starts the next part from 0 (one without a contact
+    // in this part was set to 0 as it was tested).
     for (size_t k = 0; k < contacts_.size(); ++k) candidates_[candidate_of_[k]].impulse = contacts_[k].impulse;
   }
 }
@@ -144,9 +150,7 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
 void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_pairs, const StartScan& start,
                                          HomeGrid& grid, ForkJoin& pool,
                                          const std::function<void()>& renumber_if_due) {
-  // Gravity adds at most g dt within the step; contacts can speed a ball up (kSpeedMargin). A pair
-  // closes at most 2 reach, a ball reaches a wall within reach.
-  const double reach = (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+  const double reach = part_reach(w, start, dt);
   const ContactTest test(w, dt, kSoftMargin * w.rmax);
   candidate_of_.clear();
   // The candidates hold while no pair can have come within reach of touching that was not within
@@ -167,11 +171,9 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
     candidate_of_.push_back(k);
   };
   for (const int m = static_cast<int>(candidates_.size()); k < m; ++k) {
-    const Candidate& c = candidates_[k];
-    if (c.j >= 0)
-      test.pair(c.i, c.j, add);
-    else
-      test.wall(c.i, wall_axis(c.j), wall_side(c.j), add);
+    Candidate& c = candidates_[k];
+    const bool contact = c.j >= 0 ? test.pair(c.i, c.j, add) : test.wall(c.i, wall_axis(c.j), wall_side(c.j), add);
+    if (!contact) c.impulse = 0;
   }
 }
 
@@ -212,7 +214,7 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
       const double dx = px[a] - px[b], dy = py[a] - py[b];
       if (dx * dx + dy * dy >= lim * lim) return;
       keep(a, b);
-      test.pair(a, b, add);
+      if (!test.pair(a, b, add)) candidates_.back().impulse = 0;
     });
   }
   if (w.walls)
@@ -221,7 +223,7 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
         for (int side = 0; side < 2; ++side)
           if (w.wall_gap(i, axis, side) < reach + extra) {
             keep(i, wall_partner(axis, side));
-            test.wall(i, axis, side, add);
+            if (!test.wall(i, axis, side, add)) candidates_.back().impulse = 0;
           }
   built_at_ = w.p;
   built_reach_ = reach;
@@ -231,7 +233,7 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
 void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid,
                                ForkJoin& pool, const std::function<void()>& renumber_if_due) {
   const int n = w.n;
-  const double reach = (std::sqrt(start.speed2) + w.g.norm() * dt) * dt * kSpeedMargin;
+  const double reach = part_reach(w, start, dt);
   const double margin = kSoftMargin * w.rmax;
   const ContactTest test(w, dt, margin);
   const auto add = [&](int i, int j, double nx, double ny, double gap) {

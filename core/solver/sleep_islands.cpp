@@ -1,7 +1,8 @@
 #include "solver/sleep_islands.h"
 
 #include <algorithm>
-#include <limits>
+
+#include "solver/contact.h"
 
 namespace ballbench {
 
@@ -41,11 +42,11 @@ void SleepIslands::finish_waking() {
   for (int i : woken_) state_[i] = kAwake;
 }
 
-const std::vector<int>& SleepIslands::awake(int n, const double* inv_mass, double inv_mass0) {
+const std::vector<int>& SleepIslands::awake(const double* inv_mass, double inv_mass0) {
   awake_.clear();
   if (sleeping_ == 0) return awake_;
-  held_inv_mass_.resize(n);
-  for (int i = 0; i < n; ++i) {
+  held_inv_mass_.resize(n_);
+  for (int i = 0; i < n_; ++i) {
     held_inv_mass_[i] = state_[i] != kAwake ? 0.0 : inv_mass ? inv_mass[i] : inv_mass0;
     if (state_[i] == kAwake) awake_.push_back(i);
   }
@@ -74,7 +75,7 @@ void SleepIslands::fall_asleep(const std::vector<SoftContact>& contacts, double*
       if (a != b) root_[std::max(a, b)] = std::min(a, b);
     }
   island_still_.resize(n_);
-  for_awake([&](int i) { island_still_[i] = std::numeric_limits<double>::infinity(); });
+  for_awake([&](int i) { island_still_[i] = kNever; });
   for_awake([&](int i) {
     double& t = island_still_[root(i)];
     t = std::min(t, still_for_[i]);

@@ -37,7 +37,7 @@ class SleepIslands {
   // The balls awake (ascending) while some sleep, else none; then held_inv_mass() holds each
   // ball's inverse mass, 0 for the balls asleep (held still by the step). inv_mass may be null
   // (every ball has inv_mass0).
-  const std::vector<int>& awake(int n, const double* inv_mass, double inv_mass0);
+  const std::vector<int>& awake(const double* inv_mass, double inv_mass0);
   const std::vector<double>& held_inv_mass() const { return held_inv_mass_; }
 
   // After a step of dt: the islands whose every ball has been slow for `time` fall asleep, their
