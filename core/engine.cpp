@@ -1,5 +1,7 @@
 #include "engine.h"
 
+#include <cmath>
+
 #include <vector>
 
 #include <fmt/format.h>
@@ -16,6 +18,11 @@ const char* role_name(EngineRole role) {
   return "external";
 }
 
+double angle_about_z(double qw, double qz, double previous) {
+  const double a = 2 * std::atan2(qz, qw);
+  return previous + std::remainder(a - previous, 2 * M_PI);
+}
+
 std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
   if (!info.unavailable.empty()) return fmt::format("{} is unavailable here: {}", info.name, info.unavailable);
   const SceneFeatures f = scene.features();
@@ -25,6 +32,7 @@ std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
   if (!f.equal_radii && !info.caps.per_ball_radius) missing.push_back("balls of different radii");
   if (!f.equal_masses && !info.caps.per_ball_mass) missing.push_back("balls of different masses");
   if (!f.frictionless && !info.caps.friction) missing.push_back("friction (it has no rotation: friction would be ignored)");
+  else if (f.rotation && !info.caps.friction) missing.push_back("spin (it has no rotation: the spin would be dropped)");
   if (missing.empty()) return "";
   return fmt::format("{} cannot run scene '{}': it needs {}", info.name, scene.name, fmt::join(missing, ", "));
 }

@@ -23,7 +23,9 @@ struct Capabilities {
   bool per_ball_radius = true;     // radii may differ
   bool per_ball_mass = true;       // masses may differ
   bool any_restitution = true;     // restitution honoured at any impact speed (no threshold)
-  bool friction = true;            // Coulomb friction between balls and at walls (needs rotation)
+  // Coulomb friction between balls and at walls, and the rotation it needs: the scene's inertia
+  // and spin are honoured and angular velocity and angle read back (State::w, State::angle).
+  bool friction = true;
   bool continuous_collision = false;  // fast balls cannot pass through walls or balls
   bool deterministic = true;       // same build, scene and settings -> same trajectory
 };
@@ -33,7 +35,8 @@ class Engine {
   virtual ~Engine() = default;
   // Advances the world by dt seconds.
   virtual void step(double dt) = 0;
-  // Writes positions and velocities (double, in scene order) and the engine's time into `out`.
+  // Writes positions and velocities (double, in scene order) and the engine's time into `out`,
+  // and, for a scene that rotates (SceneFeatures::rotation), angular velocities and angles.
   virtual void read(State& out) const = 0;
   // The effective settings, every knob with the value in force (defaults included).
   virtual nlohmann::json settings() const = 0;
@@ -108,6 +111,12 @@ struct EngineEntry {
   EngineInfo info;
   EngineFactory create;
 };
+
+// For 3D engines that turn balls about z only: the angle (rad) of the unit quaternion
+// (qw, 0, 0, qz), 2 atan2(qz, qw), unwrapped against `previous` (the ball's angle at the last read),
+// so it accumulates as the 2D engines' angles do. Holds while a ball turns less than half a turn
+// between reads.
+double angle_about_z(double qw, double qz, double previous);
 
 // Why `info` cannot run `scene` faithfully, or "" if it can.
 std::string unsupported_reason(const EngineInfo& info, const Scene& scene);

@@ -59,7 +59,7 @@ void send(int fd, const std::string& text) {
   try {
     std::optional<TrajectoryCsv> trajectory;
     if (!isolation.trajectory_path.empty())
-      trajectory.emplace(isolation.trajectory_path), options.trajectory = &*trajectory;
+      trajectory.emplace(isolation.trajectory_path, scene.features().rotation), options.trajectory = &*trajectory;
     options.progress = [fd](long done, long total) { send(fd, fmt::format("progress {} {}\n", done, total)); };
     const Result r = run_engine(scene, entry, options);
     if (trajectory) trajectory->close();

@@ -12,6 +12,7 @@
 #include "input_error.h"
 #include "json_layout.h"
 #include "json_value.h"
+#include "metrics/catalog.h"
 
 namespace ballbench {
 namespace {
@@ -40,9 +41,6 @@ Event event_from_json(const nlohmann::json& j) {
           j.at("i").get<int>(), j.value("j", -1), num(j.at("x")), num(j.at("y"))};
 }
 
-nlohmann::json vec(const Eigen::Vector2d& v) { return nlohmann::json::array({v.x(), v.y()}); }
-Eigen::Vector2d vec(const nlohmann::json& j) { return {num(j.at(0)), num(j.at(1))}; }
-
 }  // namespace
 
 std::string run_label(const std::string& engine, const std::string& profile) {
@@ -52,7 +50,6 @@ std::string run_label(const std::string& engine, const std::string& profile) {
 std::string run_label(const Result& r) { return run_label(r.engine, r.profile); }
 
 nlohmann::json to_json(const Result& r) {
-  const MetricsSummary& m = r.metrics;
   nlohmann::json j;
   j["engine"] = r.engine;
   j["engine_version"] = r.engine_version;
@@ -78,28 +75,16 @@ nlohmann::json to_json(const Result& r) {
     j["ns_per_ball_step_process"] = *r.engine_process_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n);
   }
   j["out_of_plane_max"] = r.out_of_plane_max;
-  j["samples"] = m.samples;
-  j["energy"] = {{"initial", m.energy.initial},
-                 {"final", m.energy.final},
-                 {"max_rel_drift", m.energy.max_rel_drift ? nlohmann::json(*m.energy.max_rel_drift) : nlohmann::json(nullptr)},
-                 {"max_abs_drift", m.energy.max_abs_drift},
-                 {"reference", m.energy.reference}};
-  j["momentum"] = {{"initial", vec(m.momentum.initial)}, {"final", vec(m.momentum.final)},
-                   {"max_abs_drift", m.momentum.max_abs_drift}};
-  j["tunnelling"] = {{"wall", m.tunnelling_wall}, {"pair", m.tunnelling_pair}};
-  j["sticking"] = {{"wall", m.sticking_wall}, {"pair", m.sticking_pair}};
-  j["penetration"] = {{"max", m.penetration_max}, {"mean", m.penetration_mean}};
+  put_metrics(r, j);
   j["events"] = nlohmann::json::array();
   for (const Event& e : r.events) j["events"].push_back(event_json(e));
   j["metrics_config"] = {{"contact_tolerance", r.metrics_config.contact_tolerance},
                          {"stuck_samples", r.metrics_config.stuck_samples},
                          {"divergence_energy_factor", r.metrics_config.divergence_energy_factor},
-                         {"sample_every", r.metrics_config.sample_every}};
+                         {"sample_every", r.metrics_config.sample_every},
+                         {"roll_tolerance", r.metrics_config.roll_tolerance}};
   j["settings"] = r.settings;
-  j["speed_ks"] = r.speed_ks ? nlohmann::json(*r.speed_ks) : nlohmann::json(nullptr);
-  j["speed_ks_critical"] = r.speed_ks_critical ? nlohmann::json(*r.speed_ks_critical) : nlohmann::json(nullptr);
   j["skipped"] = r.skipped;
-  j["jitter"] = r.jitter ? nlohmann::json(*r.jitter) : nlohmann::json(nullptr);
   if (r.reference.available) {
     const auto& e = r.reference;
     j["error_vs_reference"] = {
@@ -147,23 +132,7 @@ Result result_from_json(const nlohmann::json& j) {
   r.harness_s = j.value("harness_s", 0.0);
   if (j.contains("engine_process_s")) r.engine_process_s = j.at("engine_process_s").get<double>();
   r.out_of_plane_max = j.value("out_of_plane_max", 0.0);
-  MetricsSummary& m = r.metrics;
-  m.samples = j.value("samples", 0L);
-  const auto& e = j.at("energy");
-  m.energy.initial = num(e.at("initial"));
-  m.energy.final = num(e.at("final"));
-  if (!e.at("max_rel_drift").is_null()) m.energy.max_rel_drift = e.at("max_rel_drift").get<double>();
-  m.energy.max_abs_drift = num(e.value("max_abs_drift", nlohmann::json(0.0)));
-  m.energy.reference = e.value("reference", 0.0);
-  m.momentum.initial = vec(j.at("momentum").at("initial"));
-  m.momentum.final = vec(j.at("momentum").at("final"));
-  m.momentum.max_abs_drift = num(j.at("momentum").at("max_abs_drift"));
-  m.tunnelling_wall = j.at("tunnelling").at("wall");
-  m.tunnelling_pair = j.at("tunnelling").at("pair");
-  m.sticking_wall = j.at("sticking").at("wall");
-  m.sticking_pair = j.at("sticking").at("pair");
-  m.penetration_max = num(j.at("penetration").at("max"));
-  m.penetration_mean = num(j.at("penetration").at("mean"));
+  take_metrics(j, r);
   // Results files written before events were recorded have none: their counts stand alone.
   if (j.contains("events"))
     for (const auto& e : j.at("events")) r.events.push_back(event_from_json(e));
@@ -173,14 +142,10 @@ Result result_from_json(const nlohmann::json& j) {
     r.metrics_config.stuck_samples = c.at("stuck_samples");
     r.metrics_config.divergence_energy_factor = c.at("divergence_energy_factor");
     r.metrics_config.sample_every = c.value("sample_every", 1);
+    r.metrics_config.roll_tolerance = c.value("roll_tolerance", MetricsConfig{}.roll_tolerance);
   }
   r.settings = j.value("settings", nlohmann::json::object());
-  if (j.contains("speed_ks") && !j["speed_ks"].is_null()) {
-    r.speed_ks = num(j["speed_ks"]);
-    r.speed_ks_critical = num(j["speed_ks_critical"]);
-  }
   if (j.contains("skipped")) j["skipped"].get_to(r.skipped);
-  if (j.contains("jitter") && !j["jitter"].is_null()) r.jitter = num(j["jitter"]);
   if (j.contains("error_vs_reference")) {
     const auto& e = j["error_vs_reference"];
     auto& x = r.reference;

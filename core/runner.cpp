@@ -27,9 +27,14 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 // XXH3 (xxHash, Collet) over the raw bytes of the positions and velocities, column by column: it
 // mixes every input bit into every output bit, so states of float32 values (whose low 29 mantissa
 // bits are zero) are told apart in all 64 bits of the checksum, as doubles are.
+// A state that rotates chains its angular velocities and angles on, so a state without rotation
+// keeps the checksum it had before rotation existed.
 uint64_t state_checksum(const State& s, uint64_t seed) {
-  const uint64_t p = XXH3_64bits_withSeed(s.pos.data(), sizeof(double) * static_cast<size_t>(s.pos.size()), seed);
-  return XXH3_64bits_withSeed(s.vel.data(), sizeof(double) * static_cast<size_t>(s.vel.size()), p);
+  const auto bytes = [](const auto& m) { return sizeof(double) * static_cast<size_t>(m.size()); };
+  const uint64_t p = XXH3_64bits_withSeed(s.pos.data(), bytes(s.pos), seed);
+  const uint64_t v = XXH3_64bits_withSeed(s.vel.data(), bytes(s.vel), p);
+  if (!s.rotates()) return v;
+  return XXH3_64bits_withSeed(s.angle.data(), bytes(s.angle), XXH3_64bits_withSeed(s.w.data(), bytes(s.w), v));
 }
 
 uint64_t chain_checksum(uint64_t trajectory, uint64_t state) {
@@ -151,7 +156,17 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   const auto harness_start = Clock::now();
   double engine_s = 0;
   State next;
+  // A scene that rotates is judged on its spins too: an engine that reads none back fails the run.
+  const bool rotation = scene.features().rotation;
+  const auto spins_missing = [&](const State& s) {
+    return rotation && (s.w.size() != scene.n() || s.angle.size() != scene.n());
+  };
   engine->read(state);
+  if (spins_missing(state)) {
+    r.status = "failed";
+    r.error = "the engine reads back no angular velocities and angles for a scene that rotates";
+    return r;
+  }
   metrics.observe(state);
   record(0);
   if (options.trajectory) options.trajectory->write(r.engine, r.profile, 0, state);
@@ -194,6 +209,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     // Read into a scratch state and keep it only if finite: a run that blew up ends with its last
     // good state, from which the final figures (positions, jitter, speed distribution) come.
     engine->read(next);
+    if (spins_missing(next)) {
+      r.status = "failed";
+      r.error = fmt::format("step {}: the engine read back no angular velocities and angles", k);
+      break;
+    }
     r.out_of_plane_max = std::max(r.out_of_plane_max, engine->out_of_plane());
     if (!metrics.observe_motion(state, next)) {  // tunnelling, every step, and finiteness in one sweep
       r.status = "diverged", r.diverged = true, r.diverged_step = k;
@@ -244,6 +264,8 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     r.skipped.push_back("jitter (final RMS speed): only for scenes with gravity and walls, where balls come to rest");
   if (scene.features().gravity || scene.features().walls)
     r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
+  if (!r.metrics.slip.measured)
+    r.skipped.push_back("slip and time to roll: only for scenes that rotate and have walls");
   if (!options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");
   if (error) {
     r.reference = error->summary();

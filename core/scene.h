@@ -27,8 +27,18 @@ struct SceneFeatures {
   bool equal_radii = false;
   bool equal_masses = false;
   bool elastic = false;        // restitution exactly 1
-  bool frictionless = false;   // friction exactly 0 (balls need no rotation)
+  bool frictionless = false;   // friction exactly 0
+  bool rotation = false;       // friction above 0 or a ball that starts spinning: balls rotate
 };
+
+// How a ball's mass is spread: its moment of inertia about its centre is I = k m r^2.
+enum class Inertia {
+  disk,    // k = 1/2: a solid disk, the 2D ball (the default)
+  sphere,  // k = 2/5: a solid sphere, as 3D engines build a ball
+};
+double inertia_factor(Inertia inertia);  // k
+const char* inertia_name(Inertia inertia);  // "disk", "sphere"
+
 
 struct Scene {
   std::string name;
@@ -37,12 +47,13 @@ struct Scene {
   double duration = 1.0;       // simulated time (s)
   Eigen::Vector2d gravity{0, 0};  // (m/s^2)
   double restitution = 1.0;    // ball-ball and ball-wall, normal component
-  double friction = 0.0;
+  double friction = 0.0;       // Coulomb coefficient, ball-ball and ball-wall
+  Inertia inertia = Inertia::disk;
   bool allow_overlap = false;  // balls may start overlapping (the thesis's random placement does)
   Container container;
   Eigen::VectorXd radius;      // (n, m)
   Eigen::VectorXd mass;        // (n, kg)
-  State initial;               // t = 0
+  State initial;               // t = 0; its w holds each ball's spin when the scene rotates
   nlohmann::json engine_settings = nlohmann::json::object();  // [settings.<engine>] tables
   std::map<std::string, int> setting_lines;  // "ENGINE.KEY" -> its line in the scene file, for messages
   // Random placement: whether any [random] or [lattice] table draws balls, and the offset added to
@@ -53,6 +64,8 @@ struct Scene {
   int n() const { return static_cast<int>(radius.size()); }
   long steps() const;          // duration / dt, rounded to the nearest whole step
   SceneFeatures features() const;
+  double spin(int i) const { return initial.rotates() ? initial.w(i) : 0.0; }  // initial w (rad/s)
+  double moment_of_inertia(int i) const { return inertia_factor(inertia) * mass(i) * radius(i) * radius(i); }
 };
 
 }  // namespace ballbench

@@ -142,10 +142,10 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
 
 struct BallList {
   std::vector<Eigen::Vector2d> pos, vel;
-  std::vector<double> radius, mass;
+  std::vector<double> radius, mass, spin;
   std::vector<int> line;  // where each ball was declared, for messages
-  void add(Eigen::Vector2d p, Eigen::Vector2d v, double r, double m, int at) {
-    pos.push_back(p), vel.push_back(v), radius.push_back(r), mass.push_back(m), line.push_back(at);
+  void add(Eigen::Vector2d p, Eigen::Vector2d v, double r, double m, double w, int at) {
+    pos.push_back(p), vel.push_back(v), radius.push_back(r), mass.push_back(m), spin.push_back(w), line.push_back(at);
   }
 };
 
@@ -165,6 +165,31 @@ void check_spread(const TableReader& r, const char* key, const Eigen::Vector2d& 
     r.fail(r.node(key), key,
            fmt::format("({}, {}) is more than {:g} radii ({}) from the origin: check the units", p.x(), p.y(),
                        kMaxRadiiFromOrigin, radius));
+}
+
+// A spin (rad/s): finite and at most kMaxMagnitude, as a velocity.
+void check_spin(const TableReader& r, const char* key, double w) {
+  if (!(std::abs(w) <= kMaxMagnitude))
+    r.fail(r.node(key), key, fmt::format("must be a finite angular velocity of at most {:g} rad/s, got {}", kMaxMagnitude, w));
+}
+
+// spin_min and spin_max of a [random] or [lattice] table: each ball's spin is drawn uniformly
+// between them. Without either key nothing is drawn, so the placements of scenes without spin
+// stay those of the seed.
+struct SpinRange {
+  bool drawn = false;
+  double min = 0, max = 0;
+  double draw(std::mt19937_64& rng) const { return drawn ? uniform(rng, min, max) : 0.0; }
+};
+
+SpinRange read_spin_range(const TableReader& r) {
+  SpinRange s;
+  s.drawn = r.has("spin_min") || r.has("spin_max");
+  s.min = r.number_or("spin_min", 0.0), s.max = r.number_or("spin_max", 0.0);
+  check_spin(r, "spin_min", s.min);
+  check_spin(r, "spin_max", s.max);
+  if (s.min > s.max) r.fail(r.node("spin_min"), "spin_min", fmt::format("must not exceed spin_max ({} > {})", s.min, s.max));
+  return s;
 }
 
 bool inside(const Container& c, const Eigen::Vector2d& p, double radius) {
@@ -190,7 +215,7 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
   for (size_t i = 0; i < arr->size(); ++i) {
     const toml::table& t = *arr->get(i)->as_table();
     TableReader r(t, source, fmt::format("ball[{}]", i));
-    r.check_keys({"pos", "vel", "radius", "mass"});
+    r.check_keys({"pos", "vel", "radius", "mass", "spin"});
     const Eigen::Vector2d p = r.vec2("pos");
     const double radius = r.number("radius");
     const double mass = r.number_or("mass", 1.0);
@@ -200,7 +225,9 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
     if (!inside(container, p, radius))
       r.fail(r.node("pos"), "pos",
              fmt::format("ball at ({}, {}) with radius {} is not inside the container", p.x(), p.y(), radius));
-    balls.add(p, r.vec2_or("vel", {0, 0}), radius, mass, static_cast<int>(t.source().begin.line));
+    const double spin = r.number_or("spin", 0.0);
+    check_spin(r, "spin", spin);
+    balls.add(p, r.vec2_or("vel", {0, 0}), radius, mass, spin, static_cast<int>(t.source().begin.line));
   }
 }
 
@@ -211,7 +238,8 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
 // velocity box. For packings random placement cannot reach (a square lattice holds up to pi / 4).
 void read_lattice_balls(const toml::table& t, const std::string& source, const Container& container, BallList& balls) {
   TableReader r(t, source, "lattice");
-  r.check_keys({"count", "radius", "mass", "spacing", "origin", "columns", "vel_min", "vel_max", "seed"});
+  r.check_keys({"count", "radius", "mass", "spacing", "origin", "columns", "vel_min", "vel_max", "spin_min", "spin_max",
+                "seed"});
   const int64_t count = r.integer("count", -1);
   if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
   if (count > kMaxBalls) r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported", kMaxBalls));
@@ -232,6 +260,7 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
   }
   if (columns <= 0) r.fail(r.node("origin"), "origin", "no column fits in the container");
   const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
+  const SpinRange spin = read_spin_range(r);
   std::mt19937_64 rng(static_cast<uint64_t>(r.integer("seed", 1)));
   const int line = static_cast<int>(t.source().begin.line);
   for (int64_t k = 0; k < count; ++k) {
@@ -239,14 +268,15 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
     if (!inside(container, p, radius))
       r.fail(r.node("count"), "count", fmt::format("ball {} at ({:.4g}, {:.4g}) is outside the container: only {} fit", k,
                                                    p.x(), p.y(), k));
-    balls.add(p, {uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())}, radius, mass, line);
+    const Eigen::Vector2d v{uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())};
+    balls.add(p, v, radius, mass, spin.draw(rng), line);
   }
 }
 
 void read_random_balls(const toml::table& t, const std::string& source, const std::string& prefix,
                        const Container& container, bool allow_overlap, BallList& balls) {
   TableReader r(t, source, prefix);
-  r.check_keys({"count", "radius", "mass", "pos_min", "pos_max", "vel_min", "vel_max", "seed"});
+  r.check_keys({"count", "radius", "mass", "pos_min", "pos_max", "vel_min", "vel_max", "spin_min", "spin_max", "seed"});
   const int64_t count = r.integer("count", -1);
   if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
   if (count > kMaxBalls - static_cast<int64_t>(balls.pos.size()))
@@ -270,6 +300,7 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
   if ((pos_min.array() > pos_max.array()).any()) r.fail(r.node("pos_min"), "pos_min", "must not exceed pos_max");
   if ((vel_min.array() > vel_max.array()).any()) r.fail(r.node("vel_min"), "vel_min", "must not exceed vel_max");
+  const SpinRange spin = read_spin_range(r);
   if (!inside(container, pos_min, radius) || !inside(container, pos_max, radius))
     r.fail(r.node("pos_min"), "pos_min",
            "the box [pos_min, pos_max] must keep balls of this radius inside the container");
@@ -279,7 +310,8 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   const int line = static_cast<int>(t.source().begin.line);
 
   std::mt19937_64 rng(static_cast<uint64_t>(seed));
-  // Each ball draws x, y, vx, vy in that order; overlapping draws are redrawn (position only).
+  // Each ball draws x, y, vx, vy (and w, with a spin range) in that order; overlapping draws are
+  // redrawn (position only).
   double reach = radius;  // the largest radius already placed, so the hash cell covers every pair
   for (double r0 : balls.radius) reach = std::max(reach, r0);
   OverlapIndex placed(radius + reach);
@@ -303,8 +335,9 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
       p = {uniform(rng, pos_min.x(), pos_max.x()), uniform(rng, pos_min.y(), pos_max.y())};
     } while (!allow_overlap && placed.overlaps(p, radius, balls.pos, balls.radius));
     const Eigen::Vector2d v{uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())};
+    const double w = spin.draw(rng);
     if (!allow_overlap) placed.insert(p);
-    balls.add(p, v, radius, mass, line);
+    balls.add(p, v, radius, mass, w, line);
   }
 }
 
@@ -366,7 +399,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   if (doc.empty())
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
-  top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction",
+  top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction", "inertia",
                   "allow_overlap", "container", "ball", "random", "lattice", "settings"});
 
   Scene s;
@@ -397,6 +430,14 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     top.fail(top.node("restitution"), "restitution", fmt::format("must be in [0, 1], got {}", s.restitution));
   s.friction = top.number_or("friction", 0.0);
   if (s.friction < 0) top.fail(top.node("friction"), "friction", fmt::format("must be >= 0, got {}", s.friction));
+  if (top.has("inertia")) {
+    const std::string inertia = top.string("inertia", "disk");
+    if (inertia == "sphere") s.inertia = Inertia::sphere;
+    else if (inertia != "disk")
+      top.fail(top.node("inertia"), "inertia",
+               fmt::format("unknown inertia '{}' (use \"disk\", I = m r^2 / 2, or \"sphere\", I = 2/5 m r^2){}", inertia,
+                           did_you_mean(inertia, std::vector<std::string>{"disk", "sphere"})));
+  }
   s.allow_overlap = top.boolean("allow_overlap", false);
 
   if (const toml::node* c = top.node("container")) {
@@ -442,8 +483,13 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   const int n = static_cast<int>(balls.pos.size());
   s.radius = Eigen::Map<Eigen::VectorXd>(balls.radius.data(), n);
   s.mass = Eigen::Map<Eigen::VectorXd>(balls.mass.data(), n);
-  s.initial.resize(n);
+  const bool spins = std::any_of(balls.spin.begin(), balls.spin.end(), [](double w) { return w != 0.0; });
+  s.initial.resize(n, s.friction > 0 || spins);
   for (int i = 0; i < n; ++i) s.initial.pos.row(i) = balls.pos[i], s.initial.vel.row(i) = balls.vel[i];
+  if (s.initial.rotates()) {
+    s.initial.w = Eigen::Map<Eigen::VectorXd>(balls.spin.data(), n);
+    s.initial.angle.setZero();
+  }
 
   if (!s.allow_overlap) {
     if (auto pair = first_overlapping_pair(s.initial.pos, s.radius)) {

@@ -9,10 +9,11 @@
 
 namespace ballbench {
 
-TrajectoryCsv::TrajectoryCsv(const std::string& path) : path_(path), tmp_(path + ".tmp") {
+TrajectoryCsv::TrajectoryCsv(const std::string& path, bool rotation)
+    : path_(path), tmp_(path + ".tmp"), rotation_(rotation) {
   f_ = std::fopen(tmp_.c_str(), "w");
   if (!f_) throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
-  std::fputs("engine,profile,step,t,id,x,y,vx,vy\n", f_);
+  std::fputs(rotation ? "engine,profile,step,t,id,x,y,vx,vy,w,angle\n" : "engine,profile,step,t,id,x,y,vx,vy\n", f_);
 }
 
 TrajectoryCsv::~TrajectoryCsv() {
@@ -21,9 +22,12 @@ TrajectoryCsv::~TrajectoryCsv() {
 
 void TrajectoryCsv::write(const std::string& engine, const std::string& profile, long step, const State& s) {
   fmt::memory_buffer buf;
-  for (int i = 0; i < s.n(); ++i)
-    fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{},{},{}\n", engine, profile, step, s.t, i, s.pos(i, 0),
+  for (int i = 0; i < s.n(); ++i) {
+    fmt::format_to(std::back_inserter(buf), "{},{},{},{},{},{},{},{},{}", engine, profile, step, s.t, i, s.pos(i, 0),
                    s.pos(i, 1), s.vel(i, 0), s.vel(i, 1));
+    if (rotation_) fmt::format_to(std::back_inserter(buf), ",{},{}\n", s.w(i), s.angle(i));
+    else buf.push_back('\n');
+  }
   std::fwrite(buf.data(), 1, buf.size(), f_);
 }
 

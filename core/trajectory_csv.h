@@ -1,6 +1,6 @@
 #pragma once
 // --trajectory output: CSV with header `engine,profile,step,t,id,x,y,vx,vy`, one row per ball per
-// sample, step 0 being the initial state. `engine` and `profile` are the result JSON's fields of
+// sample, step 0 being the initial state; a scene that rotates adds `w,angle` (rad/s, rad). `engine` and `profile` are the result JSON's fields of
 // the same names, so the two join on them. Numbers are printed round-trip exact (shortest form that reads
 // back to the same double), so metrics can be recomputed from the file independently.
 #include <cstdio>
@@ -12,7 +12,8 @@ namespace ballbench {
 
 class TrajectoryCsv {
  public:
-  explicit TrajectoryCsv(const std::string& path);  // throws InputError if it cannot be opened
+  // Throws InputError if it cannot be opened. `rotation`: the states carry w and angle.
+  TrajectoryCsv(const std::string& path, bool rotation);
   ~TrajectoryCsv();
   TrajectoryCsv(const TrajectoryCsv&) = delete;
   TrajectoryCsv& operator=(const TrajectoryCsv&) = delete;
@@ -23,6 +24,7 @@ class TrajectoryCsv {
  private:
   std::string path_, tmp_;
   std::FILE* f_ = nullptr;
+  bool rotation_;
 };
 
 }  // namespace ballbench

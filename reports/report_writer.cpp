@@ -10,17 +10,12 @@
 
 #include "input_error.h"
 #include "json_value.h"
+#include "metrics/catalog.h"
 #include "ensemble.h"
 #include "ordered_set.h"
 
 namespace ballbench {
 namespace {
-
-std::string sci(double v) { return fmt::format("{:.3g}", v); }
-
-std::string drift_text(const Result& r) {
-  return r.metrics.energy.max_rel_drift ? fmt::format("{:.3g}", *r.metrics.energy.max_rel_drift) : "n/a";
-}
 
 // One column of the per-scene table: its header, its text, and (for "best" marking) a value where
 // smaller is better.
@@ -28,36 +23,29 @@ struct Column {
   std::string header;
   std::function<std::string(const Result&)> text;
   std::function<double(const Result&)> value;  // null: not ranked
+  const MetricDef* metric = nullptr;           // a metric of the catalog: left out where no run has it
 };
 
 // Was the run compared with a reference other than itself? (The reference's own zero error is not
 // a result to rank.)
 bool compared(const Result& r) { return r.reference.available && r.engine != r.reference.reference; }
 
+// The status, the catalog's metrics that have a column (core/metrics/catalog.h), in its order, then
+// the error against the reference and the timing.
 std::vector<Column> columns() {
-  return {
-      {"status", [](const Result& r) { return r.diverged ? fmt::format("diverged@{}", r.diverged_step) : r.status; }, nullptr},
-      // Not ranked: with restitution below 1 energy is lost by design, so the smallest drift can be
-      // an engine that gains energy. Energy accuracy needs the exact reference curve.
-      {"energy drift (max rel)", drift_text, nullptr},
-      {"E final / E0",
-       [](const Result& r) {
-         return r.metrics.energy.initial > 0 ? fmt::format("{:.4f}", r.metrics.energy.final / r.metrics.energy.initial) : "n/a";
-       },
-       nullptr},
-      {"momentum drift (max abs)", [](const Result& r) { return sci(r.metrics.momentum.max_abs_drift); }, nullptr},
-      {"tunnelling wall", [](const Result& r) { return fmt::format("{}", r.metrics.tunnelling_wall); },
-       [](const Result& r) { return double(r.metrics.tunnelling_wall); }},
-      {"tunnelling pair", [](const Result& r) { return fmt::format("{}", r.metrics.tunnelling_pair); },
-       [](const Result& r) { return double(r.metrics.tunnelling_pair); }},
-      {"sticking wall", [](const Result& r) { return fmt::format("{}", r.metrics.sticking_wall); },
-       [](const Result& r) { return double(r.metrics.sticking_wall); }},
-      {"sticking pair", [](const Result& r) { return fmt::format("{}", r.metrics.sticking_pair); },
-       [](const Result& r) { return double(r.metrics.sticking_pair); }},
-      {"penetration max", [](const Result& r) { return sci(r.metrics.penetration_max); },
-       [](const Result& r) { return r.metrics.penetration_max; }},
-      {"penetration mean", [](const Result& r) { return sci(r.metrics.penetration_mean); },
-       [](const Result& r) { return r.metrics.penetration_mean; }},
+  std::vector<Column> out = {
+      {"status", [](const Result& r) { return r.diverged ? fmt::format("diverged@{}", r.diverged_step) : r.status; }, nullptr}};
+  for (const MetricDef& m : metric_catalog()) {
+    if (m.column.empty()) continue;
+    Column c{m.column, [&m](const Result& r) { return metric_text(m.get(r)); }, nullptr, &m};
+    if (m.ranked)
+      c.value = [&m](const Result& r) {
+        const nlohmann::json v = m.get(r);
+        return v.is_number() ? v.get<double>() : HUGE_VAL;
+      };
+    out.push_back(std::move(c));
+  }
+  const std::vector<Column> rest = {
       {"pos error vs exact (m)",
        [](const Result& r) { return r.reference.available ? fmt::format("{:.3g}", r.reference.pos_rms_final) : "-"; },
        [](const Result& r) { return compared(r) ? r.reference.pos_rms_final : HUGE_VAL; }},
@@ -74,6 +62,8 @@ std::vector<Column> columns() {
       {"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
        [](const Result& r) { return r.ns_per_ball_step; }},
   };
+  out.insert(out.end(), rest.begin(), rest.end());
+  return out;
 }
 
 // Text for a markdown table cell: a `|` would end the cell.
@@ -527,10 +517,14 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     by_scene[r.scene].push_back(&r);
   }
   std::erase_if(scene_order, [&](const std::string& s) { return !by_scene.contains(s); });
-  const auto cols = columns();
   for (const auto& scene : scene_order) {
     const auto& rows = by_scene[scene];
     const Result& first = *rows.front();
+    // A metric no run of the scene has (the slip of a scene that does not rotate) is no column.
+    std::vector<Column> cols = columns();
+    std::erase_if(cols, [&](const Column& c) {
+      return c.metric && std::none_of(rows.begin(), rows.end(), [&](const Result* r) { return !c.metric->get(*r).is_null(); });
+    });
     put("## Scene `{}`\n\n{} balls, dt = {} s, {} steps (`{}`).\n\n", scene, first.n, first.dt, first.steps,
         display_path(first.scene_source));
     put("| engine | profile |");
@@ -597,26 +591,8 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   }
   const MetricsConfig cfg = in.results.empty() ? MetricsConfig{} : in.results.front().metrics_config;
   put("\n## Glossary\n\n");
-  put("- **energy drift (max rel)**: max over samples of |E - E0| / E0, with E = sum m |v|^2 / 2 + m |g| h and the "
-      "height h measured from the container's floor (from the lowest initial ball in open space). Restitution below "
-      "1 loses energy by design, so compare engines on the same scene, not against zero.\n");
-  put("- **E final / E0**: the energy left at the end.\n");
-  put("- **momentum drift (max abs)**: max over samples of |P - P0|, P = sum m v (kg m/s). Conserved only in open space "
-      "without gravity; walls and gravity change it.\n");
-  put("- **tunnelling wall**: balls whose centre went from inside the box to beyond a wall between two samples.\n");
-  put("- **tunnelling pair**: pairs apart in two consecutive samples whose relative motion, taken as a straight line "
-      "between them, came closer than {:.0f}% of their radius sum less (|dv_i| + |dv_j|) h / 4 (dv: each ball's change of "
-      "velocity between the samples, h: the time between them; a path bent once by a collision strays at most that far "
-      "from the straight line): they passed through each other. A resolved bounce never counts; a ball that collides "
-      "several times within one sample interval can still fool the test, so `exact`'s count on a scene is the floor.\n",
-      100 * (1 - cfg.contact_tolerance));
-  put("- **sticking pair / wall**: a pair overlapping deeper than {:.0f}% of its radius sum (a ball in a wall deeper "
-      "than {:.0f}% of its radius) for more than {} consecutive samples, and not moving out (apart, or away from the "
-      "wall) at a sample past that; one event per episode. A pair placed overlapping that is moving apart is leaving, "
-      "not stuck.\n",
-      100 * cfg.contact_tolerance, 100 * cfg.contact_tolerance, cfg.stuck_samples);
-  put("- **penetration max / mean**: overlap depth divided by the radius (the smaller one for a pair), max and mean "
-      "over every overlapping contact in every sample.\n");
+  for (const MetricDef& m : metric_catalog())
+    if (!m.column.empty()) put("- **{}**{}: {}.\n", m.column, m.unit.empty() ? "" : fmt::format(" ({})", m.unit), m.definition(cfg));
   put("- **pos error vs exact**: position RMS error over balls against the event-driven `exact` engine run in "
       "lockstep, at the last step; **horizon**: the first time that error exceeded a tenth of the mean radius "
       "(chaotic scenes part from any reference, so this says more than a long-run RMS; `never`: it stayed within). "
@@ -632,6 +608,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("- **scaling**: ns per ball-step from the step benchmark at each ball count; flat lines are linear cost.\n");
   put("- **diverged@k**: the state became non-finite, or the energy exceeded {} times its initial value, at step k; "
       "metrics cover the steps before.\n", cfg.divergence_energy_factor);
+  put("\nEvery metric of a run's JSON, with its unit and definition: `ballbench list --metrics`.\n");
   return fmt::to_string(put.out);
 }
 

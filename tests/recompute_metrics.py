@@ -4,7 +4,7 @@ them with the JSON results. Standard library only (tomllib reads the scene file)
 
 usage: recompute_metrics.py SCENE.toml TRAJECTORY.csv RESULTS.json
 
-It rebuilds the scene's radii and masses (explicit [[ball]] only, or a results file whose scene
+It rebuilds the scene's radii, masses and moments of inertia (k m r^2, `inertia`) (explicit [[ball]] only, or a results file whose scene
 has random or lattice balls: then radii and masses are taken from each [random] or [lattice]
 group), follows the
 glossary's definitions (reports/REPORT.md) and exits 1 naming every metric that disagrees.
@@ -30,17 +30,27 @@ def scene_balls(scene):
     return radii, masses
 
 
-def recompute(scene, samples, times, radii, masses, tol, stuck):
+def recompute(scene, samples, times, radii, masses, tol, stuck, roll_tol, spins):
+    """samples: per sample, per ball (x, y, vx, vy, w); spins: whether the trajectory has w."""
     g = scene.get("gravity", [0.0, 0.0])
     box = scene.get("container")
     is_box = box is not None and box.get("kind", "box") == "box"
     n = len(radii)
+    k_inertia = 0.4 if scene.get("inertia", "disk") == "sphere" else 0.5
+    moments = [k_inertia * m * r * r for m, r in zip(masses, radii)]
+    # Angular momentum is taken about the box's centre, or the initial centre of mass.
+    if is_box:
+        cx, cy = 0.5 * (box["min"][0] + box["max"][0]), 0.5 * (box["min"][1] + box["max"][1])
+    else:
+        total = sum(masses)
+        cx = sum(m * b[0] for m, b in zip(masses, samples[0])) / total
+        cy = sum(m * b[1] for m, b in zip(masses, samples[0])) / total
     # Potential reference: the lowest point of the box along g (or the lowest initial ball).
     if is_box:
         (x0, y0), (x1, y1) = box["min"], box["max"]
         ref = min(-(g[0] * x + g[1] * y) for x in (x0, x1) for y in (y0, y1))
     else:
-        ref = min(-(g[0] * x + g[1] * y) for x, y, _, _ in samples[0])
+        ref = min(-(g[0] * x + g[1] * y) for x, y, _, _, _ in samples[0])
 
     def advance(run, leaving):
         # A run of deep overlap: counted once, when longer than `stuck` samples and not moving out;
@@ -53,7 +63,21 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
         return run, 0
 
     def energy(s):
-        return sum(m * (0.5 * (vx * vx + vy * vy) + (-(g[0] * x + g[1] * y) - ref)) for m, (x, y, vx, vy) in zip(masses, s))
+        return sum(m * (0.5 * (vx * vx + vy * vy) + (-(g[0] * x + g[1] * y) - ref)) + 0.5 * i * w * w
+                   for m, i, (x, y, vx, vy, w) in zip(masses, moments, s))
+
+    def angular(s):
+        return sum(m * ((x - cx) * vy - (y - cy) * vx) + i * w for m, i, (x, y, vx, vy, w) in zip(masses, moments, s))
+
+    def slip(s):
+        """The largest |v . t - w r| of a ball within r (1 + tol) of a wall, or None if none is."""
+        worst = None
+        for r, (x, y, vx, vy, w) in zip(radii, s):
+            for gap, vt in ((x - box["min"][0], vy), (box["max"][0] - x, -vy), (y - box["min"][1], -vx),
+                            (box["max"][1] - y, vx)):
+                if gap <= r * (1 + tol):
+                    worst = max(worst or 0.0, abs(vt - w * r))
+        return worst
 
     def momentum(s):
         return (sum(m * b[2] for m, b in zip(masses, s)), sum(m * b[3] for m, b in zip(masses, s)))
@@ -61,9 +85,21 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
     def beyond(x, y):
         return is_box and (x < box["min"][0] or x > box["max"][0] or y < box["min"][1] or y > box["max"][1])
 
-    e0, p0 = energy(samples[0]), momentum(samples[0])
+    e0, p0, l0 = energy(samples[0]), momentum(samples[0]), angular(samples[0])
     out = {"energy_initial": e0, "energy_final": energy(samples[-1]), "momentum_drift": 0.0, "energy_abs_drift": 0.0,
+           "angular_initial": l0, "angular_final": angular(samples[-1]), "angular_drift": 0.0,
            "tunnelling_wall": 0, "tunnelling_pair": 0, "sticking_wall": 0, "sticking_pair": 0}
+    if spins and is_box:  # the time from which no ball on a wall slips: the start of the last run of rolling samples
+        touched, rolling_since = False, None
+        for t, s in zip(times, samples):
+            worst = slip(s)
+            touched = touched or worst is not None
+            if (worst or 0.0) > roll_tol:
+                rolling_since = None
+            elif rolling_since is None:
+                rolling_since = t
+        out["slip_final_max"] = slip(samples[-1]) or 0.0
+        out["time_to_roll"] = rolling_since if touched else None
     pen_max, pen_sum, pen_count = 0.0, 0.0, 0
     pair_run, wall_run = defaultdict(int), [0] * n
     prev = None
@@ -72,6 +108,7 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
         out["energy_abs_drift"] = max(out["energy_abs_drift"], abs(energy(s) - e0))
         p = momentum(s)
         out["momentum_drift"] = max(out["momentum_drift"], math.hypot(p[0] - p0[0], p[1] - p0[1]))
+        out["angular_drift"] = max(out["angular_drift"], abs(angular(s) - l0))
         if prev is not None:
             out["tunnelling_wall"] += sum(1 for a, b in zip(prev, s) if not beyond(a[0], a[1]) and beyond(b[0], b[1]))
         new_run = defaultdict(int)
@@ -102,7 +139,7 @@ def recompute(scene, samples, times, radii, masses, tol, stuck):
                             out["tunnelling_pair"] += 1
         pair_run = new_run
         if is_box:
-            for i, (x, y, _, _) in enumerate(s):
+            for i, (x, y, _, _, _) in enumerate(s):
                 vx, vy = s[i][2], s[i][3]
                 # The nearest wall (the first of equal gaps) and the speed along its inward normal.
                 gap, inward = min([(x - box["min"][0], vx), (box["max"][0] - x, -vx), (y - box["min"][1], vy),
@@ -130,9 +167,12 @@ def main():
     runs = defaultdict(lambda: defaultdict(list))
     run_times = defaultdict(dict)
     with open(csv_path) as f:
-        for row in csv.DictReader(f):
+        reader = csv.DictReader(f)
+        spins = "w" in reader.fieldnames  # a scene that rotates: angular velocities follow
+        for row in reader:
             label = row["engine"] if row["profile"] == "default" else f'{row["engine"]}/{row["profile"]}'
-            runs[label][int(row["step"])].append((float(row["x"]), float(row["y"]), float(row["vx"]), float(row["vy"])))
+            w = float(row["w"]) if spins else 0.0
+            runs[label][int(row["step"])].append((float(row["x"]), float(row["y"]), float(row["vx"]), float(row["vy"]), w))
             run_times[label][int(row["step"])] = float(row["t"])
     bad = []
     for r in results:
@@ -147,15 +187,32 @@ def main():
             continue
         cfg = r["metrics_config"]
         times = [run_times[label][k] for k in sorted(steps)]
-        got = recompute(scene, samples, times, radii, masses, cfg["contact_tolerance"], cfg["stuck_samples"])
+        got = recompute(scene, samples, times, radii, masses, cfg["contact_tolerance"], cfg["stuck_samples"],
+                        cfg["roll_tolerance"], spins)
         want = {"energy_initial": r["energy"]["initial"], "energy_final": r["energy"]["final"],
                 "energy_abs_drift": r["energy"]["max_abs_drift"], "momentum_drift": r["momentum"]["max_abs_drift"],
+                "angular_initial": r["angular_momentum"]["initial"], "angular_final": r["angular_momentum"]["final"],
+                "angular_drift": r["angular_momentum"]["max_abs_drift"],
                 "tunnelling_wall": r["tunnelling"]["wall"], "tunnelling_pair": r["tunnelling"]["pair"],
                 "sticking_wall": r["sticking"]["wall"], "sticking_pair": r["sticking"]["pair"],
                 "penetration_max": r["penetration"]["max"], "penetration_mean": r["penetration"]["mean"]}
+        if "slip_final_max" in got:
+            if r["slip"] is None:
+                bad.append(f"{label}: the scene rotates and has walls, but the JSON has no slip")
+            else:
+                want["slip_final_max"] = r["slip"]["final_max"]
+                if (got["time_to_roll"] is None) != (r["slip"]["time_to_roll"] is None):
+                    bad.append(f"{label}: time_to_roll recomputed {got['time_to_roll']!r}, JSON {r['slip']['time_to_roll']!r}")
+                elif got["time_to_roll"] is not None:
+                    want["time_to_roll"] = r["slip"]["time_to_roll"]
         for k, w in want.items():
             # Sums of the same doubles in another order: agree to round-off (1e-9 relative of the scale).
-            scale = max(1.0, abs(got["energy_initial"])) if k.startswith("energy") else max(1.0, abs(w))
+            if k.startswith("energy"):
+                scale = max(1.0, abs(got["energy_initial"]))
+            elif k.startswith("angular"):
+                scale = max(1.0, abs(got["angular_initial"]), abs(got["angular_final"]))
+            else:
+                scale = max(1.0, abs(w))
             ok = got[k] == w if isinstance(w, int) else abs(got[k] - w) <= 1e-9 * scale
             if not ok:
                 bad.append(f"{label}: {k} recomputed {got[k]!r}, JSON {w!r}")

@@ -171,7 +171,8 @@ TEST(BulletSettings, ListsEveryKnobWithItsProfileValue) {
   const auto& entry = find_engine("bullet");
   const nlohmann::json tuned = entry.create(scene, "tuned", nlohmann::json::object())->settings();
   const nlohmann::json stock = entry.create(scene, "stock", nlohmann::json::object())->settings();
-  EXPECT_EQ(tuned.size(), knobs.size());
+  EXPECT_EQ(tuned.size(), knobs.size() + 1);  // and what they mean for the scene:
+  EXPECT_EQ(tuned["derived"]["moment_of_inertia"], "0.5 m r^2 (disk)");
   for (const auto& k : knobs) {
     EXPECT_TRUE(tuned.contains(k)) << k;
     EXPECT_TRUE(stock.contains(k)) << k;

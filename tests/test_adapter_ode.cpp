@@ -179,7 +179,8 @@ TEST(OdeAdapter, SettingsListEveryKnob) {
     for (const char* key : {"stepper", "space", "quickstep_iterations", "quickstep_w", "erp", "cfm", "bounce_vel",
                             "contact_surface_layer", "max_correcting_vel", "align_to_plane"})
       EXPECT_TRUE(settings.contains(key)) << profile << " lacks " << key;
-    EXPECT_EQ(settings.size(), 10u) << settings.dump();
+    EXPECT_EQ(settings.size(), 11u) << settings.dump();  // and what they mean for the scene:
+    EXPECT_EQ(settings["derived"]["moment_of_inertia"], "0.5 m r^2 (disk)");
   }
   const auto stock = find_engine("ode").create(s, "stock", {})->settings();
   EXPECT_EQ(stock["stepper"], "quickstep");

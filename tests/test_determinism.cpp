@@ -54,7 +54,7 @@ TEST_P(Deterministic, TwoRunsGiveTheSameChecksums) {
   EXPECT_EQ(a.checksum_trajectory, c.checksum_trajectory);
   // Nor does writing the trajectory as it runs.
   const std::string csv_path = ::testing::TempDir() + "bb_determinism." + std::to_string(::getpid()) + ".csv";
-  TrajectoryCsv csv(csv_path);
+  TrajectoryCsv csv(csv_path, false);
   EXPECT_EQ(a.checksum_trajectory, run(scene, engine, steps, &csv).checksum_trajectory);
   csv.close();
   std::filesystem::remove(csv_path);

@@ -26,7 +26,7 @@
 namespace ballbench {
 namespace {
 
-enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth };
+enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin };
 
 // Balls in free flight, mirrored at the walls (no ball-ball collisions), misbehaving at step `at`.
 class TestEngine : public Engine {
@@ -64,6 +64,8 @@ class TestEngine : public Engine {
       case Misbehaviour::Throw: throw std::runtime_error("the test engine gave up");
       case Misbehaviour::Exit3: std::_Exit(3);
       case Misbehaviour::NonFinite: state_.pos(0, 0) = std::numeric_limits<double>::quiet_NaN(); break;
+      case Misbehaviour::NonFiniteSpin: state_.w(0) = std::numeric_limits<double>::infinity(); break;
+      case Misbehaviour::DropsSpin: state_.w.resize(0), state_.angle.resize(0); break;
       default: break;
     }
   }
@@ -220,6 +222,33 @@ TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
   // The final figures come from the last good state, not from the non-finite one.
   ASSERT_FALSE(r.series.final_pos.empty());
   for (const auto& p : r.series.final_pos) EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
+}
+
+// seed-box with friction: it rotates, so the engine must read back spins.
+Scene rough_box() {
+  Scene s = box();
+  s.friction = 0.5;
+  const State plain = s.initial;
+  s.initial.resize(s.n(), true);
+  s.initial.pos = plain.pos, s.initial.vel = plain.vel;
+  s.initial.w.setZero(), s.initial.angle.setZero();
+  return s;
+}
+
+TEST(DivergingRun, ANonFiniteSpinStopsTheRunAtThatStep) {
+  const Result r = run_engine(rough_box(), test_engine("inf", Misbehaviour::NonFiniteSpin, 4), steps(50));
+  EXPECT_EQ(r.status, "diverged");
+  EXPECT_EQ(r.diverged_step, 4);
+  EXPECT_EQ(r.steps_done, 3);
+}
+
+TEST(FailedRun, AnEngineThatReadsBackNoSpinForARotatingSceneFails) {
+  const Result r = run_engine(rough_box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_NE(r.error.find("step 6: the engine read back no angular velocities"), std::string::npos) << r.error;
+  EXPECT_EQ(r.steps_done, 5);
+  // The same engine on a scene that does not rotate owes none.
+  EXPECT_EQ(run_engine(box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50)).status, "ok");
 }
 
 TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {

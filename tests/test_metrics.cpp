@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "metrics/energy.h"
+#include "metrics/momentum.h"
 #include "metrics/metrics.h"
 #include "metrics/tunnelling.h"
 #include "overlap.h"
@@ -75,6 +76,79 @@ void feed(MetricsAccumulator& m, const std::vector<State>& states) {
     if (k > 0) m.observe_motion(states[k - 1], states[k]);
     m.observe(states[k]);
   }
+}
+
+// two_balls() with friction (so it rotates) and the given inertia; spins 4 and -2 rad/s.
+Scene two_rough_balls(const char* inertia) {
+  Scene s = two_balls();
+  s.friction = 0.5;
+  s.inertia = inertia == std::string("sphere") ? Inertia::sphere : Inertia::disk;
+  s.initial.resize(2, true);
+  s.initial.pos = two_balls().initial.pos, s.initial.vel = two_balls().initial.vel;
+  s.initial.w << 4.0, -2.0;
+  s.initial.angle.setZero();
+  return s;
+}
+
+TEST(Energy, CountsRotationWithTheScenesInertia) {
+  for (const char* inertia : {"disk", "sphere"}) {
+    const Scene s = two_rough_balls(inertia);
+    const double k = inertia == std::string("sphere") ? 0.4 : 0.5;
+    // I w^2 / 2 = k m r^2 w^2 / 2: 1 * 0.0625 * 16 and 3 * 0.0625 * 4, halved, times k.
+    const double rotation = 0.5 * k * (0.0625 * 16 + 3 * 0.0625 * 4);
+    EXPECT_DOUBLE_EQ(kinetic_energy(s.initial, s), 26.0 + rotation) << inertia;
+    EXPECT_DOUBLE_EQ(total_energy(s.initial, s, energy_reference(s)), 256.0 + rotation) << inertia;
+  }
+}
+
+TEST(AngularMomentum, IsOrbitalPlusSpinAboutTheBoxCentre) {
+  const Scene s = two_rough_balls("disk");
+  // About (0, 0): (x vy - y vx) m = (-1 * 0 - 0 * 2) * 1 + (1 * -4 - 1 * 0) * 3 = -12;
+  // spin k m r^2 w = 0.5 * 0.0625 * (1 * 4 + 3 * -2) = -0.0625.
+  MetricsAccumulator m(s, {});
+  m.observe(s.initial);
+  EXPECT_EQ(m.summary().angular_momentum.centre, Eigen::Vector2d(0, 0));
+  EXPECT_DOUBLE_EQ(m.summary().angular_momentum.initial, -12.0625);
+  // Spin traded for orbit at the same total: no drift; then a change of 1 is one.
+  State t = s.initial;
+  t.vel(0, 1) = 0.0625;  // ball 0 at x = -1: x vy m = -0.0625, what the spins held
+  t.w.setZero();
+  m.observe(t);
+  EXPECT_NEAR(m.summary().angular_momentum.max_abs_drift, 0.0, 1e-15);
+  t.vel(1, 0) = -1.0;  // - y vx m = -1 * -1 * 3 = +3
+  m.observe(t);
+  EXPECT_NEAR(m.summary().angular_momentum.max_abs_drift, 3.0, 1e-12);
+  EXPECT_NEAR(m.summary().angular_momentum.final, -9.0625, 1e-12);
+}
+
+TEST(Slip, IsZeroForARollingBallAndTimesTheRoll) {
+  Scene s = two_rough_balls("disk");
+  s.initial.pos.row(0) << 0.0, -4.75;  // on the floor
+  s.initial.pos.row(1) << 4.75, 0.0;   // on the right wall
+  MetricsAccumulator m(s, {});
+  State a = s.initial;
+  a.vel.row(0) << 2.0, 0.0, a.vel.row(1) << 0.0, 1.0;
+  a.w << -8.0 + 0.4, 4.0;  // floor: |-vx - w r| = |-2 + 1.9| = 0.1; right wall: |-vy - w r| = |-1 - 1| = 2
+  m.observe(a);
+  EXPECT_TRUE(m.summary().slip.measured);
+  EXPECT_NEAR(m.summary().slip.final_max, 2.0, 1e-12);
+  EXPECT_FALSE(m.summary().slip.time_to_roll);
+  a.t = 0.5, a.w << -8.0, -4.0;  // both roll: floor -2 + 2, wall -1 + 1
+  m.observe(a);
+  EXPECT_EQ(m.summary().slip.final_max, 0.0);
+  ASSERT_TRUE(m.summary().slip.time_to_roll);
+  EXPECT_EQ(*m.summary().slip.time_to_roll, 0.5);
+  a.t = 0.6, a.pos(1, 0) = 0.0;  // ball 1 leaves the wall: its spin no longer counts
+  a.w(1) = 100.0;
+  m.observe(a);
+  EXPECT_EQ(*m.summary().slip.time_to_roll, 0.5);
+  a.t = 0.7, a.w(0) = 0.0;  // the floor ball slips again: not rolling
+  m.observe(a);
+  EXPECT_FALSE(m.summary().slip.time_to_roll);
+  // A scene that does not rotate measures none.
+  MetricsAccumulator plain(two_balls(), {});
+  plain.observe(two_balls().initial);
+  EXPECT_FALSE(plain.summary().slip.measured);
 }
 
 TEST(Tunnelling, AnInjectedWallEscapeCountsOne) {

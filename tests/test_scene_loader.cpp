@@ -25,6 +25,10 @@ radius = 0.25
 mass = 1.0
 )";
 
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  return s.replace(s.find(from), from.size(), to);
+}
+
 std::string error_of(const std::string& text) {
   try {
     parse_scene(text, "s.toml");
@@ -84,6 +88,45 @@ struct BadCase {
 
 void PrintTo(const BadCase& c, std::ostream* os) { *os << c.what; }
 
+TEST(SceneLoader, ReadsInertiaAndSpin) {
+  const Scene plain = parse_scene(kMinimal, "s.toml");
+  EXPECT_EQ(plain.inertia, Inertia::disk);
+  EXPECT_FALSE(plain.features().rotation);
+  EXPECT_FALSE(plain.initial.rotates());  // nothing about rotation is built for it
+
+  const Scene spun = parse_scene(replace(replace(kMinimal, "mass = 1.0", "mass = 2.0\nspin = -3.5"), "duration = 1.0",
+                                         "duration = 1.0\ninertia = \"sphere\""),
+                                 "s.toml");
+  EXPECT_EQ(spun.inertia, Inertia::sphere);
+  EXPECT_TRUE(spun.features().rotation);
+  ASSERT_TRUE(spun.initial.rotates());
+  EXPECT_EQ(spun.spin(0), -3.5);
+  EXPECT_EQ(spun.initial.angle(0), 0.0);
+  EXPECT_DOUBLE_EQ(spun.moment_of_inertia(0), 0.4 * 2.0 * 0.25 * 0.25);
+
+  // Friction alone makes a scene rotate, from rest.
+  const Scene rough = parse_scene(replace(kMinimal, "duration = 1.0", "duration = 1.0\nfriction = 0.2"), "s.toml");
+  EXPECT_TRUE(rough.features().rotation);
+  ASSERT_TRUE(rough.initial.rotates());
+  EXPECT_EQ(rough.spin(0), 0.0);
+  EXPECT_DOUBLE_EQ(rough.moment_of_inertia(0), 0.5 * 0.25 * 0.25);
+}
+
+TEST(SceneLoader, RandomSpinsAreDrawnInTheirRangeWithoutMovingThePlacements) {
+  const std::string base = std::string(kMinimal) + "[random]\ncount = 50\nradius = 0.1\nvel_min = [-1.0, -1.0]\nvel_max = [1.0, 1.0]\n";
+  const Scene without = parse_scene(base, "s.toml");
+  const Scene with = parse_scene(base + "spin_min = -2.0\nspin_max = 3.0\n", "s.toml");
+  ASSERT_TRUE(with.initial.rotates());
+  EXPECT_GE(with.initial.w.minCoeff(), -2.0);
+  EXPECT_LT(with.initial.w.maxCoeff(), 3.0);
+  EXPECT_LT(with.initial.w.minCoeff(), 0.0);  // the range is used, not one end of it
+  EXPECT_GT(with.initial.w.maxCoeff(), 1.0);
+  EXPECT_EQ(with.spin(0), 0.0);  // the explicit ball has none
+  // The first drawn ball's position and velocity are drawn before its spin: the same.
+  EXPECT_EQ(with.initial.pos.row(1), without.initial.pos.row(1));
+  EXPECT_EQ(with.initial.vel.row(1), without.initial.vel.row(1));
+}
+
 class SceneLoaderRejects : public ::testing::TestWithParam<BadCase> {};
 
 TEST_P(SceneLoaderRejects, WithOneClearLine) {
@@ -93,9 +136,6 @@ TEST_P(SceneLoaderRejects, WithOneClearLine) {
   EXPECT_EQ(msg.rfind("s.toml:", 0), 0u) << msg;  // names the file first
 }
 
-std::string replace(std::string s, const std::string& from, const std::string& to) {
-  return s.replace(s.find(from), from.size(), to);
-}
 
 INSTANTIATE_TEST_SUITE_P(
     BadInput, SceneLoaderRejects,
@@ -134,6 +174,14 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"nan in a vector", replace(kMinimal, "vel = [1.0, 0.0]", "vel = [nan, 0.0]"), "ball[0].vel[0]: must be finite"},
         BadCase{"negative inf gravity", replace(kMinimal, "duration = 1.0", "duration = 1.0\ngravity = [0.0, -inf]"), "gravity[1]: must be finite"},
         BadCase{"zero mass", replace(kMinimal, "mass = 1.0", "mass = 0.0"), "ball[0].mass: must be positive"},
+        BadCase{"unknown inertia", replace(kMinimal, "dt = 0.01", "dt = 0.01\ninertia = \"sphear\""),
+                "inertia: unknown inertia 'sphear' (use \"disk\", I = m r^2 / 2, or \"sphere\", I = 2/5 m r^2), did you mean 'sphere'?"},
+        BadCase{"inertia a number", replace(kMinimal, "dt = 0.01", "dt = 0.01\ninertia = 0.5"), "inertia: expected a string"},
+        BadCase{"huge spin", replace(kMinimal, "mass = 1.0", "mass = 1.0\nspin = 1e300"), "ball[0].spin: must be a finite angular velocity"},
+        BadCase{"spin range reversed", std::string(kMinimal) + "[random]\ncount = 3\nradius = 0.1\nspin_min = 2.0\nspin_max = 1.0\n",
+                "random.spin_min: must not exceed spin_max"},
+        BadCase{"lattice spin nan", std::string(kMinimal) + "[lattice]\ncount = 3\nradius = 0.1\nspacing = 0.3\nspin_max = nan\n",
+                "lattice.spin_max: must be finite"},
         BadCase{"negative dt", replace(kMinimal, "dt = 0.01", "dt = -0.01"), "dt: must be positive"},
         BadCase{"random zero radius", std::string(kMinimal) + "[random]\ncount = 3\nradius = 0.0\n", "random.radius: must be positive"},
         BadCase{"random negative mass", std::string(kMinimal) + "[random]\ncount = 3\nradius = 0.1\nmass = -2.0\n",

@@ -67,7 +67,9 @@ class Box2dEngine final : public Engine {
       : s_(s),
         world_(b2Vec2(static_cast<float>(scene.gravity.x()), static_cast<float>(scene.gravity.y()))),
         dt_(scene.dt),
-        fixed_rotation_(s.fixed_rotation == "always" || (s.fixed_rotation == "auto" && scene.friction == 0.0)) {
+        rotation_(scene.features().rotation),
+        fixed_rotation_(s.fixed_rotation == "always" || (s.fixed_rotation == "auto" && !rotation_)) {
+    inertia_label_ = fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia));
     world_.SetAllowSleeping(s.allow_sleep);
     world_.SetWarmStarting(s.warm_starting);
     world_.SetContinuousPhysics(s.continuous_physics);
@@ -85,13 +87,14 @@ class Box2dEngine final : public Engine {
   void read(State& out) const override {
     const int n = static_cast<int>(balls_.size());
     out.t = t_;
-    out.resize(n);
+    out.resize(n, rotation_);
     for (int i = 0; i < n; ++i) {
       // The circle sits on the body origin, so the origin is the centre of mass and the ball centre.
       const b2Vec2& p = balls_[i]->GetPosition();
       const b2Vec2& v = balls_[i]->GetLinearVelocity();
       out.pos(i, 0) = p.x, out.pos(i, 1) = p.y;
       out.vel(i, 0) = v.x, out.vel(i, 1) = v.y;
+      if (rotation_) out.w(i) = balls_[i]->GetAngularVelocity(), out.angle(i) = balls_[i]->GetAngle();
     }
   }
 
@@ -114,6 +117,7 @@ class Box2dEngine final : public Engine {
             {"derived",
              {{"b2_version", b2_version_string()},
               {"fixed_rotation", fixed_rotation_},
+              {"moment_of_inertia", inertia_label_},
               {"max_speed", b2_maxTranslation / dt_}}}};  // m/s: faster balls are slowed to it
   }
 
@@ -167,6 +171,7 @@ class Box2dEngine final : public Engine {
     def.awake = true;
     def.bullet = s_.bullet;
     def.fixedRotation = fixed_rotation_;
+    def.angularVelocity = static_cast<float>(scene.spin(i));
     b2Body* body = world_.CreateBody(&def);
 
     b2CircleShape circle;
@@ -174,12 +179,13 @@ class Box2dEngine final : public Engine {
     // Box2D's circle mass is density * b2_pi * r^2 (b2CircleShape::ComputeMass).
     const b2FixtureDef f = material(circle, scene.friction, scene.restitution, m / (b2_pi * r * r));
     body->CreateFixture(&f);
-    // The float product above can miss the scene's mass by an ulp; pin mass and the solid disc's
-    // inertia m r^2 / 2 about the centre (ignored when rotation is fixed).
+    // The float product above can miss the scene's mass by an ulp; pin the mass, and the scene's
+    // inertia k m r^2 about the centre (Box2D's own is the disk's, k = 1/2; ignored when rotation
+    // is fixed).
     b2MassData mass;
     mass.mass = static_cast<float>(m);
     mass.center.SetZero();
-    mass.I = static_cast<float>(0.5 * m * r * r);
+    mass.I = static_cast<float>(scene.moment_of_inertia(i));
     body->SetMassData(&mass);
     balls_.push_back(body);
   }
@@ -187,7 +193,9 @@ class Box2dEngine final : public Engine {
   Box2dSettings s_;
   b2World world_;               // owns every body and fixture
   double dt_;                   // the scene's step (s), for the derived speed limit
+  bool rotation_;                // the scene rotates: spins are read back
   bool fixed_rotation_;
+  std::string inertia_label_;
   std::vector<b2Body*> balls_;  // scene order
   double t_ = 0;                // kept in double: Box2D only sees the float step
 };

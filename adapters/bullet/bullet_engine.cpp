@@ -27,6 +27,9 @@ class BulletWorld final : public Engine {
  public:
   BulletWorld(const Scene& scene, const BulletSettings& s)
       : s_(s),
+        rotation_(scene.features().rotation),
+        inertia_label_(fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia))),
+        angle_(rotation_ ? scene.n() : 0, 0.0),
         dispatcher_(&collision_config_),
         world_(&dispatcher_, &broadphase_, &solver_, &collision_config_) {
     world_.setGravity(btVector3(btScalar(scene.gravity.x()), btScalar(scene.gravity.y()), 0));
@@ -70,13 +73,17 @@ class BulletWorld final : public Engine {
 
   void read(State& out) const override {
     const int n = static_cast<int>(balls_.size());
-    out.resize(n);
+    out.resize(n, rotation_);
     out.t = t_;
     for (int i = 0; i < n; ++i) {
       const btVector3& p = balls_[i]->getWorldTransform().getOrigin();
       const btVector3& v = balls_[i]->getLinearVelocity();
       out.pos(i, 0) = p.x(), out.pos(i, 1) = p.y();
       out.vel(i, 0) = v.x(), out.vel(i, 1) = v.y();
+      if (!rotation_) continue;
+      out.w(i) = balls_[i]->getAngularVelocity().z();
+      const btQuaternion q = balls_[i]->getWorldTransform().getRotation();  // about z only
+      out.angle(i) = angle_[i] = angle_about_z(q.w(), q.z(), angle_[i]);
     }
   }
 
@@ -93,7 +100,8 @@ class BulletWorld final : public Engine {
             {"contact_processing_threshold", s_.contact_processing_threshold},
             {"ccd_motion_threshold", s_.ccd_motion_threshold},
             {"ccd_swept_sphere_radius", s_.ccd_swept_sphere_radius},
-            {"speculative_contact_restitution", s_.speculative_contact_restitution}};
+            {"speculative_contact_restitution", s_.speculative_contact_restitution},
+            {"derived", {{"moment_of_inertia", inertia_label_}}}};
   }
 
   double out_of_plane() const override {
@@ -144,15 +152,20 @@ class BulletWorld final : public Engine {
   }
 
   void add_balls(const Scene& scene) {
-    const bool rotates = scene.friction > 0;
     for (int i = 0; i < scene.n(); ++i) {
       const double r = scene.radius(i);
       btRigidBody* ball = add_body(std::make_unique<btSphereShape>(btScalar(r)), scene.mass(i),
                                    to_bt(scene.initial.pos(i, 0), scene.initial.pos(i, 1)));
-      // Held to the plane: no z motion; no rotation unless friction can spin the ball, and then
-      // only about z.
+      // Held to the plane: no z motion; no rotation unless the scene rotates, and then only about z,
+      // with the scene's moment k m r^2 (a btSphereShape's own is the sphere's, k = 2/5).
       ball->setLinearFactor(btVector3(1, 1, 0));
-      ball->setAngularFactor(rotates ? btVector3(0, 0, 1) : btVector3(0, 0, 0));
+      ball->setAngularFactor(rotation_ ? btVector3(0, 0, 1) : btVector3(0, 0, 0));
+      if (rotation_) {
+        const btScalar moment = btScalar(scene.moment_of_inertia(i));
+        ball->setMassProps(btScalar(scene.mass(i)), btVector3(moment, moment, moment));
+        ball->updateInertiaTensor();
+        ball->setAngularVelocity(btVector3(0, 0, btScalar(scene.spin(i))));
+      }
       ball->setActivationState(DISABLE_DEACTIVATION);
       ball->setLinearVelocity(to_bt(scene.initial.vel(i, 0), scene.initial.vel(i, 1)));
       if (s_.ccd_motion_threshold > 0) {
@@ -165,6 +178,9 @@ class BulletWorld final : public Engine {
   }
 
   BulletSettings s_;
+  bool rotation_;                       // the scene rotates: balls turn about z, spins are read back
+  std::string inertia_label_;
+  mutable std::vector<double> angle_;   // each ball's unwrapped angle at the last read (rad)
   btScalar restitution_ = 1, friction_ = 0;
   // Declaration order is construction order: the world needs the four parts above it.
   btDefaultCollisionConfiguration collision_config_;

@@ -104,7 +104,9 @@ std::string version_string() {
 
 class ChipmunkEngine final : public Engine {
  public:
-  ChipmunkEngine(const Scene& scene, const ChipmunkSettings& s) : s_(s), dt_(scene.dt), space_(new_space_quietly()) {
+  ChipmunkEngine(const Scene& scene, const ChipmunkSettings& s)
+      : s_(s), dt_(scene.dt), rotation_(scene.features().rotation), space_(new_space_quietly()) {
+    inertia_label_ = fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia));
     cpSpaceSetIterations(space_, s.iterations);
     cpSpaceSetCollisionSlop(space_, s.collision_slop);
     cpSpaceSetCollisionBias(space_, s.collision_bias);
@@ -144,13 +146,14 @@ class ChipmunkEngine final : public Engine {
   void read(State& out) const override {
     const int n = static_cast<int>(bodies_.size());
     out.t = t_;
-    out.resize(n);
+    out.resize(n, rotation_);
     for (int i = 0; i < n; ++i) {
       // The circle sits on the body's centre of gravity, so the body position is the ball centre.
       const cpVect p = cpBodyGetPosition(bodies_[i]);
       const cpVect v = cpBodyGetVelocity(bodies_[i]);
       out.pos(i, 0) = p.x, out.pos(i, 1) = p.y;
       out.vel(i, 0) = v.x, out.vel(i, 1) = v.y;
+      if (rotation_) out.w(i) = cpBodyGetAngularVelocity(bodies_[i]), out.angle(i) = cpBodyGetAngle(bodies_[i]);
     }
   }
 
@@ -180,7 +183,8 @@ class ChipmunkEngine final : public Engine {
               {"damping", cpSpaceGetDamping(space_)},                 // 1: none
               {"overlap_removed_per_step", 1.0 - std::pow(bias, dt_)},  // of the depth beyond the slop
               {"shape_elasticity", elasticity_},
-              {"shape_friction", friction_}}}};
+              {"shape_friction", friction_},
+              {"moment_of_inertia", inertia_label_}}}};
   }
 
  private:
@@ -204,10 +208,12 @@ class ChipmunkEngine final : public Engine {
 
   void add_ball(const Scene& scene, int i) {
     const double r = scene.radius(i), m = scene.mass(i);
-    // A solid disc: cpMomentForCircle(m, 0, r, 0) = m r^2 / 2 about its centre.
-    cpBody* body = cpSpaceAddBody(space_, cpBodyNew(m, cpMomentForCircle(m, 0.0, r, cpvzero)));
+    // The scene's moment k m r^2 about the centre; Chipmunk's own for a solid disc,
+    // cpMomentForCircle(m, 0, r, 0), is m r^2 / 2, k = 1/2.
+    cpBody* body = cpSpaceAddBody(space_, cpBodyNew(m, scene.moment_of_inertia(i)));
     cpBodySetPosition(body, cpv(scene.initial.pos(i, 0), scene.initial.pos(i, 1)));
     cpBodySetVelocity(body, cpv(scene.initial.vel(i, 0), scene.initial.vel(i, 1)));
+    cpBodySetAngularVelocity(body, scene.spin(i));
     bodies_.push_back(body);
     // Added after the body is placed, so the spatial index files it where it is.
     cpShape* shape = cpCircleShapeNew(body, r, cpvzero);
@@ -218,6 +224,8 @@ class ChipmunkEngine final : public Engine {
 
   ChipmunkSettings s_;
   double dt_;                    // the scene's step (s), for the derived bias rate
+  bool rotation_;                // the scene rotates: spins are read back
+  std::string inertia_label_;
   cpSpace* space_;               // owns neither bodies nor shapes (freed in the destructor)
   double elasticity_ = 1, friction_ = 0;  // per shape: square roots of the scene's values
   double wall_radius_ = 0;       // in force (m): the setting, or the thickness derived from the box
@@ -294,7 +302,7 @@ EngineEntry chipmunk_engine() {
   // this step's gravity (cpArbiterPreStep). Simultaneous contacts are approximate, as in any
   // iterative solver (README).
   info.caps.any_restitution = true;
-  info.caps.friction = true;  // Coulomb friction on every shape, balls rotate (moment m r^2 / 2)
+  info.caps.friction = true;  // Coulomb friction on every shape; balls rotate with the scene's moment
   info.caps.continuous_collision = false;  // discrete overlap tests only: fast balls tunnel
   info.caps.deterministic = true;          // cpSpace (not cpHastySpace) steps on one thread
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {

@@ -42,7 +42,12 @@ constexpr const char* kProfiles[] = {"tuned", "stock"};
 
 class OdeEngine final : public Engine {
  public:
-  OdeEngine(const Scene& scene, OdeSettings settings) : s_(std::move(settings)), n_(scene.n()) {
+  OdeEngine(const Scene& scene, OdeSettings settings)
+      : s_(std::move(settings)),
+        n_(scene.n()),
+        rotation_(scene.features().rotation),
+        inertia_label_(fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia))),
+        angle_(rotation_ ? n_ : 0, 0.0) {
     ensure_ode_ready();
     world_ = dWorldCreate();
     space_ = s_.space == "sap" ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
@@ -79,11 +84,15 @@ class OdeEngine final : public Engine {
     bodies_.reserve(n_);
     for (int i = 0; i < n_; ++i) {
       dBodyID b = dBodyCreate(world_);
+      // The scene's moment k m r^2 about every axis (ODE's dMassSetSphereTotal gives the sphere's,
+      // k = 2/5); Plane2D lets the ball turn about z only.
       dMass m;
-      dMassSetSphereTotal(&m, scene.mass(i), scene.radius(i));
+      const double moment = scene.moment_of_inertia(i);
+      dMassSetParameters(&m, scene.mass(i), 0, 0, 0, moment, moment, moment, 0, 0, 0);
       dBodySetMass(b, &m);
       dBodySetPosition(b, scene.initial.pos(i, 0), scene.initial.pos(i, 1), 0.0);
       dBodySetLinearVel(b, scene.initial.vel(i, 0), scene.initial.vel(i, 1), 0.0);
+      dBodySetAngularVel(b, 0, 0, scene.spin(i));
       dBodySetAutoDisableFlag(b, 0);
       dGeomID g = dCreateSphere(space_, scene.radius(i));
       dGeomSetBody(g, b);
@@ -123,13 +132,17 @@ class OdeEngine final : public Engine {
   }
 
   void read(State& out) const override {
-    out.resize(n_);
+    out.resize(n_, rotation_);
     out.t = t_;
     for (int i = 0; i < n_; ++i) {
       const dReal* p = dBodyGetPosition(bodies_[i]);
       const dReal* v = dBodyGetLinearVel(bodies_[i]);
       out.pos(i, 0) = p[0], out.pos(i, 1) = p[1];
       out.vel(i, 0) = v[0], out.vel(i, 1) = v[1];
+      if (!rotation_) continue;
+      out.w(i) = dBodyGetAngularVel(bodies_[i])[2];
+      const dReal* q = dBodyGetQuaternion(bodies_[i]);  // (w, x, y, z), about z only
+      out.angle(i) = angle_[i] = angle_about_z(q[0], q[3], angle_[i]);
     }
   }
 
@@ -143,7 +156,8 @@ class OdeEngine final : public Engine {
             {"bounce_vel", s_.bounce_vel},
             {"contact_surface_layer", s_.contact_surface_layer},
             {"max_correcting_vel", s_.max_correcting_vel},
-            {"align_to_plane", s_.align_to_plane}};
+            {"align_to_plane", s_.align_to_plane},
+            {"derived", {{"moment_of_inertia", inertia_label_}}}};
   }
 
   double out_of_plane() const override {
@@ -186,6 +200,9 @@ class OdeEngine final : public Engine {
 
   OdeSettings s_;
   int n_;
+  bool rotation_;                      // the scene rotates: spins are read back
+  std::string inertia_label_;
+  mutable std::vector<double> angle_;  // each ball's unwrapped angle at the last read (rad)
   dWorldID world_ = nullptr;
   dSpaceID space_ = nullptr;
   dJointGroupID contacts_ = nullptr;

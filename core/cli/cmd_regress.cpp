@@ -14,6 +14,7 @@
 #include "input_error.h"
 #include "json_value.h"
 #include "machine_info.h"
+#include "metrics/catalog.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
@@ -44,33 +45,20 @@ std::vector<SuiteScene> suite() {
 
 // Default tolerances, written into a new baseline; a baseline's own "tolerances" are the ones used
 // (so they can be changed there) and survive --update. A metric passes if
-// |now - baseline| <= abs + rel |baseline|.
-// - Counts (steps, tunnelling and sticking events) and the status: exact. A count that moves is a
-//   behaviour change, never round-off.
-// - Real-valued metrics: relative 1e-9 with an absolute floor of 1e-12 (for values that are round-off
-//   around zero, such as the momentum drift of a conserving solver). Our solvers compute in double
-//   with -ffp-contract=off, so the same source gives the same bits on every x86-64 build we make
-//   (checked: g++ -O2, and -O0 and -O1 with ASan and UBSan, give identical checksums); 1e-9 still
-//   leaves room for a different compiler or libm reordering a sum, while any change of algorithm or
-//   constant moves these metrics by far more (home's contact_iterations 50 -> 4 moves energy.final
-//   on seed-bowl by 0.6%).
-// - The checksums of the final state and of the whole trajectory (Result::checksum_*): exact.
+// |now - baseline| <= abs + rel |baseline|. Each metric's own is in the catalog
+// (core/metrics/catalog.cpp: counts exact, real-valued metrics relative 1e-9 with an absolute floor
+// of 1e-12); the run's outcome (steps done, the step it diverged at) must match exactly. Our
+// solvers compute in double with -ffp-contract=off, so the same source gives the same bits on every
+// x86-64 build we make (checked: g++ -O2, and -O0 and -O1 with ASan and UBSan, give identical
+// checksums), while any change of algorithm or constant moves these metrics by far more (home's
+// contact_iterations 50 -> 4 moves energy.final on seed-bowl by 0.6%). The checksums of the final
+// state and of the whole trajectory (Result::checksum_*) must match exactly.
 nlohmann::json default_tolerances() {
-  const nlohmann::json exact = {{"rel", 0.0}, {"abs", 0.0}};
-  const nlohmann::json real = {{"rel", 1e-9}, {"abs", 1e-12}};
-  return {{"steps_done", exact},
-          {"diverged_step", exact},
-          {"tunnelling.wall", exact},
-          {"tunnelling.pair", exact},
-          {"sticking.wall", exact},
-          {"sticking.pair", exact},
-          {"energy.initial", real},
-          {"energy.final", real},
-          {"energy.max_rel_drift", real},
-          {"energy.max_abs_drift", real},
-          {"momentum.max_abs_drift", real},
-          {"penetration.max", real},
-          {"penetration.mean", real}};
+  const auto as_json = [](const Tolerance& t) { return nlohmann::json{{"rel", t.rel}, {"abs", t.abs}}; };
+  nlohmann::json out = {{"steps_done", as_json({})}, {"diverged_step", as_json({})}};
+  for (const MetricDef& m : metric_catalog())
+    if (m.regress) out[m.key] = as_json(*m.regress);
+  return out;
 }
 
 const char* kAbout =
@@ -83,21 +71,10 @@ const char* kAbout =
 // One run as the baseline stores it. Null for a metric the run does not have (energy drift when
 // the initial energy is zero, diverged_step of a run that did not diverge).
 nlohmann::json record(const Result& r) {
-  const auto& m = r.metrics;
-  nlohmann::json metrics = {
-      {"steps_done", r.steps_done},
-      {"diverged_step", r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr)},
-      {"tunnelling.wall", m.tunnelling_wall},
-      {"tunnelling.pair", m.tunnelling_pair},
-      {"sticking.wall", m.sticking_wall},
-      {"sticking.pair", m.sticking_pair},
-      {"energy.initial", m.energy.initial},
-      {"energy.final", m.energy.final},
-      {"energy.max_rel_drift", m.energy.max_rel_drift ? nlohmann::json(*m.energy.max_rel_drift) : nlohmann::json(nullptr)},
-      {"energy.max_abs_drift", m.energy.max_abs_drift},
-      {"momentum.max_abs_drift", m.momentum.max_abs_drift},
-      {"penetration.max", m.penetration_max},
-      {"penetration.mean", m.penetration_mean}};
+  nlohmann::json metrics = {{"steps_done", r.steps_done},
+                            {"diverged_step", r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr)}};
+  for (const MetricDef& m : metric_catalog())
+    if (m.regress) metrics[m.key] = m.get(r);
   return {{"scene", r.scene},
           {"engine", r.engine},
           {"engine_version", r.engine_version},
@@ -218,7 +195,8 @@ void regress(const RegressArgs& a) {
     nlohmann::json tolerances = default_tolerances();
     if (std::filesystem::exists(a.baseline)) {
       const nlohmann::json old = read_baseline_file(a.baseline);
-      if (old.contains("tolerances")) tolerances = old["tolerances"];
+      // The baseline's own tolerances win; a metric new since it was written gets its default.
+      if (old.contains("tolerances") && old["tolerances"].is_object()) tolerances.update(old["tolerances"]);
     }
     const MachineInfo m = machine_info();
     write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},

@@ -118,7 +118,8 @@ void check_outputs(const Scene& scene, const RunArgs& a) {
 // refused beyond --trajectory-limit-gb, with the estimate, instead of filling the disk.
 void check_trajectory_size(const Scene& scene, const std::vector<const EngineEntry*>& engines, const RunArgs& a) {
   if (a.trajectory.empty()) return;
-  constexpr double kBytesPerRow = 110;  // measured: 500-ball pile, home-seed and home
+  // Measured: 500-ball pile, home-seed and home; w and angle add two more numbers like x and y.
+  const double kBytesPerRow = scene.features().rotation ? 150 : 110;
   const size_t runs = run_count(engines, a.profile);
   const double steps = static_cast<double>(a.steps ? *a.steps : scene.steps());
   const double rows = (steps + 1) * scene.n() * static_cast<double>(runs), gb = rows * kBytesPerRow / 1e9;

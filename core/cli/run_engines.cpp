@@ -14,6 +14,7 @@
 #include "interrupt.h"
 #include "isolated_run.h"
 #include "machine_info.h"
+#include "metrics/catalog.h"
 #include "progress.h"
 #include "trajectory_csv.h"
 
@@ -28,19 +29,15 @@ Result not_started(const Scene& scene, const EngineEntry& entry, const RunOption
   return r;
 }
 
-std::string opt_drift(const Result& r) {
-  return r.metrics.energy.max_rel_drift ? fmt::format("{:.3g}", *r.metrics.energy.max_rel_drift) : "n/a";
-}
-
 // The trajectory CSV of isolated runs: each child writes its own part (a complete CSV, header
 // included, by TrajectoryCsv); the parts are joined here, in run order, under one header. The file
 // appears only when complete (written beside it, then renamed), and the parts are removed even if a
 // run throws.
 class TrajectoryParts {
  public:
-  explicit TrajectoryParts(std::string path) : path_(std::move(path)), joined_(path_ + ".joining") {
+  TrajectoryParts(std::string path, bool rotation) : path_(std::move(path)), joined_(path_ + ".joining") {
     try {
-      TrajectoryCsv(joined_).close();  // the header alone, from the one writer of the format
+      TrajectoryCsv(joined_, rotation).close();  // the header alone, from the one writer of the format
     } catch (const InputError&) {
       throw InputError(fmt::format("--trajectory {}: cannot open for writing", path_));
     }
@@ -120,17 +117,22 @@ void add_setting(nlohmann::json& overrides, const std::string& item) {
   slot = parsed;
 }
 
+// One row per run: its outcome, the catalog's metrics that have a heading (core/metrics/catalog.h)
+// and that some run has, the error against the reference and the timing.
 void print_table(const std::vector<Result>& results) {
-  fmt::print("{:<18} {:<11} {:>6} {:>8} {:>11} {:>11} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10} {:>9} {:>12}\n", "engine",
-             "status", "n", "steps", "E drift", "P drift", "tun.wall", "tun.pair", "stk.wall", "stk.pair", "pen.max",
-             "pos.err", "horizon", "ns/ball-step");
+  std::vector<const MetricDef*> shown;
+  for (const MetricDef& m : metric_catalog())
+    if (!m.heading.empty() &&
+        std::any_of(results.begin(), results.end(), [&](const Result& r) { return !m.get(r).is_null(); }))
+      shown.push_back(&m);
+  fmt::print("{:<18} {:<11} {:>6} {:>8}", "engine", "status", "n", "steps");
+  for (const MetricDef* m : shown) fmt::print(" {:>10}", m->heading);
+  fmt::print(" {:>10} {:>9} {:>12}\n", "pos.err", "horizon", "ns/ball-step");
   for (const auto& r : results) {
-    const auto& m = r.metrics;
     const auto& e = r.reference;
-    fmt::print("{:<18} {:<11} {:>6} {:>8} {:>11} {:>11.3g} {:>9} {:>9} {:>9} {:>9} {:>10.3g} {:>10} {:>9} {:>12.1f}\n",
-               run_label(r), r.status, r.n, r.steps_done, opt_drift(r), m.momentum.max_abs_drift, m.tunnelling_wall,
-               m.tunnelling_pair, m.sticking_wall, m.sticking_pair, m.penetration_max,
-               e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
+    fmt::print("{:<18} {:<11} {:>6} {:>8}", run_label(r), r.status, r.n, r.steps_done);
+    for (const MetricDef* m : shown) fmt::print(" {:>10}", metric_text(m->get(r)));
+    fmt::print(" {:>10} {:>9} {:>12.1f}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
                !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step);
   }
   for (const auto& r : results) {
@@ -196,8 +198,9 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
   std::optional<TrajectoryCsv> trajectory;  // in this process
   std::optional<TrajectoryParts> parts;     // from child processes
   if (!trajectory_path.empty()) {
-    if (isolation.enabled) parts.emplace(trajectory_path);
-    else trajectory.emplace(trajectory_path);
+    const bool rotation = scene.features().rotation;
+    if (isolation.enabled) parts.emplace(trajectory_path, rotation);
+    else trajectory.emplace(trajectory_path, rotation);
   }
   std::vector<Result> results;
   bool stopped = false;

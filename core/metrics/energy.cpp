@@ -15,8 +15,11 @@ double energy_reference(const Scene& scene) {
   return (-(scene.initial.pos * g)).minCoeff();
 }
 
-double kinetic_energy(const State& s, const Eigen::VectorXd& mass) {
-  return 0.5 * mass.dot(s.vel.rowwise().squaredNorm());
+double kinetic_energy(const State& s, const Scene& scene) {
+  const double translation = 0.5 * scene.mass.dot(s.vel.rowwise().squaredNorm());
+  if (!s.rotates()) return translation;
+  const double k = inertia_factor(scene.inertia);
+  return translation + 0.5 * k * (scene.mass.array() * scene.radius.array().square() * s.w.array().square()).sum();
 }
 
 double potential_energy(const State& s, const Eigen::VectorXd& mass, const Eigen::Vector2d& gravity, double reference) {
@@ -24,7 +27,7 @@ double potential_energy(const State& s, const Eigen::VectorXd& mass, const Eigen
 }
 
 double total_energy(const State& s, const Scene& scene, double reference) {
-  return kinetic_energy(s, scene.mass) + potential_energy(s, scene.mass, scene.gravity, reference);
+  return kinetic_energy(s, scene) + potential_energy(s, scene.mass, scene.gravity, reference);
 }
 
 }  // namespace ballbench

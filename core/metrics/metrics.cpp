@@ -13,25 +13,34 @@ MetricsAccumulator::MetricsAccumulator(const Scene& scene, MetricsConfig config)
     : scene_(scene),
       cfg_(config),
       sticking_(scene.n(), config.stuck_samples),
+      slip_(scene, config.contact_tolerance, config.roll_tolerance),
       tunnelling_(scene.radius, scene.container, config.contact_tolerance),
       deep_in_wall_(scene.n(), 0),
       wall_leaving_(scene.n(), 0) {
   m_.energy.reference = energy_reference(scene);
+  m_.angular_momentum.centre = angular_momentum_centre(scene);
 }
 
 void MetricsAccumulator::observe(const State& s) {
   const double e = total_energy(s, scene_, m_.energy.reference);
   const Eigen::Vector2d p = total_momentum(s, scene_.mass);
+  const double l = angular_momentum(s, scene_, m_.angular_momentum.centre);
   if (m_.samples == 0) {
     m_.energy.initial = e;
     m_.momentum.initial = p;
-    ke0_ = kinetic_energy(s, scene_.mass);
+    m_.angular_momentum.initial = l;
+    ke0_ = kinetic_energy(s, scene_);
   }
   m_.energy.final = e;
   m_.energy.max_abs_drift = std::max(m_.energy.max_abs_drift, std::abs(e - m_.energy.initial));
   if (m_.energy.initial > 0) m_.energy.max_rel_drift = m_.energy.max_abs_drift / m_.energy.initial;
   m_.momentum.final = p;
   m_.momentum.max_abs_drift = std::max(m_.momentum.max_abs_drift, (p - m_.momentum.initial).norm());
+  m_.angular_momentum.final = l;
+  m_.angular_momentum.max_abs_drift =
+      std::max(m_.angular_momentum.max_abs_drift, std::abs(l - m_.angular_momentum.initial));
+  slip_.observe(s);
+  m_.slip = slip_.summary();
 
   // Overlaps: penetration (every depth) and sticking (deeper than the tolerance).
   overlapping_pairs(s.pos, scene_.radius, overlap_scratch_, overlaps_);
@@ -99,7 +108,7 @@ bool MetricsAccumulator::observe_motion(const State& prev, const State& cur) {
         0.5 * ((1 - s) * (prev.pos.row(i) + prev.pos.row(j)) + s * (cur.pos.row(i) + cur.pos.row(j))).transpose();
     keep({EventKind::TunnelPair, motion_steps_, cur.t, i, j, mid.x(), mid.y()});
   }
-  return t.finite;
+  return t.finite && (!cur.rotates() || (cur.w.allFinite() && cur.angle.allFinite()));
 }
 
 void MetricsAccumulator::keep(const Event& e) {

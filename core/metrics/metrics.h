@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "metrics/events.h"
+#include "metrics/slip.h"
 #include "metrics/sticking.h"
 #include "metrics/tunnelling.h"
 #include "overlap.h"
@@ -32,6 +33,10 @@ struct MetricsConfig {
   /// finiteness check see every step, since a pass-through lasts a step. 1 for the exact record;
   /// more where the harness would cost a large share of a fast engine's step (10^5 balls). (steps)
   int sample_every = 1;
+  /// A ball touching a wall whose contact point slips slower than this rolls (metrics/slip.h).
+  /// Far above the round-off of a float32 engine at the scenes' speeds (~1e-6 m/s), far below a
+  /// visible slide. (m/s)
+  double roll_tolerance = 1e-3;
 };
 
 struct EnergySummary {
@@ -46,9 +51,18 @@ struct MomentumSummary {
   double max_abs_drift = 0;  // max |P - P0| over samples (kg m/s)
 };
 
+// Angular momentum about a fixed point, orbital plus spin (metrics/momentum.h).
+struct AngularMomentumSummary {
+  Eigen::Vector2d centre{0, 0};  // the point it is taken about (m)
+  double initial = 0, final = 0;
+  double max_abs_drift = 0;      // max |L - L0| over samples (kg m^2/s)
+};
+
 struct MetricsSummary {
   EnergySummary energy;
   MomentumSummary momentum;
+  AngularMomentumSummary angular_momentum;
+  SlipSummary slip;
   int tunnelling_wall = 0, tunnelling_pair = 0;
   int sticking_wall = 0, sticking_pair = 0;
   double penetration_max = 0;   // max overlap depth / radius (pairs: the smaller radius)
@@ -62,9 +76,9 @@ class MetricsAccumulator {
 
   // Feeds one sample; the first one is the initial state.
   void observe(const State& s);
-  // Feeds one step of motion, from `prev` to `cur` (every step, sampled or not): tunnelling. False,
-  // and nothing counted, when a position or velocity of `cur` is not finite (checked in the same
-  // sweep over the states).
+  // Feeds one step of motion, from `prev` to `cur` (every step, sampled or not): tunnelling. False
+  // when a position, velocity, angular velocity or angle of `cur` is not finite (positions and
+  // velocities are checked in the same sweep over the states).
   bool observe_motion(const State& prev, const State& cur);
   // The last observe_motion found a centre beyond the box by more than the largest diameter: a
   // ball has left the container (it fell through a wall, or the scene blew it away).
@@ -86,6 +100,7 @@ class MetricsAccumulator {
   std::vector<Event> events_;
   void keep(const Event& e);
   StickingTracker sticking_;
+  SlipTracker slip_;
   OverlapScratch overlap_scratch_;
   TunnellingCheck tunnelling_;
   std::vector<Overlap> overlaps_, deep_;

@@ -1,0 +1,53 @@
+#pragma once
+// Every metric a run's states yield, declared once: where it goes in the result JSON, its unit, its
+// definition, how the tables show it and how `ballbench regress` compares it. The result's JSON
+// writer and reader, the regression record and its default tolerances, the report's per-scene
+// columns and glossary, `ballbench run`'s table and `ballbench list --metrics` all derive from
+// metric_catalog(): adding a metric is one entry there (and the code that measures it).
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "metrics/metrics.h"
+
+namespace ballbench {
+
+struct Result;
+
+// A regression tolerance: a value passes if |now - baseline| <= abs + rel |baseline|.
+struct Tolerance {
+  double rel = 0, abs = 0;
+};
+
+struct MetricDef {
+  std::string key;   // dotted path in the result JSON, also the metric's name in the baseline: "energy.final"
+  std::string unit;  // "J", "kg m/s", "" for counts and ratios
+  // What it means, for the report's glossary and `list --metrics`; the config gives the tolerances
+  // a definition quotes.
+  std::function<std::string(const MetricsConfig&)> definition;
+  std::string column;   // its column in the report's per-scene table, or "" for none
+  std::string heading;  // its column in `ballbench run`'s table, or "" for none
+  bool ranked = false;  // smaller is better: the report marks the best run in bold
+  std::optional<Tolerance> regress;  // compared by `ballbench regress`; none: not compared
+  // The value of a run (null where the run has none: a drift of zero energy, the slip of a scene
+  // that does not rotate), and how a value read back from JSON sets it (never called with null).
+  std::function<nlohmann::json(const Result&)> get;
+  std::function<void(Result&, const nlohmann::json&)> set;
+};
+
+const std::vector<MetricDef>& metric_catalog();
+
+// The metric's value as the tables print it: integers as they are, reals to 3 significant
+// figures, vectors as (x, y), null as "-".
+std::string metric_text(const nlohmann::json& value);
+
+// Writes every metric of `r` into `j` at its key (creating the enclosing objects).
+void put_metrics(const Result& r, nlohmann::json& j);
+// Sets every metric of `r` found in `j`; a metric missing or null there keeps its default (result
+// files written before it existed).
+void take_metrics(const nlohmann::json& j, Result& r);
+
+}  // namespace ballbench
