@@ -151,6 +151,13 @@ const EngineEntry* reference_engine() {
   return nullptr;
 }
 
+const EngineEntry* converged_reference_engine() { return &find_engine("chipmunk"); }
+
+void use_reference(RunOptions& options) {
+  options.reference = reference_engine();
+  options.converged_reference = converged_reference_engine();
+}
+
 std::map<std::string, EngineRole> engine_roles() {
   // The built-ins only: an engine of an engines file is external (the default), and reading its
   // role must not start its process for the handshake.

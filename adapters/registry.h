@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine.h"
+#include "runner.h"
 
 namespace ballbench {
 
@@ -29,6 +30,14 @@ void use_engines_file(const std::string& path);
 // The engine errors are measured against (role `reference`: `exact`, event-driven), or null if
 // none is built in.
 const EngineEntry* reference_engine();
+
+// The engine whose converged run (RunOptions::converged_reference) stands in for `exact` on a scene
+// exact refuses: Chipmunk, double precision, whose single contacts are exact impulses (slide to
+// roll to 1e-15 of the closed form) and which runs friction at 1 - 3 us per ball-step.
+const EngineEntry* converged_reference_engine();
+
+// Sets `options`' reference (exact) and its stand-in for scenes exact refuses.
+void use_reference(RunOptions& options);
 
 // Engine name -> role of the built-ins, for the report (which reads result files and knows engines
 // only by name); every other engine is external.

@@ -89,6 +89,7 @@ nlohmann::json to_json(const Result& r) {
     const auto& e = r.reference;
     j["error_vs_reference"] = {
         {"reference", e.reference},
+        {"reference_dt", e.reference_dt},
         {"pos_rms_final", e.pos_rms_final},
         {"pos_rms_max", e.pos_rms_max},
         {"vel_rms_final", e.vel_rms_final},
@@ -151,6 +152,7 @@ Result result_from_json(const nlohmann::json& j) {
     auto& x = r.reference;
     x.available = true;
     x.reference = e.at("reference");
+    x.reference_dt = e.value("reference_dt", r.dt);  // files from before converged references: the run's own step
     x.pos_rms_final = num(e.at("pos_rms_final")), x.pos_rms_max = num(e.at("pos_rms_max"));
     x.vel_rms_final = num(e.at("vel_rms_final")), x.vel_rms_max = num(e.at("vel_rms_max"));
     x.energy_rel_max = num(e.at("energy_rel_max"));

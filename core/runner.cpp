@@ -109,14 +109,35 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   MetricsAccumulator metrics(scene, r.metrics_config);
   State state;
   // The reference runs in lockstep, outside the timed region; its failure ends the comparison only.
+  // A reference that cannot run the scene faithfully is never compared against: a converged run of
+  // another engine stands in, or there is none.
   std::unique_ptr<Engine> reference;
   std::optional<ReferenceErrorTracker> error;
   State ref_state;
-  if (options.reference) {
+  const EngineEntry* ref_entry = options.reference;
+  int ref_substeps = 1;
+  std::optional<Scene> converged_scene;  // the scene at a converged run's step
+  double ref_dt = scene.dt;
+  if (ref_entry) {
+    if (const std::string why = unsupported_reason(ref_entry->info, scene); !why.empty()) {
+      const EngineEntry* stand_in = options.converged_reference;
+      if (stand_in && unsupported_reason(stand_in->info, scene).empty()) {
+        ref_entry = stand_in, ref_substeps = kConvergedSubsteps;
+      } else {
+        r.skipped.push_back(fmt::format("error against the reference: {}, and no converged run stands in", why));
+        ref_entry = nullptr;
+      }
+    }
+  }
+  if (ref_entry) {
     error.emplace(scene);
+    if (ref_substeps > 1) {
+      converged_scene = scene;
+      converged_scene->dt = ref_dt = scene.dt / ref_substeps;
+    }
     try {
-      reference = options.reference->create(scene, options.reference->info.profiles.front(),
-                                            merged_settings(scene, options.reference->info.name, {}));
+      reference = ref_entry->create(converged_scene ? *converged_scene : scene, ref_entry->info.profiles.front(),
+                                    merged_settings(scene, ref_entry->info.name, {}));
       reference->read(ref_state);
     } catch (const std::exception& e) {
       error->reference_failed(0, e.what());
@@ -176,7 +197,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   auto step_reference = [&](long k, bool read) {
     if (!reference) return;
     try {
-      reference->step(scene.dt);
+      for (int k = 0; k < ref_substeps; ++k) reference->step(ref_dt);
       if (read) reference->read(ref_state);
     } catch (const std::exception& e) {
       error->reference_failed(k, e.what());
@@ -269,7 +290,11 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   if (!options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");
   if (error) {
     r.reference = error->summary();
-    r.reference.reference = options.reference->info.name;
+    // Named as it ran: "exact", or "chipmunk/tuned at dt/64" for a converged run.
+    const auto& name = ref_entry->info.name;
+    r.reference.reference =
+        ref_substeps == 1 ? name : fmt::format("{} at dt/{}", run_label(name, ref_entry->info.profiles.front()), ref_substeps);
+    r.reference.reference_dt = ref_dt;
   }
   constexpr int kMaxFinalPositions = 5000;  // a picture of more balls is a grey smear anyway
   if (scene.n() <= kMaxFinalPositions)

@@ -19,6 +19,10 @@ class TrajectoryCsv;
 // "tunnelling judged on samples every k steps: ...". `run` prints it under its table.
 inline constexpr const char* kStrideNote = "tunnelling judged on samples";
 
+// Sub-steps per step of a converged reference run: at dt / 64 a first-order engine's error is 64
+// times smaller than at dt, as Erez, Tassa and Todorov (ICRA 2015) took their reference runs.
+inline constexpr int kConvergedSubsteps = 64;
+
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
   std::string profile;           // settings profile; "" = the engine's first
@@ -27,6 +31,10 @@ struct RunOptions {
   TrajectoryCsv* trajectory = nullptr;
   // Run this engine (normally `exact`) in lockstep and report the error against it; null: none.
   const EngineEntry* reference = nullptr;
+  // Where `reference` refuses the scene (exact has no friction): this engine's first profile at
+  // dt / kConvergedSubsteps stands in, a converged run (registry.h's converged_reference_engine());
+  // null: no error is reported for such a scene.
+  const EngineEntry* converged_reference = nullptr;
   // Points kept in Result::series (energy, centre of mass, a few tracks) for the report's figures.
   int series_points = 300;
   // Whole-scene frames kept in Result::series for animations and the trajectory viewer (0: none):

@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -15,6 +16,8 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
+
+#include <fmt/format.h>
 
 #include "input_error.h"
 #include "interrupt.h"
@@ -249,6 +252,26 @@ TEST(FailedRun, AnEngineThatReadsBackNoSpinForARotatingSceneFails) {
   EXPECT_EQ(r.steps_done, 5);
   // The same engine on a scene that does not rotate owes none.
   EXPECT_EQ(run_engine(box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50)).status, "ok");
+}
+
+TEST(Reference, AConvergedRunStandsInWhereExactRefusesTheScene) {
+  const Scene s = load_scene("slide-to-roll");
+  RunOptions o;
+  o.reference = &find_engine("exact");
+  // Without a stand-in the refused reference is no comparison at all (never a frictionless run).
+  const Result alone = run_engine(s, find_engine("box2d"), o);
+  EXPECT_FALSE(alone.reference.available);
+  EXPECT_TRUE(std::any_of(alone.skipped.begin(), alone.skipped.end(), [](const std::string& note) {
+    return note.find("error against the reference: exact cannot run scene 'slide-to-roll': it needs friction") == 0;
+  })) << fmt::format("{}", fmt::join(alone.skipped, " | "));
+  o.converged_reference = &find_engine("chipmunk");
+  const Result r = run_engine(s, find_engine("box2d"), o);
+  ASSERT_TRUE(r.reference.available);
+  EXPECT_EQ(r.reference.reference, "chipmunk/tuned at dt/64");
+  EXPECT_DOUBLE_EQ(r.reference.reference_dt, s.dt / 64);
+  // Both roll at 2 m/s; box2d's first-order step lags the converged slide by about mu g dt t.
+  EXPECT_LT(r.reference.pos_rms_final, 0.02);
+  EXPECT_LT(r.reference.vel_rms_final, 1e-4);
 }
 
 TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {

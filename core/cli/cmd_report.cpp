@@ -283,7 +283,7 @@ void report(const ReportArgs& a) {
       const std::string path = fmt::format("{}/{}.json", results_dir, name);
       if (reuse(path, complete_results(path, scene, engines, seeds))) continue;
       RunOptions options;
-      options.reference = reference_engine();  // error against `exact` in every row
+      use_reference(options);  // error against `exact` (or a converged run) in every row
       // The thesis's scenes, animated and in the viewer: as many frames as a page of every run holds.
       if (name.starts_with("seed-"))
         options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));

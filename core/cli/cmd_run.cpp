@@ -147,7 +147,7 @@ void run(const RunArgs& a) {
   check_settings(scene, options.overrides);
   check_outputs(scene, a);
   check_trajectory_size(scene, engines, a);
-  if (!a.no_reference) options.reference = reference_engine();
+  if (!a.no_reference) use_reference(options);
   options.metrics.sample_every = a.sample_every;
   options.frames = a.frames;
   if (a.seeds > 1 && !scene.random_placement)

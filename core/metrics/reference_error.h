@@ -1,6 +1,7 @@
 #pragma once
-// Error against the reference: the same scene run by the event-driven `exact` engine in lockstep,
-// compared at every sample. Chaotic scenes diverge from any reference after a while, so besides the
+// Error against the reference: the same scene run by the event-driven `exact` engine in lockstep
+// (or, for a scene exact refuses, a converged run: RunOptions::converged_reference), compared at
+// every sample. Chaotic scenes diverge from any reference after a while, so besides the
 // errors the horizon is reported: the first time the position error exceeds a tolerance.
 #include <optional>
 
@@ -13,7 +14,8 @@ namespace ballbench {
 
 struct ReferenceErrorSummary {
   bool available = false;               // a reference ran alongside
-  std::string reference;                // its engine name
+  std::string reference;                // its engine name ("exact"), or "ENGINE/PROFILE at dt/K" for a converged run
+  double reference_dt = 0;              // the reference's step (s)
   double pos_rms_final = 0;             // sqrt(mean_i |x_i - x_i^ref|^2) at the last sample (m)
   double pos_rms_max = 0;               // the largest of the same over samples (m)
   double vel_rms_final = 0, vel_rms_max = 0;  // the same for velocities (m/s)
