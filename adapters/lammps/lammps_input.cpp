@@ -24,6 +24,14 @@ Plan make_plan(const Scene& scene, const LammpsSettings& s) {
   p.substeps = static_cast<int>(std::min<long>(n, std::numeric_limits<int>::max()));
   p.dem_dt = scene.dt / static_cast<double>(n);
   p.skin = s.skin >= 0 ? s.skin : 0.5 * scene.radius.minCoeff();
+  // gran/hooke's tangential force is a damper, gamma_t = gamma_n / 2 times the slip, capped by mu
+  // F_n: an elastic contact has no damping, so its friction would be ignored.
+  if (s.law == ContactLaw::hooke && scene.friction > 0 && p.model.pair.gamma_n == 0)
+    throw SceneUnsupported(fmt::format("lammps (hooke): friction {} at restitution 1 would be ignored (hooke's tangential "
+                                       "force is a damper of half the normal damping, which is 0 for an elastic "
+                                       "contact); use the hertz profile",
+                                       scene.friction),
+                           settings_record(scene, s, p));
   if (n > s.max_substeps)
     throw SceneUnsupported(fmt::format(
         "lammps ({}): scene '{}' needs {} DEM sub-steps per step (dt {} s over a DEM step of at most {:.3g} s: the "
@@ -46,7 +54,7 @@ Domain domain_for(const Scene& scene) {
 }
 
 std::string head_commands() {
-  // SI units; 2D discs (atom_style sphere with enforce2d and disc inertia); shrink-wrapped x and y
+  // SI units; 2D balls (atom_style sphere with enforce2d, the scene's inertia); shrink-wrapped x and y
   // (m: never lose an atom), periodic z as LAMMPS requires in 2D; an atom map by id, which the
   // library's gather and scatter by id need; ghost atoms carry velocities, as granular pairs need.
   return "units si\n"
@@ -73,9 +81,11 @@ std::string data_file(const Scene& scene) {
   for (int i = 0; i < scene.n(); ++i)
     out += fmt::format("{} 1 {} 1 {} {} 0\n", i + 1, num(2 * scene.radius(i)), num(scene.initial.pos(i, 0)),
                        num(scene.initial.pos(i, 1)));
+  // atom-ID vx vy vz wx wy wz: the spin about z is the ball's (0 unless it starts spinning).
   out += "\nVelocities\n\n";
   for (int i = 0; i < scene.n(); ++i)
-    out += fmt::format("{} {} {} 0 0 0 0\n", i + 1, num(scene.initial.vel(i, 0)), num(scene.initial.vel(i, 1)));
+    out += fmt::format("{} {} {} 0 0 0 {}\n", i + 1, num(scene.initial.vel(i, 0)), num(scene.initial.vel(i, 1)),
+                       num(scene.spin(i)));
   return out;
 }
 
@@ -90,6 +100,12 @@ std::string read_balls_commands(const std::string& data_path, const std::string&
   return fmt::format("read_data {}\nvariable ballbench_mass atomfile {}\nset group all mass v_ballbench_mass\n"
                      "variable ballbench_mass delete\n",
                      data_path, masses_path);
+}
+
+std::string integrator_style(Inertia inertia) {
+  // nve/sphere takes I = 2/5 m r^2 (a solid sphere); its `disc` keyword (2D only) m r^2 / 2, the
+  // only difference between the two (LAMMPS's fix nve/sphere documentation).
+  return inertia == Inertia::sphere ? "nve/sphere" : "nve/sphere disc";
 }
 
 std::string body_commands(const Scene& scene, const Plan& plan) {
@@ -113,8 +129,9 @@ std::string body_commands(const Scene& scene, const Plan& plan) {
   if (g > 0)
     out += fmt::format("fix ballbench_gravity all gravity {} vector {} {} 0\n", num(g), num(scene.gravity.x() / g),
                        num(scene.gravity.y() / g));
-  // Velocity Verlet for discs (moment m r^2 / 2); enforce2d last, after every force.
-  out += "fix ballbench_nve all nve/sphere disc\nfix ballbench_2d all enforce2d\n";
+  // Velocity Verlet for positions, velocities and spins with the scene's moment; enforce2d last,
+  // after every force.
+  out += fmt::format("fix ballbench_nve all {}\nfix ballbench_2d all enforce2d\n", integrator_style(scene.inertia));
   out += fmt::format("neighbor {} bin\nneigh_modify delay 0 every 1 check yes\n", num(plan.skin));
   out += fmt::format("timestep {}\nthermo_style custom step\nthermo 0\n", num(plan.dem_dt));
   return out;

@@ -36,12 +36,16 @@ Domain domain_for(const Scene& scene);
 std::string head_commands();
 // The box as a region, for atoms added through the library.
 std::string box_commands(const Scene& scene);
-// A LAMMPS data file of the balls (Atoms # sphere with diameters, Velocities), and the atomfile of
+// A LAMMPS data file of the balls (Atoms # sphere with diameters, Velocities with the spins about z),
+// and the atomfile of
 // masses its input reads into a variable; both in id order, ids 1 .. n in scene order.
 std::string data_file(const Scene& scene);
 std::string masses_file(const Scene& scene);
 // read_data of the data file and the masses set from the atomfile.
 std::string read_balls_commands(const std::string& data_path, const std::string& masses_path);
+// The integrator for the scene's moment of inertia: `nve/sphere disc` (m r^2 / 2, the disk) or
+// `nve/sphere` (2/5 m r^2, the sphere).
+std::string integrator_style(Inertia inertia);
 // Pair style, walls, integrator, 2D, gravity, neighbour lists, timestep: after the atoms exist.
 std::string body_commands(const Scene& scene, const Plan& plan);
 

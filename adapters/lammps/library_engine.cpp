@@ -81,6 +81,14 @@ class LibraryEngine final : public Engine {
     }
     lammps_scatter_atoms(h_, const_cast<char*>("radius"), 1, 1, radius.data());
     lammps_scatter_atoms(h_, const_cast<char*>("rmass"), 1, 1, mass.data());
+    if (rotation_) {
+      // Spins about z in one scatter of omega (3 per atom, x and y 0), as the radii and masses.
+      std::vector<double> omega(3 * n, 0.0);
+      for (int i = 0; i < n; ++i) omega[3 * i + 2] = scene.spin(i);
+      lammps_scatter_atoms(h_, const_cast<char*>("omega"), 1, 3, omega.data());
+      w_.resize(n), angle_.setZero(n);
+      for (int i = 0; i < n; ++i) w_(i) = scene.spin(i);
+    }
     lammps_commands_string(h_, body_commands(scene, plan).c_str());
     buf_.resize(3 * static_cast<size_t>(n));
   }
@@ -105,12 +113,24 @@ class LibraryEngine final : public Engine {
     lammps_command(h_, const_cast<char*>(run.c_str()));
     set_up_ = true;
     t_ += dt;
+    if (rotation_) {
+      // LAMMPS's spheres carry no orientation: the angle is the adapter's, the trapezoid of the
+      // spins at the step's two ends (exact for a constant spin; for pictures).
+      gather_omega();
+      const int n = scene_.n();
+      for (int i = 0; i < n; ++i) {
+        const double w = buf_[3 * i + 2];
+        angle_(i) += 0.5 * (w_(i) + w) * dt;
+        w_(i) = w;
+      }
+    }
   }
 
   void read(State& out) const override {
     const int n = scene_.n();
     out.t = t_;
-    out.resize(n);
+    out.resize(n, rotation_);
+    if (rotation_) out.w = w_, out.angle = angle_;  // as of the last step (the initial spins before the first)
     lammps_gather_atoms(h_, const_cast<char*>("x"), 1, 3, buf_.data());
     double z = 0;
     for (int i = 0; i < n; ++i) out.pos(i, 0) = buf_[3 * i], out.pos(i, 1) = buf_[3 * i + 1], z = std::max(z, std::abs(buf_[3 * i + 2]));
@@ -128,6 +148,8 @@ class LibraryEngine final : public Engine {
   int state_stride() const override { return s_.sample_every; }
 
  private:
+  void gather_omega() const { lammps_gather_atoms(h_, const_cast<char*>("omega"), 1, 3, buf_.data()); }
+
   Scene scene_;
   LammpsSettings s_;
   Plan plan_;
@@ -136,6 +158,8 @@ class LibraryEngine final : public Engine {
   int version_ = 0;
   bool set_up_ = false;
   double t_ = 0;
+  bool rotation_ = scene_.features().rotation;  // spins set, read back and integrated into angles
+  Eigen::VectorXd w_, angle_;  // omega z after the last step (rad/s), and its integral (rad)
   mutable std::vector<double> buf_;  // 3 per atom, in id order
   mutable double out_of_plane_ = 0;  // the largest |z| or |vz| of the last read
 };

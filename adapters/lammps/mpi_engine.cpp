@@ -41,6 +41,12 @@ class MpiEngine final : public Engine {
  public:
   MpiEngine(const Scene& scene, const LammpsSettings& s, const Plan& plan) : scene_(scene), s_(s), plan_(plan) {
     state_ = scene.initial;
+    state_.resize(scene.n(), rotation_);
+    state_.pos = scene.initial.pos, state_.vel = scene.initial.vel;
+    if (rotation_) {
+      for (int i = 0; i < scene.n(); ++i) state_.w(i) = scene.spin(i);
+      state_.angle.setZero();
+    }
   }
 
   ~MpiEngine() override {
@@ -119,8 +125,8 @@ class MpiEngine final : public Engine {
     const fs::path dump = dir_ / "sample.dump";
     // The first run sets up; later ones continue it as one long run would (pre no).
     const std::string commands = fmt::format(
-        "run {} {}post no\nwrite_dump all custom {} id x y vx vy modify sort id format float %.17g\nprint \"{}{}\"\n",
-        steps * plan_.substeps, set_up_ ? "pre no " : "", dump.string(), kMarker, done_);
+        "run {} {}post no\nwrite_dump all custom {} id x y vx vy{} modify sort id format float %.17g\nprint \"{}{}\"\n",
+        steps * plan_.substeps, set_up_ ? "pre no " : "", dump.string(), rotation_ ? " omegaz" : "", kMarker, done_);
     set_up_ = true;
     const auto deadline = ChildProcess::Clock::now() + kSampleDeadline;
     const std::string marker = kMarker + std::to_string(done_);
@@ -134,11 +140,13 @@ class MpiEngine final : public Engine {
       throw std::runtime_error(fmt::format("lammps: {} (at the sample of step {}); lmp's output ended: {}", e.what(), done_,
                                            fmt::join(output_, " | ")));
     }
-    read_dump(dump);
+    read_dump(dump, steps);
   }
 
-  // ITEM: TIMESTEP / NUMBER OF ATOMS / BOX BOUNDS (3 lines) / ATOMS id x y vx vy, sorted by id.
-  void read_dump(const fs::path& path) {
+  // ITEM: TIMESTEP / NUMBER OF ATOMS / BOX BOUNDS (3 lines) / ATOMS id x y vx vy [omegaz], sorted
+  // by id, `steps` after the sample before. LAMMPS's spheres carry no orientation: the angle is the
+  // adapter's, the trapezoid of the spins of this sample and the one before (for pictures).
+  void read_dump(const fs::path& path, long steps) {
     std::ifstream in(path);
     std::string line;
     long atoms = -1;
@@ -152,6 +160,12 @@ class MpiEngine final : public Engine {
       long id = 0;
       if (!(in >> id >> state_.pos(i, 0) >> state_.pos(i, 1) >> state_.vel(i, 0) >> state_.vel(i, 1)) || id != i + 1)
         throw std::runtime_error(fmt::format("lammps: {}: atom line {} unreadable or out of id order", path.string(), i + 1));
+      if (rotation_) {
+        double w = 0;
+        if (!(in >> w)) throw std::runtime_error(fmt::format("lammps: {}: atom line {} has no omegaz", path.string(), i + 1));
+        state_.angle(i) += 0.5 * (state_.w(i) + w) * static_cast<double>(steps) * scene_.dt;
+        state_.w(i) = w;
+      }
     }
     state_.t = static_cast<double>(done_) * scene_.dt;
   }
@@ -159,6 +173,7 @@ class MpiEngine final : public Engine {
   Scene scene_;
   LammpsSettings s_;
   Plan plan_;
+  bool rotation_ = scene_.features().rotation;  // omega z dumped, read back and integrated into angles
   fs::path dir_;
   bool owned_dir_ = false;
   std::unique_ptr<ChildProcess> child_;

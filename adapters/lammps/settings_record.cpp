@@ -1,5 +1,7 @@
 #include "lammps/settings_record.h"
 
+#include <fmt/format.h>
+
 namespace ballbench::lammps {
 namespace {
 
@@ -25,7 +27,14 @@ nlohmann::json settings_record(const Scene& scene, const LammpsSettings& s, cons
                             {"substeps", plan.substeps},
                             {"skin", plan.skin},
                             {"xmu", scene.friction},
-                            {"inertia", "disc (m r^2 / 2): fix nve/sphere disc"}};
+                            {"inertia", fmt::format("{} ({}): fix {}", inertia_name(scene.inertia),
+                                                    scene.inertia == Inertia::sphere ? "2/5 m r^2" : "m r^2 / 2",
+                                                    integrator_style(scene.inertia))}};
+  // LAMMPS's spheres carry no orientation: the angle read back is the adapter's integral of the
+  // spins read back (trapezoid), for pictures.
+  if (scene.features().rotation)
+    derived["angle"] = s.ranks > 1 ? "adapter's trapezoid integral of omega z between samples (sample_every steps)"
+                                   : "adapter's trapezoid integral of omega z read after every step";
   if (m.law == ContactLaw::hertz) {
     derived["hertz_damping"] = m.hertz_damping;            // g = gamma_n d*^(3/2) sqrt(R) / v
     derived["hertz_restitution"] = m.hertz_restitution;    // of one contact at the design speed

@@ -54,7 +54,8 @@ struct Suite {
 
 Suite quick_suite() {
   Suite s;
-  s.scenes = {"seed-box", "seed-bowl"};
+  // The seed scenes, and friction: a ball sliding to roll, and rough spinning balls in a box.
+  s.scenes = {"seed-box", "seed-bowl", "slide-to-roll", "rough-box"};
   s.seeds = 3;
   s.sweep_scenes = {"seed-box"};
   s.stress_scenes = {"seed-box"};
@@ -75,7 +76,8 @@ Suite quick_suite() {
 
 Suite full_suite() {
   Suite s;
-  s.scenes = {"seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile"};
+  s.scenes = {"seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile", "slide-to-roll",
+              "rough-box"};
   s.seeds = 10;
   s.sweep_scenes = {"seed-box", "seed-bowl"};
   s.stress_scenes = {"seed-box", "seed-bowl"};
