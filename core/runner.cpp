@@ -182,7 +182,13 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   const auto spins_missing = [&](const State& s) {
     return rotation && (s.w.size() != scene.n() || s.angle.size() != scene.n());
   };
-  engine->read(state);
+  try {
+    engine->read(state);
+  } catch (const std::exception& e) {
+    r.status = "failed";
+    r.error = fmt::format("reading the initial state threw: {}", e.what());
+    return r;
+  }
   if (spins_missing(state)) {
     r.status = "failed";
     r.error = "the engine reads back no angular velocities and angles for a scene that rotates";
@@ -229,7 +235,13 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     }
     // Read into a scratch state and keep it only if finite: a run that blew up ends with its last
     // good state, from which the final figures (positions, jitter, speed distribution) come.
-    engine->read(next);
+    try {
+      engine->read(next);
+    } catch (const std::exception& e) {
+      r.status = "failed";
+      r.error = fmt::format("step {}: reading the state threw: {}", k, e.what());
+      break;
+    }
     if (spins_missing(next)) {
       r.status = "failed";
       r.error = fmt::format("step {}: the engine read back no angular velocities and angles", k);

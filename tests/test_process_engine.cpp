@@ -3,11 +3,15 @@
 // must be one clear error in its own row, never a hang, while other rows complete.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <stdlib.h>
+
+#include <fmt/format.h>
 
 #include "cli_runner.h"
 #include "input_error.h"
@@ -16,6 +20,7 @@
 #include "process/process_engine.h"
 #include "registry.h"
 #include "run_engines.h"
+#include "runner.h"
 #include "scene_loader.h"
 
 namespace ballbench {
@@ -175,6 +180,177 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   EXPECT_TRUE(has(results[1].error, "the misbehaving engine fell over")) << results[1].error;
   EXPECT_EQ(results[2].status, "timed out");
   EXPECT_EQ(results[3].status, "ok");
+}
+
+// Rotation through the protocol: a scene that rotates (friction, or a ball that starts spinning)
+// is sent with its inertia and each ball's spin, and its states carry w and angle back.
+
+// One ball of radius 0.25 m and mass 1 kg sliding at 3 m/s on the floor of a box, friction 0.5:
+// Coulomb friction slows it until it rolls at v0 / (1 + k) (I = k m r^2), from t = 0.2 s on.
+Scene slide_to_roll(const std::string& inertia) {
+  return parse_scene(R"(
+name = "slide-to-roll-process"
+dt = 0.01
+duration = 1.5
+gravity = [0.0, -9.81]
+restitution = 0.0
+friction = 0.5
+inertia = ")" + inertia + R"("
+[container]
+kind = "box"
+min = [0.0, 0.0]
+max = [10.0, 4.0]
+[[ball]]
+pos = [1.0, 0.25]
+vel = [3.0, 0.0]
+radius = 0.25
+mass = 1.0
+)",
+                     "test:slide-to-roll", 0);
+}
+
+// No friction and no gravity: a ball at rest spinning at 3 rad/s, which nothing can change.
+Scene spinning_ball() {
+  return parse_scene(R"(
+name = "spin-process"
+dt = 0.01
+duration = 1.0
+gravity = [0.0, 0.0]
+restitution = 1.0
+friction = 0.0
+[container]
+kind = "box"
+min = [0.0, 0.0]
+max = [4.0, 4.0]
+[[ball]]
+pos = [2.0, 2.0]
+radius = 0.25
+mass = 1.0
+spin = 3.0
+)",
+                     "test:spin", 0);
+}
+
+// The Node engines that declare friction, skipping those that cannot run here.
+std::vector<const EngineEntry*> node_engines_with_friction() {
+  std::vector<const EngineEntry*> out;
+  for (const std::string name : {"rapier", "matter", "planck"}) {
+    const EngineEntry& e = find_engine(name);
+    if (e.info.unavailable.empty() && e.info.caps.friction) out.push_back(&e);
+  }
+  return out;
+}
+
+// The final rolling speed against v0 / (1 + k), every Node engine and profile. matter cannot meet
+// 1%: its friction is not Coulomb's (it stops the slide in 0.06 s, not 0.2 s, reaching 2.00 m/s),
+// and its ball is a polygon whose vertices knock off speed as it rolls (26 sides stock, 100 tuned).
+// Measured final speeds (disk, sphere; 2 and 2.1429 m/s wanted): rapier tuned 1.99930, 2.14212,
+// stock 1.99956, 2.14240; planck (both) 1.98493, 2.12877 (-0.75%, -0.66%: Box2D's contact point
+// sits mid-overlap, 2.5 mm inside the ball, so it rolls on r - 2.5 mm); matter tuned 1.7076,
+// 1.8495 (-14.6%, -13.7%), stock 1.2012, 1.3006 (-40%, -39%): expected failures, which fail the
+// test if matter starts meeting 1%.
+TEST(ProcessEngine, NodeEnginesSlideToRollAtTheScenesInertia) {
+  const auto engines = node_engines_with_friction();
+  if (engines.empty()) GTEST_SKIP() << "no Node engine is available here";
+  for (const EngineEntry* e : engines)
+    for (const std::string& profile : e->info.profiles)
+      for (const auto& [inertia, k] : {std::pair{"disk", 0.5}, {"sphere", 0.4}}) {
+        const std::string label = e->info.name + "/" + profile + " " + inertia;
+        const Scene scene = slide_to_roll(inertia);
+        ASSERT_TRUE(scene.features().rotation);
+        const bool expected_failure = e->info.name == "matter";
+        // Through the runner: it accepts the states (w and angle of every ball) and the engine
+        // records the inertia it built.
+        RunOptions o;
+        o.profile = profile;
+        const Result r = run_engine(scene, *e, o);
+        EXPECT_EQ(r.status, "ok") << label << ": " << r.error;
+        EXPECT_EQ(r.settings["derived"]["moment_of_inertia"], fmt::format("k m r^2 ({}, k = {})", inertia, k)) << label;
+        // Stepped here, to read the states.
+        const auto engine = e->create(scene, profile, merged_settings(scene, e->info.name, {}));
+        State st;
+        engine->read(st);
+        ASSERT_EQ(st.w.size(), 1) << label;
+        ASSERT_EQ(st.angle.size(), 1) << label;
+        EXPECT_EQ(st.w(0), 0) << label;
+        EXPECT_EQ(st.angle(0), 0) << label;
+        double turned = 0;  // the sum of w dt: the angle it should report
+        for (long step = 0; step < scene.steps(); ++step) {
+          engine->step(scene.dt);
+          engine->read(st);
+          ASSERT_EQ(st.w.size(), 1) << label;
+          ASSERT_EQ(st.angle.size(), 1) << label;
+          turned += st.w(0) * scene.dt;
+        }
+        const double v = st.vel.row(0).norm(), want = 3.0 / (1 + k), r0 = scene.radius(0);
+        const double error = std::abs(v / want - 1);
+        std::printf("slide to roll %s: final speed %.6g m/s (want %.6g, error %.3g), w %.6g rad/s, angle %.6g rad%s\n",
+                    label.c_str(), v, want, error, st.w(0), st.angle(0), expected_failure ? " (expected failure)" : "");
+        if (expected_failure) {
+          EXPECT_GT(error, 0.01) << label << " now rolls at v0 / (1 + k) within 1%: update this test";
+        } else {
+          EXPECT_LE(error, 0.01) << label << ": final speed " << v << " m/s, want " << want;
+          // Rolling: clockwise for a ball moving to +x, w r = -v (planck: 1%, rolling on r - 2.5 mm).
+          EXPECT_NEAR(st.w(0) * r0, -v, 0.02 * v) << label;
+        }
+        // The angle accumulates (rapier's own wraps at pi: the driver unwraps it), counter-clockwise.
+        EXPECT_LT(st.angle(0), -2 * M_PI) << label;
+        EXPECT_NEAR(st.angle(0), turned, 0.01 * std::abs(turned)) << label;
+      }
+}
+
+// A spin nothing touches stays, and the angle grows by it: w = 3 rad/s throughout, angle 3 rad at
+// t = 1 s, within 1e-6 relative for the double engines (measured: ~1e-15). rapier keeps its
+// rotation as a unit complex number in float32, rounded at each of its substeps: measured
+// relative errors of the angle at t = 1 s, 4.6e-6 (tuned, 8 substeps a step) and 1.9e-5 (stock,
+// 4), so it is held to float32's 1e-4, as in the conformance suite.
+TEST(ProcessEngine, NodeEnginesKeepASpinAndTurnByIt) {
+  auto engines = node_engines_with_friction();
+  const EngineEntry noop = process_engine_entry(spec({"node", kSource + "/adapters/node/noop.js"}));
+  if (noop.info.unavailable.empty() && noop.info.caps.friction) engines.push_back(&noop);  // it declares friction too
+  if (engines.empty()) GTEST_SKIP() << "no Node engine is available here";
+  const Scene scene = spinning_ball();
+  ASSERT_TRUE(scene.features().rotation);
+  EXPECT_EQ(scene.spin(0), 3.0);
+  for (const EngineEntry* e : engines)
+    for (const std::string& profile : e->info.profiles) {
+      const std::string label = e->info.name + "/" + profile;
+      const double tolerance = e->info.name == "rapier" ? 1e-4 : 1e-6;
+      const auto engine = e->create(scene, profile, merged_settings(scene, e->info.name, {}));
+      State st;
+      engine->read(st);
+      ASSERT_EQ(st.w.size(), 1) << label;
+      EXPECT_NEAR(st.w(0), 3.0, 3.0 * tolerance) << label << " at t = 0";
+      EXPECT_EQ(st.angle(0), 0) << label;
+      for (long step = 0; step < scene.steps(); ++step) {
+        engine->step(scene.dt);
+        engine->read(st);
+        ASSERT_EQ(st.w.size(), 1) << label;
+        EXPECT_NEAR(st.w(0), 3.0, 3.0 * tolerance) << label << " at step " << step + 1;
+      }
+      EXPECT_NEAR(st.t, 1.0, 1e-9) << label;
+      std::printf("spin %s: w %.9g rad/s, angle at t = 1 s %.12g rad (relative error %.3g)\n", label.c_str(), st.w(0),
+                  st.angle(0), std::abs(st.angle(0) / 3.0 - 1));
+      EXPECT_NEAR(st.angle(0), 3.0, 3.0 * tolerance) << label;
+      EXPECT_NEAR(st.pos(0, 0), 2.0, 1e-6) << label;  // spinning in place
+      EXPECT_NEAR(st.pos(0, 1), 2.0, 1e-6) << label;
+    }
+}
+
+// A state without w (or angle) for a scene that rotates is a clear error in the run's row; the same
+// engine sending both passes, and a scene that does not rotate needs neither.
+TEST(ProcessEngine, ARotatingScenesStateWithoutWIsRefused) {
+  const Scene scene = slide_to_roll("disk");
+  const Result bad = run_engine(scene, misbehaving("no-w"), steps(5));  // w goes missing at step 3
+  EXPECT_EQ(bad.status, "failed");
+  EXPECT_TRUE(has(bad.error, "step 3 threw")) << bad.error;
+  EXPECT_TRUE(has(bad.error, "sent a state without 'w' in reply to 'step'")) << bad.error;
+  EXPECT_TRUE(has(bad.error, "the scene rotates")) << bad.error;
+  EXPECT_EQ(bad.steps_done, 2);
+  const Result good = run_engine(scene, misbehaving("none"), steps(5));
+  EXPECT_EQ(good.status, "ok") << good.error;
+  const Result flat = run_engine(box(), misbehaving("no-w"), steps(5));
+  EXPECT_EQ(flat.status, "ok") << flat.error;
 }
 
 // The project's engines.toml: the Node engines appear in `ballbench list` with their pinned

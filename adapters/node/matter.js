@@ -3,7 +3,7 @@
 // engine process protocol. Scene mapping, units and both profiles: README.md beside this file.
 const fs = require('fs');
 const path = require('path');
-const { serve, applySettings, wallRects, SettingsError } = require('./protocol');
+const { serve, applySettings, wallRects, SettingsError, inertiaLabel } = require('./protocol');
 
 const PACKAGE = 'matter-js';
 
@@ -69,7 +69,8 @@ async function load(scene, profileName, overrides) {
   });
   // Every body gets the scene's e (pairs take the larger) and mu (pairs take the smaller), so
   // each contact uses the scene's values; no air friction (matter's default is 0.01 per step).
-  const e = scene.restitution, mu = scene.friction;
+  const e = scene.restitution, mu = scene.friction, k = scene.inertia_factor;
+  const locked = s.lock_rotation_without_friction && mu === 0;  // no contact can change a spin
   const common = { restitution: e, friction: mu, frictionStatic: 1, frictionAir: 0, slop: s.slop };
   const bodies = [];
   let wall = null;
@@ -83,13 +84,18 @@ async function load(scene, profileName, overrides) {
     const r = b.radius[i], m = b.mass[i];
     const body = M.Bodies.circle(b.x[i] * L, b.y[i] * L, r * L, Object.assign({}, common), s.circle_max_sides);
     M.Body.setMass(body, m);
-    // A solid disc, not matter's 4x polygon estimate; or no spin at all (see the profile).
-    M.Body.setInertia(body, s.lock_rotation_without_friction && mu === 0 ? Infinity : 0.5 * m * r * r * L * L);
+    // The scene's k m r^2 (a disc: k = 1/2; in units: r is r L), not matter's 4x polygon estimate;
+    // or, frictionless in tuned, an infinite moment: no contact changes the spin (see the profile).
+    M.Body.setInertia(body, locked ? Infinity : k * m * r * r * L * L);
     // Velocity is the displacement per step: position - positionPrev, in units per step of dtMs.
     body.deltaTime = dtMs;
     body.positionPrev.x = body.position.x - b.vx[i] * scene.dt * L;
     body.positionPrev.y = body.position.y - b.vy[i] * scene.dt * L;
     body.velocity.x = b.vx[i] * scene.dt * L, body.velocity.y = b.vy[i] * scene.dt * L;
+    // Angular velocity likewise: angle - anglePrev per step, w dt (an angle needs no scaling).
+    const w = b.w ? b.w[i] : 0;
+    body.anglePrev = body.angle - w * scene.dt;
+    body.angularVelocity = w * scene.dt, body.angularSpeed = Math.abs(body.angularVelocity);
     bodies.push(body);
   }
   M.Composite.add(engine.world, bodies);
@@ -101,13 +107,16 @@ async function load(scene, profileName, overrides) {
       lastDt = dt;
       M.Engine.update(engine, dt * 1000);
     },
-    read(x, y, vx, vy) {
+    read(x, y, vx, vy, w, angle) {
       const k = 1 / (lastDt * L);
       for (let i = 0; i < bodies.length; ++i) {
         const p = bodies[i].position, q = bodies[i].positionPrev;
         x[i] = p.x / L, y[i] = p.y / L;
         vx[i] = (p.x - q.x) * k, vy[i] = (p.y - q.y) * k;
       }
+      if (w)  // counter-clockwise: the scene's axes, y up, are matter's (gravity is the scene's)
+        for (let i = 0; i < bodies.length; ++i)
+          w[i] = (bodies[i].angle - bodies[i].anglePrev) / lastDt, angle[i] = bodies[i].angle;
     },
     settings: Object.assign({}, s, {
       derived: {
@@ -122,7 +131,7 @@ async function load(scene, profileName, overrides) {
         friction_per_body: mu,
         friction_static: 1,
         friction_air: 0,
-        moment_of_inertia: s.lock_rotation_without_friction && mu === 0 ? 'Infinity (frictionless: no spin)' : 'm r^2 / 2',
+        moment_of_inertia: locked ? 'Infinity (frictionless: spin unchanged)' : inertiaLabel(scene),
       },
     }),
   };

@@ -3,7 +3,7 @@
 // process protocol. Profiles as the Box2D adapter's (adapters/box2d/README.md): README.md here.
 const fs = require('fs');
 const path = require('path');
-const { serve, applySettings, wallRects, SettingsError } = require('./protocol');
+const { serve, applySettings, wallRects, SettingsError, inertiaLabel } = require('./protocol');
 
 const PACKAGE = 'planck';
 
@@ -57,24 +57,28 @@ async function load(scene, profileName, overrides) {
     for (const [cx, cy, hx, hy] of wall.rects)
       ground.createFixture(new P.Box(hx, hy, { x: cx, y: cy }, 0), { restitution: e, friction: mu });
   }
-  const b = scene.balls, bodies = [];
+  const b = scene.balls, bodies = [], k = scene.inertia_factor;
   for (let i = 0; i < b.n; ++i) {
-    const r = b.radius[i];
+    const r = b.radius[i], m = b.mass[i];
     const body = world.createDynamicBody({ position: { x: b.x[i], y: b.y[i] }, linearVelocity: { x: b.vx[i], y: b.vy[i] },
-                                           bullet: s.bullets, allowSleep: s.allow_sleep });
-    // A disc of density m / (pi r^2): mass m and moment m r^2 / 2, as Box2D computes them.
-    body.createFixture(new P.Circle(r), { density: b.mass[i] / (Math.PI * r * r), restitution: e, friction: mu });
+                                           angularVelocity: b.w ? b.w[i] : 0, bullet: s.bullets, allowSleep: s.allow_sleep });
+    // A disc of density m / (pi r^2), then the mass data set outright: mass exactly m (not the
+    // density times pi r^2 back) and moment k m r^2 about the centre (a disc: k = 1/2, Box2D's own).
+    body.createFixture(new P.Circle(r), { density: m / (Math.PI * r * r), restitution: e, friction: mu });
+    body.setMassData({ mass: m, center: { x: 0, y: 0 }, I: k * m * r * r });
     bodies.push(body);
   }
   return {
     n: b.n,
     t: 0,
     step(dt) { world.step(dt, s.velocity_iterations, s.position_iterations); },
-    read(x, y, vx, vy) {
+    read(x, y, vx, vy, w, angle) {
       for (let i = 0; i < bodies.length; ++i) {
         const p = bodies[i].getPosition(), v = bodies[i].getLinearVelocity();
         x[i] = p.x, y[i] = p.y, vx[i] = v.x, vy[i] = v.y;
       }
+      if (w)  // planck's angle accumulates from 0 (counter-clockwise), as Box2D's
+        for (let i = 0; i < bodies.length; ++i) w[i] = bodies[i].getAngularVelocity(), angle[i] = bodies[i].getAngle();
     },
     settings: Object.assign({}, s, {
       derived: {
@@ -85,6 +89,7 @@ async function load(scene, profileName, overrides) {
         wall_half_thickness: wall ? wall.halfThickness : null,
         restitution_per_fixture: e,
         friction_per_fixture: mu,
+        moment_of_inertia: inertiaLabel(scene),
       },
     }),
   };

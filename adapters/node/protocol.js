@@ -32,18 +32,30 @@ function applySettings(engine, defaults, overrides) {
   return out;
 }
 
-// The state block: n ids, then n x, n y, n vx, n vy (doubles, little-endian: the machine's order).
+const FIELDS = ['id', 'x', 'y', 'vx', 'vy'];
+const ROTATION_FIELDS = ['id', 'x', 'y', 'vx', 'vy', 'w', 'angle'];
+
+// The state block: n ids, then n x, n y, n vx, n vy (doubles, little-endian: the machine's order),
+// and for a scene that rotates (scene.rotation) n w (rad/s) and n angles (rad) after them.
 function stateReply(world, extra) {
-  const n = world.n;
-  const block = new Float64Array(5 * n);
+  const n = world.n, fields = world.rotation ? ROTATION_FIELDS : FIELDS;
+  const block = new Float64Array(fields.length * n);
   for (let i = 0; i < n; ++i) block[i] = i;  // bodies are kept in scene order
-  world.read(block.subarray(n, 2 * n), block.subarray(2 * n, 3 * n), block.subarray(3 * n, 4 * n), block.subarray(4 * n));
-  const reply = Object.assign({ ok: true }, extra, { state: { n, t: world.t, fields: ['id', 'x', 'y', 'vx', 'vy'] } });
+  const col = (k) => block.subarray(k * n, (k + 1) * n);
+  if (world.rotation) world.read(col(1), col(2), col(3), col(4), col(5), col(6));
+  else world.read(col(1), col(2), col(3), col(4));
+  const reply = Object.assign({ ok: true }, extra, { state: { n, t: world.t, fields } });
   return [reply, Buffer.from(block.buffer, block.byteOffset, block.byteLength)];
 }
 
+// The moment of inertia a scene asks for, for the settings: 'k m r^2 (disk, k = 0.5)'.
+function inertiaLabel(scene) {
+  return `k m r^2 (${scene.inertia}, k = ${scene.inertia_factor})`;
+}
+
 // driver: { hello(): handshake fields, or throws (unavailable); async load(scene, profile,
-// settings): a world { n, t, step(dt), read(x, y, vx, vy), settings } }.
+// settings): a world { n, t, rotation, step(dt), read(x, y, vx, vy[, w, angle]), settings } }.
+// `rotation` is the scene's (friction or spin): read then fills the angular velocities and angles.
 function serve(driver) {
   let world = null;
   const handle = async (msg) => {
@@ -55,11 +67,15 @@ function serve(driver) {
         } catch (e) {
           return send({ ok: false, kind: 'unavailable', error: e.message });
         }
-        return send(Object.assign({ ok: true, protocol: PROTOCOL, state_fields: ['id', 'x', 'y', 'vx', 'vy'] }, info));
+        // The columns it may send: w and angle only for a scene that rotates, which an engine
+        // without friction is never sent.
+        const fields = info.capabilities && info.capabilities.friction === false ? FIELDS : ROTATION_FIELDS;
+        return send(Object.assign({ ok: true, protocol: PROTOCOL, state_fields: fields }, info));
       }
       case 'scene':
         world = null;
         world = await driver.load(msg.scene, msg.profile, msg.settings || {});
+        world.rotation = !!msg.scene.rotation;
         return send({ ok: true, settings: world.settings });
       case 'step': {
         if (!world) throw new Error('step before any scene');
@@ -117,4 +133,4 @@ function wallRects(container) {
   };
 }
 
-module.exports = { serve, applySettings, SettingsError, wallRects };
+module.exports = { serve, applySettings, SettingsError, wallRects, inertiaLabel };

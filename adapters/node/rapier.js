@@ -3,7 +3,7 @@
 // engine process protocol. Scene mapping and both profiles: README.md beside this file.
 const fs = require('fs');
 const path = require('path');
-const { serve, applySettings, wallRects, SettingsError } = require('./protocol');
+const { serve, applySettings, wallRects, SettingsError, inertiaLabel } = require('./protocol');
 
 const PACKAGE = '@dimforge/rapier2d-compat';
 
@@ -73,29 +73,42 @@ async function load(scene, profileName, overrides) {
           R.ColliderDesc.cuboid(hx, hy).setTranslation(cx, cy).setRestitution(e).setFriction(mu).setRestitutionCombineRule(rule),
           ground);
   }
-  const b = scene.balls, bodies = [];
+  const b = scene.balls, bodies = [], k = scene.inertia_factor;
   for (let i = 0; i < b.n; ++i) {
     const body = world.createRigidBody(R.RigidBodyDesc.dynamic()
                                             .setTranslation(b.x[i], b.y[i])
                                             .setLinvel(b.vx[i], b.vy[i])
+                                            .setAngvel(b.w ? b.w[i] : 0)
                                             .setCcdEnabled(s.ccd)
                                             .setCanSleep(s.allow_sleep));
     const r = b.radius[i], m = b.mass[i];
-    // A solid disc: mass m, moment m r^2 / 2 about its centre.
-    world.createCollider(R.ColliderDesc.ball(r).setMassProperties(m, { x: 0, y: 0 }, 0.5 * m * r * r)
+    // The collider's mass properties set outright, not from a density: mass m, moment k m r^2
+    // about its centre (a disc: k = 1/2).
+    world.createCollider(R.ColliderDesc.ball(r).setMassProperties(m, { x: 0, y: 0 }, k * m * r * r)
                              .setRestitution(e).setFriction(mu).setRestitutionCombineRule(rule), body);
     bodies.push(body);
   }
+  // Rapier's rotation() is an angle in (-pi, pi]; the state's accumulates from 0, so each read
+  // unwraps it against the last (exact while a ball turns less than half a turn between reads:
+  // the harness reads after every step).
+  const angles = new Float64Array(b.n);
   const p = world.integrationParameters;
   return {
     n: b.n,
     t: 0,
     step() { world.step(); },
-    read(x, y, vx, vy) {
+    read(x, y, vx, vy, w, angle) {
       for (let i = 0; i < bodies.length; ++i) {
         const pos = bodies[i].translation(), v = bodies[i].linvel();
         x[i] = pos.x, y[i] = pos.y, vx[i] = v.x, vy[i] = v.y;
       }
+      if (w)
+        for (let i = 0; i < bodies.length; ++i) {
+          w[i] = bodies[i].angvel();
+          const turn = bodies[i].rotation() - angles[i];
+          angles[i] += turn - 2 * Math.PI * Math.round(turn / (2 * Math.PI));
+          angle[i] = angles[i];
+        }
     },
     settings: Object.assign({}, s, {
       derived: {
@@ -107,7 +120,7 @@ async function load(scene, profileName, overrides) {
         restitution_per_collider: e,
         friction_per_collider: mu,
         friction_combine: 'average',
-        moment_of_inertia: 'm r^2 / 2',
+        moment_of_inertia: inertiaLabel(scene),
       },
     }),
   };

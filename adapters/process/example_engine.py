@@ -25,6 +25,8 @@ class World:
         self.n, self.t = b["n"], 0.0
         self.x, self.y, self.vx, self.vy = list(b["x"]), list(b["y"]), list(b["vx"]), list(b["vy"])
         self.r, self.m = b["radius"], b["mass"]
+        # No rotation: the handshake declares friction False, so the harness never sends a scene
+        # that rotates, and the scene's inertia, rotation and each ball's spin "w" are ignored.
         self.g, self.e = scene["gravity"], scene["restitution"]
         c = scene["container"]
         self.box = (c["min"], c["max"]) if c["kind"] == "box" else None

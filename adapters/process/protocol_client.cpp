@@ -102,13 +102,19 @@ nlohmann::json ProtocolClient::load_scene(const Scene& scene, const std::string&
   if (scene.container.kind == ContainerKind::Box)
     container["min"] = {scene.container.min.x(), scene.container.min.y()},
     container["max"] = {scene.container.max.x(), scene.container.max.y()};
-  const nlohmann::json balls = {{"n", scene.n()},
+  rotation_ = scene.features().rotation;
+  nlohmann::json balls = {{"n", scene.n()},
                                 {"x", column(scene.initial.pos.col(0))},
                                 {"y", column(scene.initial.pos.col(1))},
                                 {"vx", column(scene.initial.vel.col(0))},
                                 {"vy", column(scene.initial.vel.col(1))},
                                 {"radius", column(scene.radius)},
                                 {"mass", column(scene.mass)}};
+  if (rotation_) {  // each ball's initial spin (rad/s); none for a scene that does not rotate
+    Eigen::VectorXd spins(scene.n());
+    for (int i = 0; i < scene.n(); ++i) spins(i) = scene.spin(i);
+    balls["w"] = column(spins);
+  }
   const nlohmann::json message = {
       {"op", "scene"},
       {"profile", profile},
@@ -119,6 +125,9 @@ nlohmann::json ProtocolClient::load_scene(const Scene& scene, const std::string&
         {"gravity", {scene.gravity.x(), scene.gravity.y()}},
         {"restitution", scene.restitution},
         {"friction", scene.friction},
+        {"inertia", inertia_name(scene.inertia)},
+        {"inertia_factor", inertia_factor(scene.inertia)},
+        {"rotation", rotation_},
         {"container", container},
         {"balls", balls}}}};
   n_ = scene.n();
@@ -180,15 +189,24 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
   for (const char* need : {"id", "x", "y", "vx", "vy"})
     if (col(need) == static_cast<long>(fields.size()))
       throw child_.failure(fmt::format("sent a state without '{}' in reply to '{}'", need, op));
+  // A scene that rotates needs every ball's angular velocity and angle back (PROTOCOL.md, States).
+  if (rotation_)
+    for (const char* need : {"w", "angle"})
+      if (col(need) == static_cast<long>(fields.size()))
+        throw child_.failure(fmt::format(
+            "sent a state without '{}' in reply to '{}'; the scene rotates (friction or spin), so its states need 'w' and 'angle'",
+            need, op));
   block_.resize(fields.size() * static_cast<size_t>(n));
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
   child_.read_bytes(block_.data(), block_.size() * sizeof(double), deadline);
   out.t = t;
-  out.resize(static_cast<int>(n));
+  out.resize(static_cast<int>(n), rotation_);
   const double* ids = block_.data() + col("id") * n;
   const double *x = block_.data() + col("x") * n, *y = block_.data() + col("y") * n;
   const double *vx = block_.data() + col("vx") * n, *vy = block_.data() + col("vy") * n;
+  const double *w = rotation_ ? block_.data() + col("w") * n : nullptr;
+  const double *angle = rotation_ ? block_.data() + col("angle") * n : nullptr;
   std::vector<char> seen(static_cast<size_t>(n), 0);
   for (long k = 0; k < n; ++k) {
     const double id = ids[k];
@@ -198,6 +216,7 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
     const long i = static_cast<long>(id);
     seen[static_cast<size_t>(i)] = 1;
     out.pos(i, 0) = x[k], out.pos(i, 1) = y[k], out.vel(i, 0) = vx[k], out.vel(i, 1) = vy[k];
+    if (rotation_) out.w(i) = w[k], out.angle(i) = angle[k];
   }
 }
 

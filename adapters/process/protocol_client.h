@@ -50,6 +50,7 @@ class ProtocolClient {
   ChildProcess child_;
   double timeout_s_;
   int n_ = 0;  // balls in the scene loaded
+  bool rotation_ = false;  // the scene loaded rotates: states carry w and angle
   std::vector<double> block_;  // the last state's doubles
 };
 

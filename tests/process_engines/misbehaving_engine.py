@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """A process engine that misbehaves on purpose (tests/test_process_engine.cpp): balls stay put,
-and at step 3 it does what argv[1] names. Test-only: never in an engines file."""
+and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
+ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
+Test-only: never in an engines file."""
 import array
 import json
 import sys
@@ -18,7 +20,7 @@ def send(reply, block=b""):
 if mode == "no-hello":
     sys.stderr.write("misbehaving engine: refusing to start\n")
     sys.exit(4)
-n, steps, balls = 0, 0, None
+n, steps, balls, rotation = 0, 0, None, False
 for line in sys.stdin.buffer:
     msg = json.loads(line)
     if msg["op"] == "hello":
@@ -33,6 +35,7 @@ for line in sys.stdin.buffer:
             continue
         balls = msg["scene"]["balls"]
         n = balls["n"]
+        rotation = msg["scene"].get("rotation", False)
         send({"ok": True, "settings": {"level": msg["settings"].get("level", 0), "mode": mode}})
     else:
         if msg["op"] == "step":
@@ -65,7 +68,14 @@ for line in sys.stdin.buffer:
         for c in ("x", "y"):
             block.extend(balls[c])
         block.extend([0.0] * (2 * n))  # nothing moves
-        reply = {"ok": True, "state": {"n": n, "t": 0.0, "fields": ["id", "x", "y", "vx", "vy"]}}
+        fields = ["id", "x", "y", "vx", "vy"]
+        if rotation:
+            if mode != "no-w" or steps < 3:
+                fields.append("w")
+                block.extend(balls["w"])
+            fields.append("angle")
+            block.extend([0.0] * n)
+        reply = {"ok": True, "state": {"n": n, "t": 0.0, "fields": fields}}
         if msg["op"] == "step":
             reply["step_s"] = 0.0
         send(reply, block.tobytes())
