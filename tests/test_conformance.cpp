@@ -306,21 +306,8 @@ double seed_box_escapes(const std::string& engine, const std::string& profile) {
 // force). An engine without friction must refuse the scene: figure 0 if it does, infinite if it
 // runs it.
 double slide_to_roll(const std::string& engine, const std::string& profile, const char* inertia) {
-  const Scene s = scene_from(fmt::format(R"(
-dt = 0.01
-duration = 1.0
-gravity = [0.0, -9.81]
-restitution = 0.0
-friction = 0.5
-inertia = "{}"
-[container]
-min = [0.0, 0.0]
-max = [10.0, 4.0]
-[[ball]]
-pos = [1.0, 0.25]
-vel = [3.0, 0.0]
-radius = 0.25
-)", inertia));
+  Scene s = load_scene("slide-to-roll");  // v0 3 m/s, friction 0.5, g 9.81, r 0.25, m 1
+  s.inertia = inertia == std::string("sphere") ? Inertia::sphere : Inertia::disk;
   const EngineEntry& entry = find_engine(engine);
   if (!entry.info.caps.friction) {
     RunOptions o;

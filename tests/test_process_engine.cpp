@@ -187,26 +187,11 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
 
 // One ball of radius 0.25 m and mass 1 kg sliding at 3 m/s on the floor of a box, friction 0.5:
 // Coulomb friction slows it until it rolls at v0 / (1 + k) (I = k m r^2), from t = 0.2 s on.
+// scenarios/slide-to-roll.toml (v0 3 m/s, friction 0.5, 1.5 s) with the given inertia.
 Scene slide_to_roll(const std::string& inertia) {
-  return parse_scene(R"(
-name = "slide-to-roll-process"
-dt = 0.01
-duration = 1.5
-gravity = [0.0, -9.81]
-restitution = 0.0
-friction = 0.5
-inertia = ")" + inertia + R"("
-[container]
-kind = "box"
-min = [0.0, 0.0]
-max = [10.0, 4.0]
-[[ball]]
-pos = [1.0, 0.25]
-vel = [3.0, 0.0]
-radius = 0.25
-mass = 1.0
-)",
-                     "test:slide-to-roll", 0);
+  Scene s = load_scene("slide-to-roll");
+  s.inertia = inertia == "sphere" ? Inertia::sphere : Inertia::disk;
+  return s;
 }
 
 // No friction and no gravity: a ball at rest spinning at 3 rad/s, which nothing can change.
