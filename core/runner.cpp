@@ -203,7 +203,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   auto step_reference = [&](long k, bool read) {
     if (!reference) return;
     try {
-      for (int k = 0; k < ref_substeps; ++k) reference->step(ref_dt);
+      for (int sub = 0; sub < ref_substeps; ++sub) reference->step(ref_dt);
       if (read) reference->read(ref_state);
     } catch (const std::exception& e) {
       error->reference_failed(k, e.what());

@@ -23,7 +23,9 @@ struct Tolerance {
 };
 
 struct MetricDef {
-  std::string key;   // dotted path in the result JSON, also the metric's name in the baseline: "energy.final"
+  // Dotted path in the result JSON, also the metric's name in the baseline: "energy.final"; empty
+  // for a figure the tables derive from others (E final / E0), which is not stored.
+  std::string key;
   std::string unit;  // "J", "kg m/s", "" for counts and ratios
   // What it means, for the report's glossary and `list --metrics`; the config gives the tolerances
   // a definition quotes.
