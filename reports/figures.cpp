@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -32,7 +33,8 @@ std::string slug(std::string s) {
   return s;
 }
 
-Figure energy_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
+// None when no run of the scene has an energy to plot (every engine refused it, say).
+std::optional<Figure> energy_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
   const std::string base = slug(scene) + "-energy";
   std::string plot;
   int lines = 0;
@@ -46,6 +48,7 @@ Figure energy_figure(const std::string& scene, const std::vector<const Result*>&
     plot += fmt::format("{}'{}' with lines lw 2 dt {} title '{}'", plot.empty() ? "" : ", ", data, 1 + lines++ / 8,
                         run_label(*r));
   }
+  if (lines == 0) return std::nullopt;
   std::ofstream gp(dir / (base + ".gp"));
   gp << "set terminal pngcairo size 900,500 font 'sans,10'\n"
      << "set output '" << base << ".png'\n"
@@ -54,8 +57,8 @@ Figure energy_figure(const std::string& scene, const std::vector<const Result*>&
      << "plot " << plot << '\n';
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {"energy", scene, "figures/" + base + ".png",
-          "Energy over time, relative to the start (log scale), one line per engine and profile."};
+  return Figure{"energy", scene, "figures/" + base + ".png",
+                "Energy over time, relative to the start (log scale), one line per engine and profile."};
 }
 
 // One panel per run: the balls at the end (circles of the mean radius), the tracks of the first
@@ -323,7 +326,7 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
       by_scene[r.scene].push_back(&r);
     }
     for (const auto& scene : order) {
-      figures.push_back(energy_figure(scene, by_scene[scene], "."));
+      if (auto energy = energy_figure(scene, by_scene[scene], ".")) figures.push_back(std::move(*energy));
       std::vector<const Result*> pictured;  // the thesis's algorithm beside ours
       for (const Result* r : by_scene[scene])
         if ((role_of(in, r->engine) == EngineRole::thesis || role_of(in, r->engine) == EngineRole::ours) &&

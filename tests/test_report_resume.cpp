@@ -65,6 +65,34 @@ max = [1.0, 1.0]
 count = 3
 radius = 0.1
 )";
+    // The friction scenes, tiny too: one ball sliding, three rough ones.
+    std::ofstream(root_ / "scenarios" / "slide-to-roll.toml") << R"(name = "slide-to-roll"
+dt = 0.01
+duration = 0.2
+gravity = [0.0, -9.81]
+restitution = 0.0
+friction = 0.5
+[container]
+min = [0.0, 0.0]
+max = [2.0, 1.0]
+[[ball]]
+pos = [0.5, 0.1]
+vel = [1.0, 0.0]
+radius = 0.1
+)";
+    std::ofstream(root_ / "scenarios" / "rough-box.toml") << R"(name = "rough-box"
+dt = 0.01
+duration = 0.2
+gravity = [0.0, -10.0]
+friction = 0.3
+[container]
+min = [-1.0, -1.0]
+max = [1.0, 1.0]
+[random]
+count = 3
+radius = 0.1
+spin_max = 5.0
+)";
   }
   void TearDown() override { fs::remove_all(root_); }
 
@@ -200,7 +228,8 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());
   EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "run.json", "seed-box.json", "seed-bowl.json",
-                                          "stress-seed-box.json", "sweep-seed-box.csv", "sweep-seed-box.json"}));
+                                          "slide-to-roll.json", "rough-box.json", "stress-seed-box.json",
+                                          "sweep-seed-box.csv", "sweep-seed-box.json"}));
   const std::string md = slurp(merged / "REPORT.md");
   for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",
                            "## Stability frontier: `seed-box`", "## Restitution calibration"})
