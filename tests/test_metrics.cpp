@@ -146,8 +146,9 @@ TEST(Slip, IsZeroForARollingBallAndTimesTheRoll) {
   m.observe(a);
   EXPECT_FALSE(m.summary().slip.time_to_roll);
   // A scene that does not rotate measures none.
-  MetricsAccumulator plain(two_balls(), {});
-  plain.observe(two_balls().initial);
+  const Scene still = two_balls();  // the accumulator keeps a reference to its scene
+  MetricsAccumulator plain(still, {});
+  plain.observe(still.initial);
   EXPECT_FALSE(plain.summary().slip.measured);
 }
 
