@@ -100,6 +100,11 @@ struct EngineInfo {
   // Each run costs far more than its steps: a process to start, thousands of DEM sub-steps per
   // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
   bool costly_runs = false;
+  // Why the engine cannot run a scene that its capabilities allow, judged from the scene alone
+  // (say, friction under gravity among several balls, where `exact` has no closed form), or "".
+  // unsupported_reason asks it, so the runner refuses such a run and a reference that refuses is
+  // replaced by a converged run, before anything is built.
+  std::function<std::string(const Scene&)> refuses;
 };
 
 // Builds an engine for a scene. `settings` is a JSON object of overrides (from the scene's

@@ -20,6 +20,7 @@
 #include "solver/home_world.h"
 #include "solver/neighbour_list.h"
 #include "solver/home_soft.h"
+#include "solver/rough_impact.h"
 #include "solver/warm_start.h"
 
 namespace ballbench {
@@ -81,10 +82,14 @@ struct Approach {
   double t;
 };
 
-// A contact of the start-of-step contact pass (contact_pass).
+// A contact of the start-of-step contact pass (contact_pass) and of the cluster solves. With
+// friction it also holds a tangential impulse, bounded by the friction coefficient times the normal
+// impulse (Coulomb's law as sequential impulses: Catto, GDC 2005), in the tangent (-n_y, n_x).
 struct PassContact : Contact {
   double target;  // least normal velocity wanted after the solve (m/s)
   bool moved;     // an impulse was applied (warm start or solve): both velocities may have changed
+  double tangent_impulse = 0;  // accumulated friction impulse (N s); 0 without friction
+  double tangent_mass = 0;     // effective mass along the tangent (rough_impact.h; kg)
 };
 
 // The step's scratch: per-step and per-part buffers, each with one job, sized once and reused
@@ -144,7 +149,11 @@ class Home final : public Engine {
     t_ += dt;
     dt_ = dt;
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * w_.g.norm() * dt;
-    if (soft_) return soft_path_.step(w_, dt, v_rest_, sc_.no_pairs, grid_, pool_, [&] { renumber_if_due(); });
+    if (soft_) {
+      soft_path_.step(w_, dt, v_rest_, sc_.no_pairs, grid_, pool_, [&] { renumber_if_due(); });
+      if (w_.rotation) w_.angle += w_.w * dt;  // frictionless here (the soft path refuses friction): spins keep
+      return;
+    }
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
     // Without a neighbour list one parallel pass kicks and measures what the grid and the wall
@@ -169,9 +178,15 @@ class Home final : public Engine {
   // positions here, by finish_step's expressions: the same numbers.
   void read(State& out) const override {
     out.t = t_;
-    out.resize(w_.n);
+    out.resize(w_.n, w_.rotation);
     const double end = unfinished_dt_;
     const double* __restrict tl = t_local_.data();
+    // The angles are brought to the step's end by drift itself (end_angles).
+    if (w_.rotation)
+      for (int k = 0; k < w_.n; ++k) {
+        const int i = renumbered_ ? w_.ball_of[k] : k;
+        out.w(k) = w_.w(i), out.angle(k) = w_.angle(i);
+      }
     if (!renumbered_ && end == 0) {
       out.pos = w_.p, out.vel = w_.v;
       return;
@@ -359,6 +374,39 @@ class Home final : public Engine {
     }
   }
 
+  // The slip of contact (i, j) of normal n: the velocity of i's contact point relative to j's
+  // along the tangent (-n_y, n_x) (rough_impact.h). Rotating scenes only.
+  double slip(int i, int j, double nx, double ny) const {
+    double wx = w_.v(i, 0), wy = w_.v(i, 1), spin = w_.w(i) * w_.radius(i);
+    if (j >= 0) wx -= w_.v(j, 0), wy -= w_.v(j, 1), spin += w_.w(j) * w_.radius(j);
+    return wy * nx - wx * ny - spin;
+  }
+
+  // A tangential impulse Jt along (-n_y, n_x) at the contact on i, its opposite on j: it moves and
+  // turns both (rough_impact.h: w -= r Jt / I, I = k m r^2).
+  void apply_tangent_impulse(int i, int j, double nx, double ny, double Jt) {
+    const double mi = w_.inv_mass(i) * Jt;
+    w_.v(i, 0) -= mi * ny, w_.v(i, 1) += mi * nx;
+    w_.w(i) -= mi / (w_.k * w_.radius(i));
+    if (j >= 0) {
+      const double mj = w_.inv_mass(j) * Jt;
+      w_.v(j, 0) += mj * ny, w_.v(j, 1) -= mj * nx;
+      w_.w(j) -= mj / (w_.k * w_.radius(j));
+    }
+  }
+
+  // The friction update of contact c after its normal one (Catto 2005): the tangential impulse that
+  // stops the slip, clamped to the friction cone |Jt| <= mu Jn of this sweep's normal impulse.
+  // Returns how much it changed the slip (m/s).
+  double solve_friction(PassContact& c) {
+    const double bound = w_.mu * c.impulse, old = c.tangent_impulse;
+    c.tangent_impulse = std::clamp(old - slip(c.i, c.j, c.nx, c.ny) * c.tangent_mass, -bound, bound);
+    if (c.tangent_impulse == old) return 0.0;
+    apply_tangent_impulse(c.i, c.j, c.nx, c.ny, c.tangent_impulse - old);
+    c.moved = true;
+    return std::abs(c.tangent_impulse - old) / c.tangent_mass;
+  }
+
   // The velocity constraint of one contact, for the sequential-impulse solve:
   // - approaching faster than v_rest, touching or not: an impact, left to the exact event loop (a
   //   touching pair that approaches is collided at once there, pair by pair, each impact losing
@@ -392,16 +440,16 @@ class Home final : public Engine {
     if (touching) target = close_overlap ? std::min(std::max(-gap, 0.0) / horizon, v_rest_) : 0.0;
     else target = -kSpeculativeFraction * gap / horizon;
     // Kept even when satisfied now: an impulse on a neighbour can push the pair together.
-    const double eff = 1.0 / (w_.inv_mass(i) + (j >= 0 ? w_.inv_mass(j) : 0.0));
+    const double inv_j = j >= 0 ? w_.inv_mass(j) : 0.0, eff = 1.0 / (w_.inv_mass(i) + inv_j);
     c = {{i, j, nx, ny, eff, 0.0}, target, false};
+    if (w_.rough()) c.tangent_mass = tangent_mass(w_.inv_mass(i), inv_j, w_.k);
     return true;
   }
 
   // Warm start (Catto 2005): the impulse contact c ended the last step with, if it had one. Only
   // looked up: the impulses are applied afterwards, in the contacts' order.
   void find_warm_impulse(PassContact& c) const {
-    const double impulse = warm_.find(c.i, c.j);
-    if (impulse >= 0) c.impulse = impulse, c.moved = true;
+    if (const WarmStart::Entry* e = warm_.entry(c.i, c.j)) c.impulse = e->impulse, c.tangent_impulse = e->tangent, c.moved = true;
   }
 
   // Adds a contact for every wall within max(touch, reach) of ball i.
@@ -450,6 +498,10 @@ class Home final : public Engine {
   // bowl balls: ~25 000 contacts, half of them such).
   double solve_contacts(int sweeps, double tolerance) {
     double worst = kNever;  // largest violation seen in the last sweep (m/s)
+    const bool rough = w_.rough();
+    // Normal first, then friction against the normal impulse just found: for disks the two do
+    // not couple (the contact point lies on the normal), so an isolated contact is still solved
+    // by its first update.
     const auto update = [&](PassContact& c) {
       const double vn = relative_normal_velocity(c.i, c.j, c.nx, c.ny);
       const double old = c.impulse;
@@ -457,6 +509,7 @@ class Home final : public Engine {
       apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse - old);
       c.moved |= c.impulse != old;
       if (c.impulse > 0 || vn < c.target) worst = std::max(worst, std::abs(c.target - vn));
+      if (rough) worst = std::max(worst, solve_friction(c));
     };
     // tmp_.live: the contacts a sweep after the first visits (all but the isolated ones).
     tmp_.live.clear();
@@ -534,7 +587,10 @@ class Home final : public Engine {
     // The pair contacts found their warm-start impulses in the screen.
     for (size_t k = 0; k < wall_contacts; ++k) find_warm_impulse(tmp_.contacts[k]);
     for (const PassContact& c : tmp_.contacts)
-      if (c.moved) apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
+      if (c.moved) {
+        apply_impulse(c.i, c.j, c.nx, c.ny, c.impulse);
+        if (c.tangent_impulse != 0) apply_tangent_impulse(c.i, c.j, c.nx, c.ny, c.tangent_impulse);
+      }
     solve_contacts(s_.contact_iterations, 0.5 * v_tol_);
     // A contact that moved its balls changed velocities the screen could not know: predict both.
     // One that applied nothing (most, in a gas: close but parting) leaves them to the screen, which
@@ -546,7 +602,7 @@ class Home final : public Engine {
       }
     tmp_.warm_entries.clear();
     for (const PassContact& c : tmp_.contacts)
-      if (c.impulse > 0) tmp_.warm_entries.push_back({c.i, c.j, c.impulse});
+      if (c.impulse > 0) tmp_.warm_entries.push_back({c.i, c.j, c.impulse, c.tangent_impulse});
     warm_.assign(tmp_.warm_entries);
   }
 
@@ -829,6 +885,7 @@ class Home final : public Engine {
     };
     if (w_.r.size()) permute(w_.r.data());
     if (w_.inv_m.size()) permute(w_.inv_m.data());
+    if (w_.rotation) permute(w_.w.data()), permute(w_.angle.data());
     permute(count_.data());
     soft_path_.permute_per_ball(permute);
     grid_.renumbered([&](const int* new_number) {
@@ -946,6 +1003,7 @@ class Home final : public Engine {
       predict(ev.i);
       if (ev.j >= 0) predict(ev.j);
     }
+    if (w_.rotation) end_angles();
     // Without a neighbour list the next step's start_pass brings the balls to the end of this one,
     // in the same pass as the kick (read() computes the end positions for its copy meanwhile).
     if (!listed_) {
@@ -957,6 +1015,13 @@ class Home final : public Engine {
       const int e = static_cast<int>(ForkJoin::range_begin(w_.n, p + 1, parts));
       finish_step(b, e, extent_[p]);
     });
+  }
+
+  // Every ball's angle from its own clock to the end of the step, before the clocks are set back
+  // for the next step (with the positions, in finish_step or the next start_pass): the angle is
+  // kept at the ball's clock, and from here on at the step's end.
+  void end_angles() {
+    for (int i = 0; i < w_.n; ++i) w_.angle(i) += w_.w(i) * (dt_ - t_local_[i]);
   }
 
   // Balls [b, e) to the end of the step (advance(i, dt)), each clock set back to 0 for the next
@@ -1028,6 +1093,7 @@ class Home final : public Engine {
 
   void advance(int i, double t) {
     w_.p(i, 0) = on_line(w_.p(i, 0), w_.v(i, 0), t, t_local_[i]), w_.p(i, 1) = on_line(w_.p(i, 1), w_.v(i, 1), t, t_local_[i]);
+    if (w_.rotation) w_.angle(i) += w_.w(i) * (t - t_local_[i]);
     t_local_[i] = t;
   }
 
@@ -1112,7 +1178,8 @@ class Home final : public Engine {
     return disc < 0 ? kNever : c / (-b + std::sqrt(disc));
   }
 
-  // Restitution on the normal component only; tangential velocity is untouched (frictionless).
+  // Restitution on the normal component; without friction the tangential velocity is untouched,
+  // with it the rough-disk impulse law (rough_impact.h) stops or slows the slip.
   void collide_pair(int i, int j) {
     double nx = w_.p(i, 0) - w_.p(j, 0), ny = w_.p(i, 1) - w_.p(j, 1);
     const double d = std::sqrt(nx * nx + ny * ny);
@@ -1120,12 +1187,28 @@ class Home final : public Engine {
     nx /= d, ny /= d;
     const double vn = relative_normal_velocity(i, j, nx, ny);
     if (vn >= 0) return;
-    apply_impulse(i, j, nx, ny, -(1.0 + w_.e) * vn / (w_.inv_mass(i) + w_.inv_mass(j)));
+    const double inv_sum = w_.inv_mass(i) + w_.inv_mass(j);
+    if (!w_.rough()) return apply_impulse(i, j, nx, ny, -(1.0 + w_.e) * vn / inv_sum);
+    const RoughImpulse P = rough_impact(vn, slip(i, j, nx, ny), w_.e, w_.mu, 1.0 / inv_sum,
+                                        tangent_mass(w_.inv_mass(i), w_.inv_mass(j), w_.k));
+    apply_impulse(i, j, nx, ny, P.normal);
+    apply_tangent_impulse(i, j, nx, ny, P.tangent);
   }
 
   void collide_wall(int i, int code) {
     const int axis = wall_axis(code);
-    w_.v(i, axis) = -w_.e * w_.v(i, axis);
+    if (!w_.rough()) {
+      w_.v(i, axis) = -w_.e * w_.v(i, axis);
+      return;
+    }
+    const double sign = wall_side(code) == 0 ? 1.0 : -1.0;  // the normal points into the box
+    const double nx = axis == 0 ? sign : 0.0, ny = axis == 1 ? sign : 0.0;
+    const double vn = relative_normal_velocity(i, code, nx, ny);
+    if (vn >= 0) return;
+    const double inv_m = w_.inv_mass(i);
+    const RoughImpulse P = rough_impact(vn, slip(i, code, nx, ny), w_.e, w_.mu, 1.0 / inv_m, tangent_mass(inv_m, 0.0, w_.k));
+    apply_impulse(i, code, nx, ny, P.normal);
+    apply_tangent_impulse(i, code, nx, ny, P.tangent);
   }
 
   HomeSettings s_;
@@ -1175,7 +1258,8 @@ EngineEntry home_engine() {
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
-  info.caps.friction = false;  // frictionless disks: no rotation
+  // Coulomb friction at impacts (the rough-disk impulse law) and in resting contacts (sequential
+  // impulses in the friction cone), on the events path; the soft path refuses it (below).
   // Sweeps of the resting-contact solve; motion between contacts is exact at any setting.
   info.sweep_knobs = {{"contact_iterations", {4, 16, 200}}};
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
@@ -1210,6 +1294,8 @@ EngineEntry home_engine() {
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
+            if (s.resting == "soft" && scene.features().gravity && scene.friction > 0)
+              throw SceneUnsupported("home: the soft path (resting = soft) has no friction; resting = events has it");
             return make_home(scene, s);
           }};
 }

@@ -23,6 +23,12 @@ struct HomeWorld {
   Eigen::Vector2d g = Eigen::Vector2d::Zero();
   Container box;
   bool walls = false;  // the container is a box
+  // Rotation, only for a scene that rotates (SceneFeatures::rotation: friction above 0 or a ball
+  // that starts spinning); w and angle are empty otherwise, and nothing about rotation is stepped.
+  bool rotation = false;
+  Eigen::VectorXd w, angle;  // angular velocity (rad/s) and angle (rad), counter-clockwise
+  double mu = 0;             // Coulomb friction coefficient, ball-ball and ball-wall
+  double k = 0.5;            // inertia factor: I = k m r^2
   std::vector<int> ball_of;  // scene index -> ball
 
   HomeWorld() = default;
@@ -40,7 +46,11 @@ struct HomeWorld {
         g(scene.gravity),
         box(scene.container),
         walls(scene.container.kind == ContainerKind::Box),
+        rotation(scene.features().rotation),
+        mu(scene.friction),
+        k(inertia_factor(scene.inertia)),
         ball_of(n) {
+    if (rotation) w = scene.initial.rotates() ? scene.initial.w : Eigen::VectorXd::Zero(n), angle = Eigen::VectorXd::Zero(n);
     if (!equal_radii) r = scene.radius;
     if (!equal_masses) inv_m = scene.mass.cwiseInverse();
     for (int i = 0; i < n; ++i) ball_of[i] = i;
@@ -48,6 +58,8 @@ struct HomeWorld {
 
   double radius(int i) const { return equal_radii ? r0 : r(i); }
   double inv_mass(int i) const { return equal_masses ? inv_m0 : inv_m(i); }
+  // Friction acts: the balls rotate and the coefficient is above 0.
+  bool rough() const { return rotation && mu > 0; }
   // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
   double wall_gap(int i, int axis, int side) const {
     return side == 0 ? p(i, axis) - radius(i) - box.min(axis) : box.max(axis) - radius(i) - p(i, axis);

@@ -17,7 +17,8 @@ class WarmStart {
  public:
   struct Entry {
     int i, j;
-    double impulse;
+    double impulse;       // normal (N s)
+    double tangent = 0;   // friction's, along the tangent (-n_y, n_x) (N s)
   };
 
   // Replaces the contents with `entries` (any order; one entry per (i, j)).
@@ -35,14 +36,19 @@ class WarmStart {
     }
   }
 
-  // The impulse stored for (i, j), or a negative number if there is none.
-  double find(int i, int j) const {
-    if (entries_.empty()) return -1.0;
+  // The entry stored for (i, j), or null if there is none.
+  const Entry* entry(int i, int j) const {
+    if (entries_.empty()) return nullptr;
     for (size_t s = hash(i, j);; s = (s + 1) & mask_) {
       const int k = slot_[s];
-      if (k == kEmpty) return -1.0;
-      if (entries_[k].i == i && entries_[k].j == j) return entries_[k].impulse;
+      if (k == kEmpty) return nullptr;
+      if (entries_[k].i == i && entries_[k].j == j) return &entries_[k];
     }
+  }
+  // The normal impulse stored for (i, j), or a negative number if there is none.
+  double find(int i, int j) const {
+    const Entry* e = entry(i, j);
+    return e ? e->impulse : -1.0;
   }
 
   // The balls were renumbered (new_number[old ball]): the stored contacts follow them, a pair keyed
@@ -52,7 +58,7 @@ class WarmStart {
     for (const Entry& e : entries_) {
       int i = new_number[e.i], j = e.j >= 0 ? new_number[e.j] : e.j;
       if (lower_first && j >= 0 && i > j) std::swap(i, j);
-      scratch.push_back({i, j, e.impulse});
+      scratch.push_back({i, j, e.impulse, e.tangent});
     }
     assign(scratch);
   }

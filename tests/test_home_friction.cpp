@@ -1,0 +1,318 @@
+// `home` with friction: each case against a closed form derived here, independently of the
+// solver's impulse law (core/solver/rough_impact.h): from conservation laws about the contact
+// point and the Coulomb conditions, not from the law's formula.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "registry.h"
+#include "runner.h"
+#include "scene_loader.h"
+
+namespace ballbench {
+namespace {
+
+// One impulse's round-off is ~1e-16 relative; a run of a few hundred steps adds a friction impulse
+// per step, so 1e-9 leaves a wide margin and still fails any law that is off by a physical amount.
+constexpr double kClosedForm = 1e-9;
+
+std::unique_ptr<Engine> build_home(const Scene& s) { return find_engine("home").create(s, "default", merged_settings(s, "home", {})); }
+
+double kinetic_energy(const Scene& s, const State& st) {
+  double e = 0;
+  for (int i = 0; i < s.n(); ++i) {
+    e += 0.5 * s.mass(i) * st.vel.row(i).squaredNorm();
+    if (st.rotates()) e += 0.5 * s.moment_of_inertia(i) * st.w(i) * st.w(i);
+  }
+  return e;
+}
+
+// Orbital plus spin angular momentum about the origin (kg m^2/s).
+double angular_momentum(const Scene& s, const State& st) {
+  double l = 0;
+  for (int i = 0; i < s.n(); ++i)
+    l += s.mass(i) * (st.pos(i, 0) * st.vel(i, 1) - st.pos(i, 1) * st.vel(i, 0)) + s.moment_of_inertia(i) * st.w(i);
+  return l;
+}
+
+// A ball sliding at v0 on the floor (scenarios/slide-to-roll.toml: v0 3, mu 0.5, g 9.81, r 0.25):
+// each step's friction impulse is mu times the step's normal impulse m g dt, so the ball slows by
+// exactly mu g dt a step until the impulse that makes it roll is within the cone; from then on it
+// rolls. Friction at the floor point leaves the angular momentum about it, m r v - I w (w
+// counter-clockwise), unchanged: rolling (v = -w r) then gives v = v0 / (1 + k).
+class HomeSlideToRoll : public ::testing::TestWithParam<Inertia> {};
+
+TEST_P(HomeSlideToRoll, DeceleratesAtMuGAndRollsAtTheClosedFormSpeed) {
+  Scene s = load_scene("slide-to-roll");
+  s.inertia = GetParam();
+  const double k = inertia_factor(s.inertia), mu = 0.5, g = 9.81, v0 = 3.0, r = 0.25;
+  auto home = build_home(s);
+  State st;
+  double v_last = v0;
+  long rolling_from = -1;
+  for (long n = 1; n <= s.steps(); ++n) {
+    home->step(s.dt);
+    home->read(st);
+    const double v = st.vel(0, 0);
+    if (rolling_from < 0 && std::abs(v + st.w(0) * r) < kClosedForm) rolling_from = n;
+    if (rolling_from < 0) {
+      EXPECT_NEAR(v_last - v, mu * g * s.dt, kClosedForm) << "step " << n;
+    }
+    v_last = v;
+  }
+  EXPECT_NEAR(st.vel(0, 0), v0 / (1 + k), kClosedForm);
+  EXPECT_NEAR(st.w(0), -v0 / (1 + k) / r, kClosedForm / r);
+  EXPECT_NEAR(st.vel(0, 1), 0.0, kClosedForm);
+  // It starts rolling in the step that contains the closed-form time v0 k / ((1 + k) mu g).
+  const double t_roll = v0 * k / ((1 + k) * mu * g);
+  EXPECT_EQ(rolling_from, static_cast<long>(std::ceil(t_roll / s.dt - 1e-9)));
+}
+
+INSTANTIATE_TEST_SUITE_P(Inertia, HomeSlideToRoll, ::testing::Values(Inertia::disk, Inertia::sphere),
+                         [](const auto& info) { return std::string(inertia_name(info.param)); });
+
+// The spin drop of tests/test_conformance.cpp: a disk (r 0.25, m 1) dropped with v0 = 1 m/s and
+// backspin w0 = 20 rad/s onto the floor, restitution 0. The landing is an impact: the test takes
+// the state of the step before and derives the state after, on the floor:
+// - normal: restitution 0 stops the fall, P_n = m |v_y|;
+// - sticking: the contact point stops (v = -w r) and the angular momentum about it,
+//   m r v - I w, is unchanged: v = (v - k r w) / (1 + k), needing the tangential impulse
+//   m (v_before - v_after), allowed if within mu P_n;
+// - otherwise sliding: the tangential impulse is mu P_n against the slip, which gives v and, by
+//   the same angular momentum, w.
+// Then the slide (a step's friction mu g dt) ends in rolling at (v0 - k r w0) / (1 + k) = -1 m/s.
+class HomeSpinDrop : public ::testing::TestWithParam<double> {};
+
+TEST_P(HomeSpinDrop, LandsByTheCoulombImpulseLawAndRollsAtTheClosedFormSpeed) {
+  const double mu = GetParam(), r = 0.25, k = 0.5, m = 1.0;
+  const Scene s = parse_scene(fmt::format(R"(
+dt = 0.01
+duration = 2.0
+gravity = [0.0, -9.81]
+restitution = 0.0
+friction = {}
+[container]
+min = [-5.0, 0.0]
+max = [5.0, 4.0]
+[[ball]]
+pos = [0.0, 1.25]
+vel = [1.0, 0.0]
+spin = 20.0
+radius = 0.25
+)", mu), "spin-drop.toml");
+  auto home = build_home(s);
+  State before, st;
+  home->read(before);
+  bool landed = false;
+  for (long n = 1; n <= s.steps(); ++n) {
+    home->step(s.dt);
+    home->read(st);
+    if (!landed && st.vel(0, 1) > -1e-12) {  // the step of the impact
+      landed = true;
+      const double vy = before.vel(0, 1) - 9.81 * s.dt;  // this step's kick, then the fall to the floor
+      const double vx = before.vel(0, 0), w = before.w(0), pn = m * std::abs(vy);
+      const double l = vx - k * r * w;  // angular momentum about the floor point / (m r)
+      const double v_stick = l / (1 + k);
+      double v_after = v_stick;
+      if (m * std::abs(vx - v_stick) > mu * pn) v_after = vx - std::copysign(mu * pn / m, vx + w * r);
+      const double w_after = (v_after - l) / (k * r);
+      const bool sticks = mu == 0.8;  // needs 2 N s of tangential impulse, within 0.8 x 4.4 but not 0.2 x 4.4
+      EXPECT_EQ(v_after == v_stick, sticks);
+      EXPECT_NEAR(st.vel(0, 0), v_after, kClosedForm);
+      EXPECT_NEAR(st.w(0), w_after, kClosedForm);
+      EXPECT_NEAR(st.vel(0, 1), 0.0, kClosedForm);
+      EXPECT_NEAR(st.pos(0, 1), r, kClosedForm);
+    }
+    before = st;
+  }
+  ASSERT_TRUE(landed);
+  const double want = (1.0 - k * r * 20.0) / (1 + k);
+  EXPECT_NEAR(st.vel(0, 0), want, kClosedForm);
+  EXPECT_NEAR(st.w(0), -want / r, kClosedForm);
+}
+
+INSTANTIATE_TEST_SUITE_P(Friction, HomeSpinDrop, ::testing::Values(0.2, 0.8),
+                         [](const auto& info) { return info.param == 0.2 ? std::string("Sliding") : std::string("Sticking"); });
+
+// An oblique impact of two rough disks in open space (unequal masses and radii, both spinning,
+// restitution 0.7). Ball 1 (at rest, spinning) sits at the origin; ball 0 comes along x at height
+// b, so it touches at the normal n = (sqrt(R^2 - b^2), b) / R, known before the run. After the
+// impact, six conditions fix the six velocities:
+// - linear momentum (2);
+// - each ball's angular momentum about the contact point (2): the impulse passes through it;
+// - the normal relative velocity is -e times what it was (1);
+// - sticking: the contact points move together; sliding: the tangential impulse is mu times the
+//   normal one (1).
+// The test checks the run's velocities against all six, without solving for them.
+struct ObliqueCase {
+  double mu;
+  bool sticks;
+};
+
+class HomeObliqueImpact : public ::testing::TestWithParam<ObliqueCase> {};
+
+TEST_P(HomeObliqueImpact, MeetsTheSixConditionsOfARoughImpact) {
+  const auto [mu, sticks] = GetParam();
+  const double r0 = 0.3, r1 = 0.5, m0 = 1.0, m1 = 2.5, e = 0.7, R = r0 + r1, b = 0.35;
+  const Scene s = parse_scene(fmt::format(R"(
+dt = 0.01
+duration = 0.5
+restitution = {e}
+friction = {mu}
+[[ball]]
+pos = [2.0, {b}]
+vel = [-6.0, 0.0]
+spin = 4.0
+radius = {r0}
+mass = {m0}
+[[ball]]
+pos = [0.0, 0.0]
+vel = [0.0, 0.0]
+spin = -7.0
+radius = {r1}
+mass = {m1}
+)", fmt::arg("e", e), fmt::arg("mu", mu), fmt::arg("b", b), fmt::arg("r0", r0), fmt::arg("m0", m0),
+                                          fmt::arg("r1", r1), fmt::arg("m1", m1)), "oblique.toml");
+  auto home = build_home(s);
+  for (long n = 0; n < s.steps(); ++n) home->step(s.dt);
+  State st;
+  home->read(st);
+  const double nx = std::sqrt(R * R - b * b) / R, ny = b / R, tx = -ny, ty = nx;
+  const double I0 = 0.5 * m0 * r0 * r0, I1 = 0.5 * m1 * r1 * r1;
+  const Eigen::Vector2d v0{-6.0, 0.0}, v1{0.0, 0.0}, n{nx, ny}, t{tx, ty};
+  const double w0 = 4.0, w1 = -7.0;
+  const Eigen::Vector2d u0 = st.vel.row(0), u1 = st.vel.row(1);
+  const double x0 = st.w(0), x1 = st.w(1);
+  // Linear momentum.
+  EXPECT_NEAR((m0 * u0 + m1 * u1 - m0 * v0 - m1 * v1).norm(), 0.0, kClosedForm);
+  // Angular momentum about the contact point: ball 0's centre sits at +r0 n from it, ball 1's at
+  // -r1 n; L = m (c x v) + I w with c the centre relative to the point.
+  const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& c) { return a.x() * c.y() - a.y() * c.x(); };
+  EXPECT_NEAR(m0 * cross(r0 * n, u0) + I0 * x0, m0 * cross(r0 * n, v0) + I0 * w0, kClosedForm);
+  EXPECT_NEAR(m1 * cross(-r1 * n, u1) + I1 * x1, m1 * cross(-r1 * n, v1) + I1 * w1, kClosedForm);
+  // Normal restitution.
+  EXPECT_NEAR((u0 - u1).dot(n), -e * (v0 - v1).dot(n), kClosedForm);
+  // The contact points' relative velocity along t: each point moves at v + w x (point - centre).
+  const auto slip = [&](const Eigen::Vector2d& a, double wa, const Eigen::Vector2d& c, double wc) {
+    return (a - c).dot(t) - (wa * r0 + wc * r1);
+  };
+  const double slip_after = slip(u0, x0, u1, x1), slip_before = slip(v0, w0, v1, w1);
+  const double pn = m0 * (u0 - v0).dot(n), pt = m0 * (u0 - v0).dot(t);
+  ASSERT_GT(pn, 0);
+  if (sticks) {
+    EXPECT_NEAR(slip_after, 0.0, kClosedForm);
+    EXPECT_LE(std::abs(pt), mu * pn);
+  } else {
+    EXPECT_NEAR(std::abs(pt), mu * pn, kClosedForm);
+    EXPECT_LT(pt * slip_before, 0);       // against the slip
+    EXPECT_GT(slip_after * slip_before, 0);  // which it slows, never reverses
+  }
+  EXPECT_LE(kinetic_energy(s, st), 0.5 * m0 * v0.squaredNorm() + 0.5 * I0 * w0 * w0 + 0.5 * I1 * w1 * w1);
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, HomeObliqueImpact, ::testing::Values(ObliqueCase{0.9, true}, ObliqueCase{0.1, false}),
+                         [](const auto& info) { return info.param.sticks ? std::string("Sticking") : std::string("Sliding"); });
+
+// A rough gas in open space without gravity: every impulse acts at a contact point, equal and
+// opposite, so the total angular momentum about any fixed point (orbital plus spin) is conserved;
+// friction and restitution only take energy. Restitution 1 runs the elastic path (its neighbour
+// list), 0.9 the grid's.
+class HomeRoughGas : public ::testing::TestWithParam<double> {};
+
+TEST_P(HomeRoughGas, KeepsAngularMomentumAndNeverGainsEnergy) {
+  const Scene s = parse_scene(fmt::format(R"(
+dt = 0.01
+duration = 2.0
+restitution = {}
+friction = 0.5
+[random]
+count = 200
+radius = 0.1
+mass = 1.0
+pos_min = [-3.0, -3.0]
+pos_max = [3.0, 3.0]
+vel_min = [-2.0, -2.0]
+vel_max = [2.0, 2.0]
+spin_min = -10.0
+spin_max = 10.0
+seed = 5
+)", GetParam()), "rough-gas.toml");
+  auto home = build_home(s);
+  State st;
+  home->read(st);
+  const double l0 = angular_momentum(s, st), e0 = kinetic_energy(s, st);
+  double worst_l = 0, e_last = e0;
+  for (long n = 0; n < s.steps(); ++n) {
+    home->step(s.dt);
+    home->read(st);
+    worst_l = std::max(worst_l, std::abs(angular_momentum(s, st) - l0));
+    const double e = kinetic_energy(s, st);
+    EXPECT_LE(e, e_last * (1 + 1e-14)) << "step " << n;  // round-off of the sum only
+    e_last = e;
+  }
+  // Round-off: ~1e-16 relative per impulse over a few hundred impacts, on terms of size |x| m v.
+  EXPECT_LT(worst_l, 1e-11 * std::max(1.0, std::abs(l0)));
+  EXPECT_LT(e_last, 0.99 * e0);  // friction took energy: the gas is rough
+}
+
+INSTANTIATE_TEST_SUITE_P(Restitution, HomeRoughGas, ::testing::Values(1.0, 0.9),
+                         [](const auto& info) { return info.param == 1.0 ? std::string("Elastic") : std::string("Lossy"); });
+
+// A frictionless scene whose balls start spinning: impacts never touch the spins, and each angle
+// turns at its ball's spin.
+TEST(HomeSpin, WithoutFrictionSpinsAreKeptAndAnglesTurnAtThem) {
+  const Scene s = parse_scene(R"(
+dt = 0.01
+duration = 3.0
+gravity = [0.0, -9.81]
+restitution = 0.8
+[container]
+min = [-2.0, -2.0]
+max = [2.0, 2.0]
+[random]
+count = 30
+radius = 0.15
+mass = 1.0
+vel_min = [-3.0, -3.0]
+vel_max = [3.0, 3.0]
+spin_min = -5.0
+spin_max = 5.0
+seed = 3
+)", "spin.toml");
+  auto home = build_home(s);
+  for (long n = 0; n < s.steps(); ++n) home->step(s.dt);
+  State st;
+  home->read(st);
+  ASSERT_TRUE(st.rotates());
+  for (int i = 0; i < s.n(); ++i) {
+    EXPECT_EQ(st.w(i), s.spin(i));
+    EXPECT_NEAR(st.angle(i), s.spin(i) * st.t, 1e-12 * std::abs(s.spin(i)) * st.t + 1e-15);
+  }
+}
+
+// The soft path has no friction: it refuses a friction scene with the reason, never ignores it.
+TEST(HomeSoftPath, RefusesFriction) {
+  RunOptions o;
+  o.overrides = {{"resting", "soft"}};
+  const Result r = run_engine(load_scene("slide-to-roll"), find_engine("home"), o);
+  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_NE(r.error.find("friction"), std::string::npos) << r.error;
+}
+
+// A rough pile (rough-box's 40 balls, friction 0.3): nothing passes through anything, no energy
+// appears, and the rotation metrics are there.
+TEST(HomeRoughBox, NeitherTunnelsNorGainsEnergy) {
+  const Result r = run_engine(load_scene("rough-box"), find_engine("home"), {});
+  ASSERT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
+  EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
+  EXPECT_LE(r.metrics.energy.final, r.metrics.energy.initial);
+  EXPECT_LT(r.metrics.penetration_max, 0.01);
+}
+
+}  // namespace
+}  // namespace ballbench
