@@ -215,13 +215,21 @@ seed = 3
   }
 }
 
-// The soft path has no friction: it refuses a friction scene with the reason, never ignores it.
-TEST(HomeSoftPath, RefusesFriction) {
-  RunOptions o;
-  o.overrides = {{"resting", "soft"}};
-  const Result r = run_engine(load_scene("slide-to-roll"), find_engine("home"), o);
-  EXPECT_EQ(r.status, "unsupported");
-  EXPECT_NE(r.error.find("friction"), std::string::npos) << r.error;
+// The soft path (resting = soft) solves friction in its soft step: slide to roll and the spin
+// drop end rolling at the closed-form speed, which friction at the floor point cannot change.
+TEST(HomeSoftPath, RollsAtTheClosedFormSpeed) {
+  for (const double mu : {0.2, 0.8}) {
+    Scene s = load_scene("slide-to-roll");
+    s.friction = mu;
+    s.initial.w(0) = 20.0;  // backspin: v0 - k r w0 = 3 - 2.5
+    auto home = find_engine("home").create(s, "default", {{"resting", "soft"}});
+    for (long n = 0; n < s.steps(); ++n) home->step(s.dt);
+    State st;
+    home->read(st);
+    const double want = (3.0 - 0.5 * 0.25 * 20.0) / 1.5;
+    EXPECT_NEAR(st.vel(0, 0), want, 1e-9) << "mu " << mu;
+    EXPECT_NEAR(st.w(0), -want / 0.25, 1e-9 / 0.25) << "mu " << mu;
+  }
 }
 
 // A rough pile (rough-box's 40 balls, friction 0.3): nothing passes through anything, no energy

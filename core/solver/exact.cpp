@@ -12,6 +12,7 @@
 #include "engine_settings.h"
 #include "input_error.h"
 #include "solver/contact.h"
+#include "solver/rough_impact.h"
 
 namespace ballbench {
 namespace {
@@ -206,7 +207,9 @@ double first_contact(const Quartic& q, double horizon, double noise, double fine
 // counter when predicted), a wall (wall_partner), or the ball crossing a face of its grid cell
 // (cell_face: of axis 0 or 1, towards the lower (0) or upper (1) cell).
 constexpr int cell_face(int axis, int up) { return -5 - (2 * axis + up); }
-constexpr bool is_cell_face(int j) { return j <= -5; }
+// A rough ball sliding on a wall whose slip reaches zero: it starts to roll (Exact::on_roll).
+constexpr int kRollEvent = -9;
+constexpr bool is_cell_face(int j) { return j <= -5 && j > kRollEvent; }
 
 // A contact (contact.h) of a cluster being settled (Exact::settle_cluster); j < 0: a wall or a
 // sleeping ball, held still.
@@ -216,8 +219,9 @@ struct ClusterContact : Contact {
   double n(int axis) const { return axis == 0 ? nx : ny; }
 };
 
-// A ball's candidates at one time in a fixed order: balls by index, then walls, then cell faces.
-int event_rank(int j) { return j >= 0 ? 0 : is_cell_face(j) ? 2 : 1; }
+// A ball's candidates at one time in a fixed order: balls by index, then walls, then cell faces,
+// then the start of rolling.
+int event_rank(int j) { return j >= 0 ? 0 : j == kRollEvent ? 3 : is_cell_face(j) ? 2 : 1; }
 bool sooner(const PredictedEvent& a, const PredictedEvent& b) {
   if (a.t != b.t) return a.t < b.t;
   const int ra = event_rank(a.j), rb = event_rank(b.j);

@@ -149,11 +149,7 @@ class Home final : public Engine {
     t_ += dt;
     dt_ = dt;
     v_rest_ = s_.rest_velocity >= 0 ? s_.rest_velocity : 2.0 * w_.g.norm() * dt;
-    if (soft_) {
-      soft_path_.step(w_, dt, v_rest_, sc_.no_pairs, grid_, pool_, [&] { renumber_if_due(); });
-      if (w_.rotation) w_.angle += w_.w * dt;  // frictionless here (the soft path refuses friction): spins keep
-      return;
-    }
+    if (soft_) return soft_path_.step(w_, dt, v_rest_, sc_.no_pairs, grid_, pool_, [&] { renumber_if_due(); });
     // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the
     // positions move along straight lines for the whole step, which the event loop follows exactly.
     // Without a neighbour list one parallel pass kicks and measures what the grid and the wall
@@ -1259,7 +1255,7 @@ EngineEntry home_engine() {
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
   info.caps.continuous_collision = true;
   // Coulomb friction at impacts (the rough-disk impulse law) and in resting contacts (sequential
-  // impulses in the friction cone), on the events path; the soft path refuses it (below).
+  // impulses in the friction cone); the soft path solves it in its soft step.
   // Sweeps of the resting-contact solve; motion between contacts is exact at any setting.
   info.sweep_knobs = {{"contact_iterations", {4, 16, 200}}};
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
@@ -1294,8 +1290,6 @@ EngineEntry home_engine() {
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
-            if (s.resting == "soft" && scene.features().gravity && scene.friction > 0)
-              throw SceneUnsupported("home: the soft path (resting = soft) has no friction; resting = events has it");
             return make_home(scene, s);
           }};
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solver/contact.h"
+#include "solver/rough_impact.h"
 
 namespace ballbench {
 namespace {
@@ -121,29 +122,41 @@ void SoftResting::part(HomeWorld& w, double dt, double v_rest, bool no_pairs, co
   const double* inv_m = w.equal_masses ? nullptr : w.inv_m.data();
   const std::vector<int>& awake = sleep_.awake(inv_m, w.inv_m0);
   if (sleep_.sleeping() > 0) inv_m = sleep_.held_inv_mass().data();
+  const bool rough = w.rough();
   for (SoftContact& c : contacts_) {
     const double wi = inv_m ? inv_m[c.i] : w.inv_m0, wj = c.j < 0 ? 0.0 : inv_m ? inv_m[c.j] : w.inv_m0;
     c.mass = 1.0 / (wi + wj);
+    if (rough) c.tangent_mass = tangent_mass(wi, wj, w.k);
   }
-  const SoftBodies bodies{w.p.col(0).data(),
-                          w.p.col(1).data(),
-                          w.v.col(0).data(),
-                          w.v.col(1).data(),
-                          inv_m,
-                          w.inv_m0,
-                          sleep_.sleeping() > 0 ? awake.data() : nullptr,
-                          static_cast<int>(awake.size())};
+  SoftBodies bodies{w.p.col(0).data(),
+                    w.p.col(1).data(),
+                    w.v.col(0).data(),
+                    w.v.col(1).data(),
+                    inv_m,
+                    w.inv_m0,
+                    sleep_.sleeping() > 0 ? awake.data() : nullptr,
+                    static_cast<int>(awake.size())};
+  if (w.rotation) {
+    bodies.w = w.w.data(), bodies.angle = w.angle.data();
+    bodies.radius = w.equal_radii ? nullptr : w.r.data(), bodies.r0 = w.r0, bodies.k = w.k, bodies.mu = w.mu;
+  }
   soft_step(bodies, n, contacts_, w.g.x(), w.g.y(), dt, soft_, {w.e, v_rest}, scratch_);
   if (sleep_.enabled()) {
     sleep_.fall_asleep(contacts_, w.v.col(0).data(), w.v.col(1).data(), dt);
+    if (w.rotation)  // a ball asleep is at rest: it does not turn either
+      for (int i = 0; i < n; ++i)
+        if (sleep_.asleep(i)) w.w(i) = 0;
     warm_entries_.clear();
     for (const SoftContact& c : contacts_)
-      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+      if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse, c.tangent_impulse});
     warm_.assign(warm_entries_);
   } else {
     // A candidate whose contact pushed nothing starts the next part from 0 (one without a contact
     // in this part was set to 0 as it was tested).
-    for (size_t k = 0; k < contacts_.size(); ++k) candidates_[candidate_of_[k]].impulse = contacts_[k].impulse;
+    for (size_t k = 0; k < contacts_.size(); ++k) {
+      Candidate& c = candidates_[candidate_of_[k]];
+      c.impulse = contacts_[k].impulse, c.tangent = contacts_[k].tangent_impulse;
+    }
   }
 }
 
@@ -167,13 +180,13 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
   if (!hold) return build_candidates(w, dt, reach, no_pairs, start, grid, pool, renumber_if_due);
   int k = 0;
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
-    contacts_.push_back({{i, j, nx, ny, 0.0, candidates_[k].impulse * warm_scale_}, gap, 0.0, 0.0});
+    contacts_.push_back(warm_contact(i, j, nx, ny, gap, candidates_[k].impulse, candidates_[k].tangent));
     candidate_of_.push_back(k);
   };
   for (const int m = static_cast<int>(candidates_.size()); k < m; ++k) {
     Candidate& c = candidates_[k];
     const bool contact = c.j >= 0 ? test.pair(c.i, c.j, add) : test.wall(c.i, wall_axis(c.j), wall_side(c.j), add);
-    if (!contact) c.impulse = 0;
+    if (!contact) c.impulse = 0, c.tangent = 0;
   }
 }
 
@@ -187,19 +200,19 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
   const ContactTest test(w, dt, kSoftMargin * w.rmax);
   warm_entries_.clear();
   for (const Candidate& c : candidates_)
-    if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse});
+    if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse, c.tangent});
   warm_.assign(warm_entries_);  // a renumbering (below) re-keys it
   const double skin = reach <= 0.25 * kCandidateSkin * w.rmax ? kCandidateSkin * w.rmax : 0.0;
   const double extra = kSoftMargin * w.rmax + skin;
   candidates_.clear();
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
     const int k = static_cast<int>(candidates_.size()) - 1;
-    contacts_.push_back({{i, j, nx, ny, 0.0, candidates_[k].impulse * warm_scale_}, gap, 0.0, 0.0});
+    contacts_.push_back(warm_contact(i, j, nx, ny, gap, candidates_[k].impulse, candidates_[k].tangent));
     candidate_of_.push_back(k);
   };
   const auto keep = [&](int i, int j) {
-    const double warm = warm_.find(i, j);
-    candidates_.push_back({i, j, warm > 0 ? warm : 0.0});
+    const WarmStart::Entry* e = warm_.entry(i, j);
+    candidates_.push_back(e ? Candidate{i, j, e->impulse, e->tangent} : Candidate{i, j, 0.0, 0.0});
   };
   if (!no_pairs) {
     grid.build(w.p, w.r, 2.0 * w.rmax + 2.0 * reach + extra, pool, false, &start.bounds);
@@ -214,7 +227,7 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
       const double dx = px[a] - px[b], dy = py[a] - py[b];
       if (dx * dx + dy * dy >= lim * lim) return;
       keep(a, b);
-      if (!test.pair(a, b, add)) candidates_.back().impulse = 0;
+      if (!test.pair(a, b, add)) candidates_.back().impulse = 0, candidates_.back().tangent = 0;
     });
   }
   if (w.walls)
@@ -223,7 +236,7 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
         for (int side = 0; side < 2; ++side)
           if (w.wall_gap(i, axis, side) < reach + extra) {
             keep(i, wall_partner(axis, side));
-            if (!test.wall(i, axis, side, add)) candidates_.back().impulse = 0;
+            if (!test.wall(i, axis, side, add)) candidates_.back().impulse = 0, candidates_.back().tangent = 0;
           }
   built_at_ = w.p;
   built_reach_ = reach;
@@ -237,8 +250,8 @@ void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const Sta
   const double margin = kSoftMargin * w.rmax;
   const ContactTest test(w, dt, margin);
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
-    const double warm = warm_.find(i, j);
-    contacts_.push_back({{i, j, nx, ny, 0.0, warm > 0 ? warm * warm_scale_ : 0.0}, gap, 0.0, 0.0});
+    const WarmStart::Entry* e = warm_.entry(i, j);
+    contacts_.push_back(e ? warm_contact(i, j, nx, ny, gap, e->impulse, e->tangent) : warm_contact(i, j, nx, ny, gap, 0, 0));
   };
   // A pair, the lower number first, so the warm start finds it whichever cell order the grid gave
   // it this step.

@@ -4,6 +4,7 @@
 // radius (the soft step fixes each contact's normal for its step); each part gathers every pair
 // and wall that can touch within it on home's grid, runs the soft step (soft_step.h) warm started
 // from the last part's impulses, and lets islands sleep (sleep_islands.h).
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -49,6 +50,13 @@ class SoftResting {
   // Every contact gathered afresh on the grid, around the balls awake (with sleeping).
   void gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid, ForkJoin& pool,
                     const std::function<void()>& renumber_if_due);
+  // A contact of this part, starting from the impulses it ended the last part with (a substep's
+  // of that part: scaled to this part's substep).
+  SoftContact warm_contact(int i, int j, double nx, double ny, double gap, double impulse, double tangent) const {
+    SoftContact c{{i, j, nx, ny, 0.0, std::max(impulse, 0.0) * warm_scale_}, gap, 0.0, 0.0};
+    c.tangent_impulse = impulse > 0 ? tangent * warm_scale_ : 0.0;
+    return c;
+  }
 
   SoftStepSettings soft_;
   double max_stride_ = 0.5;
@@ -60,7 +68,7 @@ class SoftResting {
   // its contact ended the last part with.
   struct Candidate {
     int i, j;  // j < 0: a wall (wall_partner)
-    double impulse;
+    double impulse, tangent;  // normal and friction impulse (N s)
   };
   std::vector<Candidate> candidates_;
   std::vector<int> candidate_of_;  // per contact of the part: its candidate

@@ -27,8 +27,13 @@ struct Kernel {
   SoftStepScratch::Motion* __restrict m;
   const double* inv_masses;  // null: every ball has inv_mass0
   double inv_mass0;
+  // Friction: as SoftBodies (w null or mu 0: none).
+  double* w;
+  const double* radii;
+  double r0, k, mu;
 
   double inv_mass(int i) const { return inv_masses ? inv_masses[i] : inv_mass0; }
+  double radius(int i) const { return radii ? radii[i] : r0; }
 
   double normal_velocity(const SoftContact& c) const {
     double wx = m[c.i].vx, wy = m[c.i].vy;
@@ -52,6 +57,34 @@ struct Kernel {
     }
   }
 
+  // The velocity of i's contact point relative to j's along the tangent (-n_y, n_x).
+  double slip(const SoftContact& c) const {
+    double wx = m[c.i].vx, wy = m[c.i].vy, spin = w[c.i] * radius(c.i);
+    if (c.j >= 0) wx -= m[c.j].vx, wy -= m[c.j].vy, spin += w[c.j] * radius(c.j);
+    return wy * c.nx - wx * c.ny - spin;
+  }
+
+  // A tangential impulse on i (its opposite on j): it moves and turns both, w -= r Jt / I.
+  void apply_tangent(const SoftContact& c, double impulse) const {
+    const double mi = inv_mass(c.i) * impulse;
+    m[c.i].vx -= mi * c.ny, m[c.i].vy += mi * c.nx;
+    w[c.i] -= mi / (k * radius(c.i));
+    if (c.j >= 0) {
+      const double mj = inv_mass(c.j) * impulse;
+      m[c.j].vx += mj * c.ny, m[c.j].vy -= mj * c.nx;
+      w[c.j] -= mj / (k * radius(c.j));
+    }
+  }
+
+  // Friction after the normal update: the impulse that stops the slip, within mu times the
+  // normal impulse of this substep.
+  void solve_friction(SoftContact& c) const {
+    const double bound = mu * c.impulse;
+    const double total = std::clamp(c.tangent_impulse - slip(c) * c.tangent_mass, -bound, bound);
+    apply_tangent(c, total - c.tangent_impulse);
+    c.tangent_impulse = total;
+  }
+
   // One sequential-impulse update (Catto 2005) of contact c. Not touching: speculative, the pair
   // may close its separation within the substep h, no more. Touching: do not approach, and with
   // `push` move out of an overlap through the soft constraint, at most push_speed.
@@ -70,6 +103,7 @@ struct Kernel {
     apply(c, total - c.impulse);
     c.impulse = total;
     c.max_impulse = std::max(c.max_impulse, total);
+    if (mu > 0) solve_friction(c);
   }
 };
 
@@ -85,7 +119,8 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   scratch.motion.resize(n);
   SoftStepScratch::Motion* __restrict m = scratch.motion.data();
   for (int i = 0; i < n; ++i) m[i] = {b.vx[i], b.vy[i], 0.0, 0.0};
-  const Kernel k{m, b.inv_mass, b.inv_mass0};
+  const double mu = b.w ? b.mu : 0.0;
+  const Kernel k{m, b.inv_mass, b.inv_mass0, b.w, b.radius, b.r0, b.k, mu};
   for (SoftContact& c : contacts) c.vn0 = k.normal_velocity(c), c.max_impulse = 0;
   const double gxh = gx * h, gyh = gy * h;
   // Over every ball, or only over those that move (the others have inverse mass 0).
@@ -98,12 +133,15 @@ void soft_step(const SoftBodies& b, int n, std::vector<SoftContact>& contacts, d
   for (int step = 0; step < substeps; ++step) {
     for_moving([&](int i) { m[i].vx += gxh, m[i].vy += gyh; });
     for (const SoftContact& c : contacts) k.apply(c, c.impulse);
+    if (mu > 0)
+      for (const SoftContact& c : contacts) k.apply_tangent(c, c.tangent_impulse);
     for (int it = 0; it < s.substep_iterations; ++it)
       for (SoftContact& c : contacts) k.solve(c, inv_h, soft, true, s.push_speed);
     for_moving([&](int i) {
       const double mx = m[i].vx * h, my = m[i].vy * h;
       b.x[i] += mx, b.y[i] += my, m[i].dx += mx, m[i].dy += my;
     });
+    if (b.angle) for_moving([&](int i) { b.angle[i] += b.w[i] * h; });
     for (int it = 0; it < s.relax_iterations; ++it)
       for (SoftContact& c : contacts) k.solve(c, inv_h, soft, false, s.push_speed);
   }

@@ -9,6 +9,10 @@
 // from each contact's approach speed at the start of the step. Contact normals are fixed for the
 // step and the separation is tracked from the balls' displacements, so a contact that is not yet
 // touching is speculative (it may close its gap, not more: Catto, "Speculative Contacts", 2013).
+// With friction each contact also solves a tangential impulse after its normal one, clamped to the
+// friction cone |Jt| <= mu Jn (Coulomb's law as sequential impulses: Catto, GDC 2005), in the
+// substeps and in the relax sweeps, warm started as the normal one is; the tangent is
+// (-n_y, n_x) and the slip as in rough_impact.h.
 //
 // Plain data in, plain data out: the balls as arrays, the contacts as a vector; no grid, no state
 // of its own. The caller finds the contacts (every pair and wall that can touch within the step).
@@ -24,6 +28,8 @@ struct SoftContact : Contact {
   double gap;          // separation at the start of the step (m); negative when overlapping
   double vn0;          // relative normal velocity at the start of the step (m/s); < 0 approaching
   double max_impulse;  // the largest the impulse was during the step: restitution only where it pushed
+  double tangent_impulse = 0;  // friction's, one substep's as the normal impulse is (N s)
+  double tangent_mass = 0;     // effective mass along the tangent (rough_impact.h; kg); friction only
 };
 
 struct SoftStepSettings {
@@ -54,6 +60,13 @@ struct SoftBodies {
   // velocity, and the step does not touch them.
   const int* moving = nullptr;
   int moving_count = 0;
+  // Friction (mu > 0): angular velocities (rad/s) and angles (rad), counter-clockwise, the radii
+  // (null: every ball has r0) and the inertia factor k (I = k m r^2). Angles alone (mu = 0, w
+  // given): spins are kept and the angles turn.
+  double* w = nullptr;
+  double* angle = nullptr;
+  const double* radius = nullptr;
+  double r0 = 0, k = 0.5, mu = 0;
 };
 
 // Scratch the step reuses between calls (no allocation once warm).
