@@ -90,7 +90,15 @@ const std::map<std::string, std::map<Case, Expectation>>& table() {
         {Case::WallBounceLossy, {kDoubleRun, "exact reflection in double"}},
         {Case::HeadOn, {kDoubleRun, "one exact impulse in double"}},
         {Case::Drop, {1e-9, "exact parabola; compared without the Euler offset (see Drop)"}},
-        {Case::SeedBoxContained, {0, "event-driven walls: no ball may leave"}}}},
+        {Case::SeedBoxContained, {0, "event-driven walls: no ball may leave"}},
+        // Friction in closed form: sliding on the floor and rolling (measured 3.9e-15), the rough
+        // impacts (spin drop 1.3e-15 and 0, oblique 7.7e-16).
+        {Case::SlideToRollDisk, {kDoubleRun, "closed-form slide and roll"}},
+        {Case::SlideToRollSphere, {kDoubleRun, "closed-form slide and roll"}},
+        {Case::SpinDropSliding, {kDoubleRun, "the Coulomb impulse law, then the closed-form slide"}},
+        {Case::SpinDropSticking, {kDoubleRun, "the Coulomb impulse law, then rolling"}},
+        {Case::ObliqueSticking, {1e-9, "one rough impact in double"}},
+        {Case::ObliqueSliding, {1e-9, "one rough impact in double"}}}},
       // ODE (double) solves contacts as a soft LCP (CFM > 0), so a bounce is met to ~1e-7, not to
       // round-off. Measured: elastic wall 3.2e-7, lossy wall 1.6e-7, head-on 2.3e-8.
       {"ode/tuned",
@@ -390,7 +398,8 @@ double slide_to_roll(const std::string& engine, const std::string& profile, cons
 // normal force pass through that point too), is the same when it rolls (v = -w r):
 // v_final = (v0 - k r w0) / (1 + k) = -1 m/s. The impact's Coulomb impulse law sets how it gets
 // there: sticking needs a tangential impulse m k / (1 + k) 6 = 2 N s, within mu m 4.43 for mu
-// above 0.45. mu = 0.2: the ball slides off the impact (v 0.114, w 12.9) and rolls 0.83 s later;
+// above 0.45. mu = 0.2: the ball slides off the impact (v 0.114, w 12.9) and rolls 0.57 s later (slip 3.34 m/s
+// closing at mu g (1 + 1/k));
 // mu = 0.8: it rolls from the impact on. Figure: the relative error of the final speed.
 double spin_drop(const std::string& engine, const std::string& profile, double mu) {
   const Scene s = scene_from(fmt::format(R"(

@@ -229,12 +229,25 @@ bool sooner(const PredictedEvent& a, const PredictedEvent& b) {
   return ra == 0 ? a.j < b.j : a.j > b.j;  // walls and faces by code, -1 - j and -5 - j
 }
 
+// Why `exact` cannot run a scene in closed form, or "". A rough ball alone under gravity is exact
+// (flights, rough impacts, sliding and rolling on a wall: EXACT.md, "Friction"), and so are rough
+// balls without gravity (every impact binary); rough balls under gravity come to rest on one another,
+// a frictional multi-contact problem with no closed form (nor a unique hard-disk answer).
+std::string exact_refusal(const Scene& scene) {
+  if (scene.friction > 0 && scene.features().gravity && scene.n() > 1)
+    return "exact: rough balls resting on each other under gravity have no closed form; the reference is a "
+           "converged run";
+  return "";
+}
+
 class Exact final : public Engine {
  public:
   Exact(const Scene& scene, const ExactSettings& s)
       : s_(s),
         n_(scene.n()),
         e_(scene.restitution),
+        mu_(scene.friction),
+        k_(inertia_factor(scene.inertia)),
         g_{scene.gravity.x(), scene.gravity.y()},
         walls_(scene.container.kind == ContainerKind::Box),
         tc_(s.contact_time),
@@ -242,6 +255,8 @@ class Exact final : public Engine {
         v_wake_(s.wake_velocity),
         support_gap_(s.support_gap) {
     gravity_ = g_[0] != 0 || g_[1] != 0;
+    rot_ = scene.features().rotation;
+    rough_walls_ = mu_ > 0 && gravity_ && walls_;
     if (walls_) {
       box_lo_[0] = scene.container.min.x(), box_lo_[1] = scene.container.min.y();
       box_hi_[0] = scene.container.max.x(), box_hi_[1] = scene.container.max.y();
@@ -256,6 +271,16 @@ class Exact final : public Engine {
         v_[k][i] = scene.initial.vel(i, k);
         a_[k][i] = g_[k];
       }
+    }
+    if (rot_) {
+      w_.resize(n_), angle_.resize(n_);
+      for (int i = 0; i < n_; ++i) {
+        w_[i] = scene.spin(i);
+        angle_[i] = scene.initial.angle.size() == n_ ? scene.initial.angle(i) : 0.0;
+      }
+      alpha_.assign(n_, 0.0);
+      slip_.assign(n_, 0);
+      hold_.assign(n_, 0);
     }
     tl_.assign(n_, 0.0);
     jam_start_.assign(n_, -kNever);
@@ -288,6 +313,8 @@ class Exact final : public Engine {
       }
       if (ev.j >= 0) {
         on_pair(i, ev.j);
+      } else if (ev.j == kRollEvent) {
+        on_roll(i);
       } else if (!is_cell_face(ev.j)) {
         on_wall(i, wall_axis(ev.j), wall_side(ev.j));
       } else {
@@ -302,9 +329,11 @@ class Exact final : public Engine {
 
   void read(State& out) const override {
     out.t = t_;
-    out.resize(n_);
+    out.resize(n_, rot_);
     for (int i = 0; i < n_; ++i)
       for (int k = 0; k < 2; ++k) out.pos(i, k) = p_[k][i], out.vel(i, k) = v_[k][i];
+    if (rot_)
+      for (int i = 0; i < n_; ++i) out.w(i) = w_[i], out.angle(i) = angle_[i];
   }
 
   nlohmann::json settings() const override {
@@ -389,14 +418,21 @@ class Exact final : public Engine {
 
   // ---- motion ----
 
-  // Brings ball i along its parabola to time t (lazily: each ball keeps its own time).
+  // Brings ball i along its parabola to time t (lazily: each ball keeps its own time), and its
+  // angle with it: w changes at the constant rate alpha (friction while sliding on a wall, the
+  // rolling constraint while rolling), 0 in flight.
   void advance(int i, double t) {
     const double h = t - tl_[i];
-    if (h != 0)
+    if (h != 0) {
       for (int k = 0; k < 2; ++k) {
         p_[k][i] += (v_[k][i] + 0.5 * a_[k][i] * h) * h;
         v_[k][i] += a_[k][i] * h;
       }
+      if (rot_) {
+        angle_[i] += (w_[i] + 0.5 * alpha_[i] * h) * h;
+        w_[i] += alpha_[i] * h;
+      }
+    }
     tl_[i] = t;
   }
 
@@ -433,6 +469,10 @@ class Exact final : public Engine {
           const double t1 = gap_closing_time(face(k, c + 1) - x, -v, -0.5 * a, 0.0, 0.0, 0.0);
           if (t1 < kNever) offer({now_ + t1, i, cell_face(k, 1)});
         }
+      }
+      if (rough_walls_ && slip_[i] != 0) {
+        const double t = roll_time(i);
+        if (t < kNever) offer({now_ + t, i, kRollEvent});
       }
     }
     for_each_near(i, [&](int j) {
@@ -552,16 +592,149 @@ class Exact final : public Engine {
       settle_cluster(i, -1, true);
       return repredict_touched();
     }
+    // The tangential impulse of a rough wall, from the slip at impact (the normal impulse leaves it).
+    if (mu_ > 0) wall_friction(i, axis, sign, u < v_rest_ ? 0.0 : e_, u);
     if (u < v_rest_) {
       // Too slow to be a bounce: the normal motion stops. The ball sleeps if the walls and
       // sleeping balls it touches carry its weight; pressed against this wall by gravity it
       // slides along it (the axis is held: no normal velocity or acceleration).
       v = 0;
-      if (-g_[axis] * sign > 0) a_[axis][i] = 0;
+      if (-g_[axis] * sign > 0) {
+        a_[axis][i] = 0;
+        if (rough_walls_) hold_[i] |= static_cast<uint8_t>(1 << axis);
+      }
       try_sleep(i);
+      set_motion(i);
       return repredict_touched();
     }
     v = e_ * u * sign;
+    set_motion(i);
+    repredict_touched();
+  }
+
+  // The rough part of ball i's impact on the wall of `axis` with inward normal `sign` (approach
+  // speed u, restitution e): rough_impact's tangential impulse against the slip u_t = v.t - w r
+  // (the wall has infinite mass and does not turn). The normal part is on_wall's. Under gravity an
+  // impulse along the other axis that drives the ball into a wall it touches there needs both walls
+  // at once (a corner): no closed form, so the run fails with the reason. One that lifts it off a
+  // wall it slides on frees it.
+  void wall_friction(int i, int axis, double sign, double e, double u) {
+    const int b = 1 - axis;
+    const double ts = tangent_sign(axis, sign);
+    const double r = r_[i], m = 1.0 / im_[i];
+    const double u_t = v_[b][i] * ts - w_[i] * r;
+    const RoughImpulse P = rough_impact(-u, u_t, e, mu_, m, tangent_mass(im_[i], 0.0, k_));
+    v_[b][i] += P.tangent * ts * im_[i];
+    w_[i] -= P.tangent * im_[i] / (k_ * r);  // r P_t / I with I = k m r^2
+    if (!rough_walls_) return;
+    const double noise = velocity_noise(speed(i));
+    const double vb = v_[b][i];
+    const int toward = vb < 0 ? 0 : 1;  // the wall on axis b the ball now moves towards
+    const double gap = toward == 0 ? p_[b][i] - r - box_lo_[b] : box_hi_[b] - r - p_[b][i];
+    if (std::abs(vb) > noise && gap <= kTouch * r)
+      throw std::runtime_error(fmt::format(
+          "exact: ball {} at t = {} s is struck by a rough wall into the wall it touches across it (a corner): two "
+          "rough contacts at once have no closed form",
+          i, now_));
+    if (hold_[i] & (1 << b)) {
+      if (std::abs(vb) > noise) {
+        hold_[i] &= static_cast<uint8_t>(~(1 << b));  // lifted off
+        a_[b][i] = g_[b];
+      } else {
+        v_[b][i] = 0;
+      }
+    }
+  }
+
+  // The wall of axis `ax` that gravity presses a ball against: its inward normal's sign along ax.
+  double inward(int ax) const { return g_[ax] < 0 ? 1.0 : -1.0; }
+  // The sign along the other axis of the tangent t = (-n_y, n_x) of a wall of axis `ax` whose
+  // inward normal has sign `sign` (rough_impact.h's convention, the wall as partner j).
+  static double tangent_sign(int ax, double sign) { return ax == 1 ? -sign : sign; }
+
+  // Ball i's accelerations for its state on the walls (rough_walls_ only): free (gravity, w
+  // constant), or held on one wall by gravity, where Coulomb friction mu N (N = m G, G the part of
+  // gravity into the wall) acts at the contact point against the slip s = v_t - w r:
+  //   sliding (s != 0): a_t = g_t - mu G sgn(s),  dw/dt = mu G sgn(s) / (k r),
+  //     so ds/dt = g_t - mu G sgn(s) (1 + k) / k, linear in time (the roll event);
+  //   rolling (s = 0, w = v_t / r): a_t = g_t / (1 + k), dw/dt = a_t / r, which needs the static
+  //     friction m g_t k / (1 + k); beyond mu m G it slides in the direction of g_t.
+  // (Newton's laws for the centre and the rotation about it, torque -r F for a force F t at the
+  // contact point -r n; Goldstein, Classical Mechanics, ch. 1 and 5.) Held on both walls of a
+  // corner it is at rest; spinning there it would need both walls' friction at once: the run fails.
+  void set_motion(int i) {
+    if (!rough_walls_) return;
+    const int held = hold_[i];
+    if (held == 0) {
+      for (int k = 0; k < 2; ++k) a_[k][i] = g_[k];
+      alpha_[i] = 0, slip_[i] = 0;
+      return;
+    }
+    if (held == 3) {
+      if (std::abs(w_[i]) * r_[i] > kRestSlop * v_rest_)
+        throw std::runtime_error(fmt::format(
+            "exact: ball {} at t = {} s rests in a corner spinning at {} rad/s: friction at two walls at once has no "
+            "closed form",
+            i, now_, w_[i]));
+      w_[i] = 0, alpha_[i] = 0, slip_[i] = 0;
+      return;
+    }
+    const int ax = held == 1 ? 0 : 1, b = 1 - ax;
+    const double sign = inward(ax), ts = tangent_sign(ax, sign);
+    const double G = -g_[ax] * sign, gt = g_[b] * ts, r = r_[i];
+    const double vt = v_[b][i] * ts;
+    const double slip = vt - w_[i] * r;
+    const double noise = kVelocityNoise * (std::abs(vt) + std::abs(w_[i]) * r);
+    double at, alpha;
+    int s = 0;
+    if (std::abs(slip) <= noise && std::abs(gt) * k_ <= mu_ * G * (1 + k_)) {
+      w_[i] = vt / r;
+      at = gt / (1 + k_);
+      alpha = at / r;
+    } else {
+      s = std::abs(slip) <= noise ? (gt > 0 ? 1 : -1) : (slip > 0 ? 1 : -1);
+      at = gt - mu_ * G * s;
+      alpha = mu_ * G * s / (k_ * r);
+    }
+    a_[ax][i] = 0;
+    a_[b][i] = at * ts;
+    alpha_[i] = alpha, slip_[i] = static_cast<int8_t>(s);
+    // Standing against a wall across the slide, pushed into it by friction alone: a corner.
+    const double push = a_[b][i];
+    if (push != 0 && std::abs(v_[b][i]) <= velocity_noise(speed(i))) {
+      const int side = push < 0 ? 0 : 1;
+      const double gap = side == 0 ? p_[b][i] - r - box_lo_[b] : box_hi_[b] - r - p_[b][i];
+      const bool gravity_presses = side == 0 ? g_[b] < 0 : g_[b] > 0;  // then it is held there next
+      if (gap <= kTouch * r && !gravity_presses)
+        throw std::runtime_error(fmt::format(
+            "exact: ball {} at t = {} s is driven by friction into the wall it touches across its slide (a corner): "
+            "two rough contacts at once have no closed form",
+            i, now_));
+    }
+  }
+
+  // When ball i's slip on the wall it slides on reaches zero (s(tau) = s0 + (ds/dt) tau, set_motion),
+  // or kNever. The rate is a sum of the closed-form terms, never a difference of nearly equal
+  // velocities; s0 is the slip itself.
+  double roll_time(int i) const {
+    const int ax = hold_[i] == 1 ? 0 : 1, b = 1 - ax;
+    const double sign = inward(ax), ts = tangent_sign(ax, sign);
+    const double G = -g_[ax] * sign, gt = g_[b] * ts, s = slip_[i];
+    const double s0 = (v_[b][i] * ts - w_[i] * r_[i]) * s;  // |slip| while it keeps its sign
+    const double closing = mu_ * G * (1 + k_) / k_ - gt * s;  // -d|s|/dt
+    if (!(closing > 0)) return kNever;
+    return s0 <= 0 ? 0.0 : s0 / closing;
+  }
+
+  // The slip of a sliding ball reached zero: it rolls from here (set_motion decides whether static
+  // friction can hold it; if not it slides on the other way).
+  void on_roll(int i) {
+    bump(i);
+    advance(i, now_);
+    touch(i);
+    const int ax = hold_[i] == 1 ? 0 : 1, b = 1 - ax;
+    w_[i] = v_[b][i] * tangent_sign(ax, inward(ax)) / r_[i];  // the event is the moment the slip is zero
+    set_motion(i);
     repredict_touched();
   }
 
@@ -592,6 +765,7 @@ class Exact final : public Engine {
         if (pressed(press, Ax, Ay, kVelocityNoise * (speed(i) + speed(j)))) out = std::max(out, 0.5 * press * tc_);
         const double J = (out - wn) / (wi + wj);
         if (J > 0) {
+          if (mu_ > 0) pair_friction(i, j, n, wn, wi, wj);
           for (int k = 0; k < 2; ++k) v_[k][i] += J * wi * n[k], v_[k][j] -= J * wj * n[k];
           for (int b : {i, j})
             if (!asleep_[b]) touch(b), after_impulse(b);
@@ -601,6 +775,20 @@ class Exact final : public Engine {
     for (int b : {i, j})
       if (jammed(b)) try_sleep(b);
     repredict_touched();
+  }
+
+  // The rough part of the impact of balls i and j (normal n from j to i, normal velocity wn < 0,
+  // inverse masses wi, wj: 0 for a sleeping ball, which neither moves nor turns): rough_impact's
+  // tangential impulse P_t t on i, -P_t t on j, against the slip u_t = (v_i - v_j).t - (w_i r_i +
+  // w_j r_j). The normal impulse is on_pair's; normal and tangent decouple for disks.
+  void pair_friction(int i, int j, const double* n, double wn, double wi, double wj) {
+    const double t[2] = {-n[1], n[0]};
+    const double u_t =
+        (v_[0][i] - v_[0][j]) * t[0] + (v_[1][i] - v_[1][j]) * t[1] - (w_[i] * r_[i] + w_[j] * r_[j]);
+    const double P = rough_impact(wn, u_t, e_, mu_, 1.0 / (wi + wj), tangent_mass(wi, wj, k_)).tangent;
+    for (int k = 0; k < 2; ++k) v_[k][i] += P * wi * t[k], v_[k][j] -= P * wj * t[k];
+    w_[i] -= P * wi / (k_ * r_[i]);  // r P_t / I with I = k m r^2
+    w_[j] -= P * wj / (k_ * r_[j]);
   }
 
   // A slow impact (below rest_velocity) is a ball settling into contact, usually among others that
@@ -619,6 +807,10 @@ class Exact final : public Engine {
   // its contacts settled the same way whatever their speed (`jammed`): a sustained multi-contact,
   // as in the TC model, here taken as perfectly inelastic.
   void settle_cluster(int i, int j, bool jammed) {
+    if (mu_ > 0)
+      throw std::runtime_error(fmt::format(
+          "exact: ball {} at t = {} s needs a multi-contact settle ({}), where friction has no closed form", i, now_,
+          jammed ? "the jam rule: many collisions within contact_time" : "an impact slower than rest_velocity"));
     ++cluster_stamp_;
     cluster_.clear();
     contacts_.clear();
@@ -930,8 +1122,9 @@ class Exact final : public Engine {
 
   // After a slow impact: a ball now slower than rest_velocity whose weight the walls and sleeping
   // balls it touches carry goes to sleep.
+  // A rough ball on a wall rolls on (exactly), so it never sleeps.
   void try_sleep(int i) {
-    if (asleep_[i] || !s_.sleep || !gravity_) return;
+    if (asleep_[i] || !s_.sleep || !gravity_ || mu_ > 0) return;
     if (!jammed(i) && (speed(i) >= v_rest_ || !supported(i))) return;
     asleep_[i] = 1;
     for (int k = 0; k < 2; ++k) v_[k][i] = 0, a_[k][i] = 0;
@@ -1023,6 +1216,8 @@ class Exact final : public Engine {
   ExactSettings s_;
   int n_;
   double e_;
+  double mu_;  // Coulomb coefficient, ball-ball and ball-wall
+  double k_;   // inertia factor: I = k m r^2
   double g_[2];
   bool gravity_ = false;
   bool walls_;
@@ -1038,6 +1233,13 @@ class Exact final : public Engine {
   std::vector<int> events_;           // events this step, against the budget
   std::vector<double> jam_start_;     // start of each ball's current window of t_c (s)
   std::vector<int> jam_count_;        // its events in that window
+
+  // Rotation, only for a scene that rotates (rot_); sliding and rolling, only with rough_walls_.
+  bool rot_ = false;
+  bool rough_walls_ = false;          // friction under gravity in a box: a ball on a wall slides, then rolls
+  std::vector<double> w_, angle_, alpha_;  // angular velocity (rad/s), angle (rad), dw/dt (rad/s^2) at tl_
+  std::vector<int8_t> slip_;          // sliding on a wall: the sign of the slip; 0: rolling (or not on a wall)
+  std::vector<uint8_t> hold_;         // bit k: held on the wall of axis k that gravity presses it against
 
   // Grid: singly-indexed cells, intrusive doubly-linked lists of balls.
   double grid_lo_[2] = {0, 0}, width_[2] = {1, 1};
@@ -1078,7 +1280,8 @@ EngineEntry exact_engine() {
   info.caps.continuous_collision = true;
   info.caps.deterministic = true;
   info.caps.any_restitution = true;
-  info.caps.friction = false;  // frictionless disks: no rotation
+  info.caps.friction = true;  // closed-form cases only: `refuses` names the rest
+  info.refuses = exact_refusal;
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             ExactSettings s;
             SettingsReader r("exact", overrides);
@@ -1091,6 +1294,7 @@ EngineEntry exact_engine() {
             r.get("max_events_per_ball", s.max_events_per_ball);
             r.finish();
             if (s.max_events_per_ball < 1) throw InputError("settings.exact.max_events_per_ball: must be >= 1");
+            if (const std::string why = exact_refusal(scene); !why.empty()) throw SceneUnsupported(why);
             const double rmin = scene.n() > 0 ? scene.radius.minCoeff() : 1.0;
             const double rmax = scene.n() > 0 ? scene.radius.maxCoeff() : 1.0;
             if (s.cell_size > 0 && s.cell_size < 2 * rmax)

@@ -1,7 +1,8 @@
 #pragma once
 // `exact`: the event-driven reference solver. No time step inside: balls fly on exact parabolas
-// between collisions found as polynomial roots. Algorithm and the reasons for its rules:
-// core/solver/EXACT.md.
+// between collisions found as polynomial roots; with friction, impacts are those of rough disks and
+// a ball on a wall slides and rolls in closed form, and scenes without a closed form are refused.
+// Algorithm and the reasons for its rules: core/solver/EXACT.md.
 #include <nlohmann/json.hpp>
 
 #include "engine.h"
