@@ -31,9 +31,9 @@ struct RunOptions {
   TrajectoryCsv* trajectory = nullptr;
   // Run this engine (normally `exact`) in lockstep and report the error against it; null: none.
   const EngineEntry* reference = nullptr;
-  // Where `reference` refuses the scene (exact has no friction): this engine's first profile at
-  // dt / kConvergedSubsteps stands in, a converged run (registry.h's converged_reference_engine());
-  // null: no error is reported for such a scene.
+  // Where `reference` refuses the scene (exact: rough balls on each other under gravity): this
+  // engine's first profile at dt / kConvergedSubsteps stands in, a converged run (registry.h's
+  // converged_reference_engine()); null: no error is reported for such a scene.
   const EngineEntry* converged_reference = nullptr;
   // Points kept in Result::series (energy, centre of mass, a few tracks) for the report's figures.
   int series_points = 300;
