@@ -33,7 +33,10 @@ std::string unsupported_reason(const EngineInfo& info, const Scene& scene) {
   if (!f.equal_masses && !info.caps.per_ball_mass) missing.push_back("balls of different masses");
   if (!f.frictionless && !info.caps.friction) missing.push_back("friction (it has no rotation: friction would be ignored)");
   else if (f.rotation && !info.caps.friction) missing.push_back("spin (it has no rotation: the spin would be dropped)");
-  if (missing.empty()) return info.refuses ? info.refuses(scene) : "";
+  if (missing.empty()) {
+    const std::string refusal = info.refuses ? info.refuses(scene) : "";
+    return refusal.empty() ? "" : fmt::format("{} cannot run scene '{}': {}", info.name, scene.name, refusal);
+  }
   return fmt::format("{} cannot run scene '{}': it needs {}", info.name, scene.name, fmt::join(missing, ", "));
 }
 

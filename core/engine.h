@@ -101,7 +101,8 @@ struct EngineInfo {
   // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
   bool costly_runs = false;
   // Why the engine cannot run a scene that its capabilities allow, judged from the scene alone
-  // (say, friction under gravity among several balls, where `exact` has no closed form), or "".
+  // (say, friction under gravity among several balls, where `exact` has no closed form), or "";
+  // unsupported_reason puts "NAME cannot run scene 'S': " before it.
   // unsupported_reason asks it, so the runner refuses such a run and a reference that refuses is
   // replaced by a converged run, before anything is built.
   std::function<std::string(const Scene&)> refuses;

@@ -235,8 +235,7 @@ bool sooner(const PredictedEvent& a, const PredictedEvent& b) {
 // a frictional multi-contact problem with no closed form (nor a unique hard-disk answer).
 std::string exact_refusal(const Scene& scene) {
   if (scene.friction > 0 && scene.features().gravity && scene.n() > 1)
-    return "exact: rough balls resting on each other under gravity have no closed form; the reference is a "
-           "converged run";
+    return "rough balls resting on each other under gravity have no closed form (the reference is a converged run)";
   return "";
 }
 
@@ -1294,7 +1293,7 @@ EngineEntry exact_engine() {
             r.get("max_events_per_ball", s.max_events_per_ball);
             r.finish();
             if (s.max_events_per_ball < 1) throw InputError("settings.exact.max_events_per_ball: must be >= 1");
-            if (const std::string why = exact_refusal(scene); !why.empty()) throw SceneUnsupported(why);
+            if (const std::string why = exact_refusal(scene); !why.empty()) throw SceneUnsupported("exact: " + why);
             const double rmin = scene.n() > 0 ? scene.radius.minCoeff() : 1.0;
             const double rmax = scene.n() > 0 ? scene.radius.maxCoeff() : 1.0;
             if (s.cell_size > 0 && s.cell_size < 2 * rmax)
