@@ -53,6 +53,14 @@ struct Result {
   // Jitter: RMS speed of the final state (m/s), for scenes with gravity and walls, where balls
   // should come to rest (a pile); none elsewhere.
   std::optional<double> jitter;
+  // Scenes that ask for `rolling` (metrics/rolling.h): the ball's final velocity along x (m/s) and
+  // the closed forms it is judged against (from the scene); none elsewhere.
+  struct Rolling {
+    std::optional<double> speed, expected_speed, expected_time_to_roll;
+  } rolling;
+  // Scenes that ask for `angle_of_repose` (metrics/angle_of_repose.h): the final heap's (degrees);
+  // none elsewhere, or where no flank could be measured.
+  std::optional<double> angle_of_repose;
   std::vector<std::string> skipped;  // metrics not computed for this scene, each with the reason
   // Sampled every ~steps / RunOptions::series_points steps, for figures: time (s), energy (J),
   // centre of mass (m), position RMS error against the reference (m; empty without one), the

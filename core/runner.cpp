@@ -12,6 +12,8 @@
 
 #include "input_error.h"
 #include "interrupt.h"
+#include "metrics/angle_of_repose.h"
+#include "metrics/rolling.h"
 #include "metrics/speed_distribution.h"
 #include "trajectory_csv.h"
 
@@ -295,6 +297,19 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     r.jitter = std::sqrt(state.vel.rowwise().squaredNorm().mean());
   else
     r.skipped.push_back("jitter (final RMS speed): only for scenes with gravity and walls, where balls come to rest");
+  if (scene.metrics.rolling) {
+    const RollingClosedForm closed = rolling_closed_form(scene);
+    r.rolling.speed = state.vel(0, 0);
+    r.rolling.expected_speed = closed.speed;
+    r.rolling.expected_time_to_roll = closed.time_to_roll;
+  }
+  if (scene.metrics.angle_of_repose) {
+    r.angle_of_repose = angle_of_repose(state, scene);
+    if (!r.angle_of_repose)
+      r.skipped.push_back(fmt::format("{}: no flank of the final heap had {} columns within [{:g} H, {:g} H] of its "
+                                      "height H (a layer spread flat, or a column standing)",
+                                      kReposeUnmeasuredNote, kReposeMinColumns, kReposeBandLow, kReposeBandHigh));
+  }
   if (scene.features().gravity || scene.features().walls)
     r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
   if (!r.metrics.slip.measured)

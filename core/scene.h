@@ -39,6 +39,12 @@ enum class Inertia {
 double inertia_factor(Inertia inertia);  // k
 const char* inertia_name(Inertia inertia);  // "disk", "sphere"
 
+// Metrics a scene asks for in its [metrics] table, beyond those every run gets: each is computed
+// only where asked, since each needs a scene built for it (scenarios/README.md).
+struct RequestedMetrics {
+  bool rolling = false;          // one ball on the floor: its final speed against the closed forms (metrics/rolling.h)
+  bool angle_of_repose = false;  // a heap on the floor: the slope of its flanks (metrics/angle_of_repose.h)
+};
 
 struct Scene {
   std::string name;
@@ -49,6 +55,7 @@ struct Scene {
   double restitution = 1.0;    // ball-ball and ball-wall, normal component
   double friction = 0.0;       // Coulomb coefficient, ball-ball and ball-wall
   Inertia inertia = Inertia::disk;
+  RequestedMetrics metrics;
   bool allow_overlap = false;  // balls may start overlapping (the thesis's random placement does)
   Container container;
   Eigen::VectorXd radius;      // (n, m)

@@ -388,6 +388,28 @@ int offset_seeds(toml::table& doc, int64_t offset) {
   return tables;
 }
 
+// [metrics]: what a scene asks for beyond every run's metrics, each checked against what it needs
+// (read after the balls, the container and gravity it is checked against).
+void read_requested_metrics(const toml::node& node, const std::string& source, Scene& s) {
+  if (!node.is_table())
+    throw InputError(fmt::format("{}:{}: metrics: expected a table [metrics], got {}", source, node.source().begin.line,
+                                 node_type_name(node)));
+  TableReader r(*node.as_table(), source, "metrics");
+  r.check_keys({"rolling", "angle_of_repose"});
+  s.metrics.rolling = r.boolean("rolling", false);
+  s.metrics.angle_of_repose = r.boolean("angle_of_repose", false);
+  // Both measure against a floor: the box's bottom wall, with gravity straight down onto it.
+  const bool floor = s.container.kind == ContainerKind::Box && s.gravity.x() == 0 && s.gravity.y() < 0;
+  if (s.metrics.rolling) {
+    if (!floor) r.fail(r.node("rolling"), "rolling", "needs a floor: a box container and gravity straight down [0, -g]");
+    if (s.n() != 1) r.fail(r.node("rolling"), "rolling", fmt::format("needs exactly one ball, the scene has {}", s.n()));
+    if (!(s.friction > 0)) r.fail(r.node("rolling"), "rolling", "needs friction above 0 (a frictionless ball never rolls)");
+  }
+  if (s.metrics.angle_of_repose && !floor)
+    r.fail(r.node("angle_of_repose"), "angle_of_repose",
+           "needs a floor: a box container and gravity straight down [0, -g]");
+}
+
 Scene parse_scene_text(const std::string& toml_text, const std::string& source, int64_t seed_offset) {
   toml::table doc;
   try {
@@ -400,7 +422,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
   top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction", "inertia",
-                  "allow_overlap", "container", "ball", "random", "lattice", "settings"});
+                  "allow_overlap", "container", "ball", "random", "lattice", "metrics", "settings"});
 
   Scene s;
   s.source = source;
@@ -499,6 +521,8 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
                                    source, balls.line[j], i, j, balls.line[i], balls.line[j]));
     }
   }
+
+  if (const toml::node* m = top.node("metrics")) read_requested_metrics(*m, source, s);
 
   if (const toml::node* st = top.node("settings")) {
     if (!st->is_table()) top.fail(st, "settings", "expected tables [settings.ENGINE]");

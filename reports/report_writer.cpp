@@ -12,6 +12,7 @@
 #include "json_value.h"
 #include "metrics/catalog.h"
 #include "ensemble.h"
+#include "friction_section.h"
 #include "ordered_set.h"
 #include "runner.h"
 
@@ -565,6 +566,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     put_figures(put, figures, "picture", scene);
     put_figures(put, figures, "animation", scene);
   }
+  put("{}", friction_section(in.results, scene_order));
   for (const SweepResult& sw : in.sweeps) put_sweep(put, sw, figures);
   if (in.bench && !in.bench->rows.empty()) put_scaling(put, in, *in.bench, figures);
   if (in.harness && !in.harness->harness.empty()) put_harness(put, *in.harness);
@@ -600,7 +602,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   for (const MetricDef& m : metric_catalog())
     if (!m.column.empty()) put("- **{}**{}: {}.\n", m.column, m.unit.empty() ? "" : fmt::format(" ({})", m.unit), m.definition(cfg));
   put("- **pos error vs reference**: position RMS error over balls against the event-driven `exact` engine run in "
-      "lockstep (for a scene `exact` cannot run, such as one with friction, a converged run stands in: the scene "
+      "lockstep (for a scene `exact` cannot run, such as rough balls on each other under gravity, a converged run stands in: the scene "
       "stepped by Chipmunk at dt / {}, named under the scene's table), at the last step; **horizon**: the first time that error exceeded a tenth of the mean radius "
       "(chaotic scenes part from any reference, so this says more than a long-run RMS; `never`: it stayed within). "
       "Where `exact` itself failed, the comparison runs up to that step.\n",

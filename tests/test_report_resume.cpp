@@ -65,7 +65,7 @@ max = [1.0, 1.0]
 count = 3
 radius = 0.1
 )";
-    // The friction scenes, tiny too: one ball sliding, three rough ones.
+    // The friction scenes, tiny too: one ball sliding, one dropped spinning, three rough ones.
     std::ofstream(root_ / "scenarios" / "slide-to-roll.toml") << R"(name = "slide-to-roll"
 dt = 0.01
 duration = 0.2
@@ -79,6 +79,41 @@ max = [2.0, 1.0]
 pos = [0.5, 0.1]
 vel = [1.0, 0.0]
 radius = 0.1
+[metrics]
+rolling = true
+)";
+    std::ofstream(root_ / "scenarios" / "spin-drop.toml") << R"(name = "spin-drop"
+dt = 0.01
+duration = 0.3
+gravity = [0.0, -9.81]
+restitution = 0.0
+friction = 0.2
+[container]
+min = [0.0, 0.0]
+max = [2.0, 1.0]
+[[ball]]
+pos = [0.5, 0.3]
+vel = [1.0, 0.0]
+spin = 10.0
+radius = 0.1
+[metrics]
+rolling = true
+)";
+    // The heaps: four balls in a stack that falls over, with friction and without.
+    for (const auto& [name, friction] : {std::pair{"rough-pile", "0.5"}, std::pair{"smooth-pile", "0.0"}})
+      std::ofstream(root_ / "scenarios" / (std::string(name) + ".toml")) << "name = \"" << name << R"("
+dt = 0.01
+duration = 0.3
+gravity = [0.0, -9.81]
+restitution = 0.2
+friction = )" << friction << R"(
+ball = [{ pos = [0.0, 0.1], radius = 0.1 }, { pos = [0.21, 0.1], radius = 0.1 }, { pos = [0.1, 0.3], radius = 0.1 },
+        { pos = [0.12, 0.5], radius = 0.1 }]
+[container]
+min = [-1.0, 0.0]
+max = [1.0, 1.0]
+[metrics]
+angle_of_repose = true
 )";
     std::ofstream(root_ / "scenarios" / "rough-box.toml") << R"(name = "rough-box"
 dt = 0.01
@@ -132,7 +167,13 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            "| exact | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 | 0.500 |",
                            "| exact | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 | 0.900 |",
                            // the seed scenes over three placements, with intervals
-                           "Over 3 random placements", "| exact | 3 |"})
+                           "Over 3 random placements", "| exact | 3 |",
+                           // the friction section: rolling against the closed forms, engines without friction
+                           // refusing with the reason, and both heaps' angles side by side
+                           "## Friction", "### `slide-to-roll`: rolling against the closed form",
+                           "### `spin-drop`: rolling against the closed form",
+                           "| home-seed | default | unsupported: home-seed cannot run scene 'spin-drop'",
+                           "| engine | `rough-pile` (deg) | `smooth-pile` (deg) |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
   // The seed scenes in motion: an animated GIF each (one graphic control block per frame), under 2 MB.
@@ -228,7 +269,8 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());
   EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "run.json", "seed-box.json", "seed-bowl.json",
-                                          "slide-to-roll.json", "rough-box.json", "stress-seed-box.json",
+                                          "slide-to-roll.json", "spin-drop.json", "rough-box.json", "rough-pile.json",
+                                          "smooth-pile.json", "stress-seed-box.json",
                                           "sweep-seed-box.csv", "sweep-seed-box.json"}));
   const std::string md = slurp(merged / "REPORT.md");
   for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "json_value.h"
+#include "metrics/angle_of_repose.h"
 #include "result.h"
 
 namespace ballbench {
@@ -207,6 +208,39 @@ std::vector<MetricDef> build_catalog() {
             fixed("the RMS speed of the final state, for scenes with gravity and walls, where balls should come to "
                   "rest (a pile)"),
             [](auto& r) -> auto& { return r.jitter; }));
+  // Asked for by a scene's [metrics] table (scenarios/README.md): none elsewhere.
+  shown(add(field("rolling.speed", "m/s",
+                  fixed("one ball on the floor (scenes that ask for `rolling`): its velocity along x in the final state, "
+                        "to judge against the closed form"),
+                  [](auto& r) -> auto& { return r.rolling.speed; })),
+        "final speed (m/s)", "v.final", false)
+      .regress = kReal;
+  shown(add(field("rolling.expected_speed", "m/s",
+            fixed("the closed form it must end at, rolling: v_roll = (v0 - k r w0) / (1 + k) for I = k m r^2 (its "
+                  "angular momentum about the contact point is kept; slide to roll: v0 / (1 + k))"),
+            [](auto& r) -> auto& { return r.rolling.expected_speed; })),
+        "closed-form speed (m/s)", "", false)
+      .regress = kReal;
+  shown(add(field("rolling.expected_time_to_roll", "s",
+            fixed("the closed form of the time it starts to roll: the slip u = v + w r after its first contact over "
+                  "mu g (1 + 1 / k), the rate sliding friction takes it off (slide to roll: v0 k / ((1 + k) mu g)); "
+                  "a drop with restitution 0 adds the fall and the impact's Coulomb impulse; none for a ball that "
+                  "bounces"),
+            [](auto& r) -> auto& { return r.rolling.expected_time_to_roll; })),
+        "closed-form time to roll (s)", "", false)
+      .regress = kReal;
+  shown(add(field("angle_of_repose", "deg",
+                  fixed(fmt::format(
+                      "the slope of the final heap's flanks (scenes that ask for `angle_of_repose`): the floor cut "
+                      "into columns one mean diameter wide, each column's height the top of its highest ball; on "
+                      "each side of the highest column (height H), a least-squares line through the columns from it "
+                      "outward whose height is within [{0:g} H, {1:g} H] (at least {2}; the walk stops at the first "
+                      "column below {0:g} H), its angle atan |slope|; the mean over both flanks (none: neither had "
+                      "{2} columns in the band). A heap spread flat measures near 0, or none",
+                      kReposeBandLow, kReposeBandHigh, kReposeMinColumns)),
+                  [](auto& r) -> auto& { return r.angle_of_repose; })),
+        "angle of repose (deg)", "repose", false)
+      .regress = kReal;
   add(field("speed_ks", "",
             fixed("the Kolmogorov-Smirnov statistic of the final speeds against the 2D Maxwell-Boltzmann (Rayleigh) "
                   "law, for elastic, gravity-free scenes of 100+ equal balls"),

@@ -1,0 +1,160 @@
+#include "friction_section.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "metrics/angle_of_repose.h"
+#include "ordered_set.h"
+
+namespace ballbench {
+namespace {
+
+// Appends formatted text; the format string is checked at compile time.
+struct Markdown {
+  fmt::memory_buffer out;
+  template <class... Args>
+  void operator()(fmt::format_string<Args...> f, Args&&... args) {
+    fmt::format_to(std::back_inserter(out), f, std::forward<Args>(args)...);
+  }
+};
+
+// A markdown table cell: a `|` would end it.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (char c : text) c == '|' ? out += "\\|" : out += c;
+  return out;
+}
+
+// A run that made no step (refused, or failed to build) has no figures: its status and why.
+bool ran(const Result& r) { return r.steps_done > 0; }
+std::string status_text(const Result& r) {
+  if (r.status == "ok") return "ok";
+  return r.error.empty() ? r.status : fmt::format("{}: {}", r.status, cell(r.error));
+}
+
+std::string or_dash(const std::optional<double>& v, const char* format) {
+  return v ? fmt::format(fmt::runtime(format), *v) : "-";
+}
+
+std::string source_text(const Result& r) {
+  const std::filesystem::path p(r.scene_source);
+  return p.parent_path().filename() == "scenarios" ? "scenarios/" + p.filename().string() : r.scene_source;
+}
+
+// One scene of a ball rolling on the floor: final speed and time to roll against the closed forms.
+void put_rolling(Markdown& put, const std::string& scene, const std::vector<const Result*>& rows) {
+  const Result* any = nullptr;
+  for (const Result* r : rows)
+    if (r->rolling.expected_speed) any = r;
+  put("### `{}`: rolling against the closed form\n\n", scene);
+  put("`{}`; closed forms from the scene (core/metrics/rolling.h): it ends rolling at **{:.4g} m/s**{}.\n\n",
+      source_text(*any), *any->rolling.expected_speed,
+      any->rolling.expected_time_to_roll ? fmt::format(" from t = **{:.3f} s**", *any->rolling.expected_time_to_roll) : "");
+  put("The time to roll is the first sample from which the ball rolls (slip below the roll tolerance), so it lies "
+      "up to a step after the closed form; `never`: still slipping at the end.\n\n");
+  put("| engine | profile | status | final speed (m/s) | vs closed form | time to roll (s) | vs closed form | slip at end "
+      "(m/s) |\n|---|---|---|---:|---:|---:|---:|---:|\n");
+  for (const Result* r : rows) {
+    if (!ran(*r)) {
+      put("| {} | {} | {} | - | - | - | - | - |\n", r->engine, r->profile, status_text(*r));
+      continue;
+    }
+    const auto& roll = r->rolling;
+    std::string speed_error = "-", time_error = "-";
+    if (roll.speed && roll.expected_speed && *roll.expected_speed != 0)
+    {
+      const double rel = 100 * (*roll.speed - *roll.expected_speed) / std::abs(*roll.expected_speed);
+      speed_error = std::abs(rel) < 0.005 ? "0.00%" : fmt::format("{:+.2f}%", rel);  // no "-0.00%"
+    }
+    const auto& t = r->metrics.slip.time_to_roll;
+    if (t && roll.expected_time_to_roll) time_error = fmt::format("{:+.3f} s", *t - *roll.expected_time_to_roll);
+    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_dash(roll.speed, "{:.4f}"),
+        speed_error, t ? fmt::format("{:.2f}", *t) : "never", time_error,
+        r->metrics.slip.measured ? fmt::format("{:.2g}", r->metrics.slip.final_max) : "-");
+  }
+  put("\n");
+}
+
+// The heaps side by side: one column per scene that measures an angle of repose.
+void put_repose(Markdown& put, const std::vector<std::string>& scenes,
+                const std::vector<std::vector<const Result*>>& rows_of) {
+  put("### Angle of repose\n\nBalls let go from a loose block on the floor of a wide box (granular column collapse) "
+      "come to rest as a heap whose flanks' slope depends on friction: the same balls with friction and without. "
+      "The angle is measured by the harness from each run's final state (`angle_of_repose`, glossary below; "
+      "core/metrics/angle_of_repose.h): a frictionless heap spreads flat, near 0; `none`: no flank could be "
+      "measured (a layer spread flat, or a column standing).\n\n");
+  std::vector<std::string> labels;
+  for (const auto& rows : rows_of)
+    for (const Result* r : rows) add_once(labels, run_label(*r));
+  put("| engine |");
+  for (size_t k = 0; k < scenes.size(); ++k)
+    put(" `{}` (deg) |", scenes[k]);
+  put("\n|---|");
+  for (size_t k = 0; k < scenes.size(); ++k) put("---:|");
+  put("\n");
+  std::vector<std::string> notes;
+  for (const std::string& label : labels) {
+    put("| {} |", label);
+    for (size_t k = 0; k < scenes.size(); ++k) {
+      const auto it = std::find_if(rows_of[k].begin(), rows_of[k].end(), [&](const Result* r) { return run_label(*r) == label; });
+      if (it == rows_of[k].end()) {
+        put(" |");
+        continue;
+      }
+      const Result& r = **it;
+      if (!ran(r) || r.status != "ok") {
+        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", r.status, or_dash(r.angle_of_repose, "{:.1f}")) : r.status);
+        if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], cell(r.error)));
+        continue;
+      }
+      put(" {} |", r.angle_of_repose ? fmt::format("{:.1f}", *r.angle_of_repose) : "none");
+    }
+    put("\n");
+  }
+  std::vector<std::string> files;
+  for (const auto& rows : rows_of) files.push_back(fmt::format("`{}`", source_text(*rows.front())));
+  put("\nScenes: {}.", fmt::join(files, ", "));
+  if (!notes.empty()) put(" Runs that did not end ok: {}.", fmt::join(notes, "; "));
+  put("\n\n");
+}
+
+}  // namespace
+
+std::string friction_section(const std::vector<Result>& results, const std::vector<std::string>& scene_order) {
+  std::vector<std::string> rolling, repose;
+  for (const std::string& scene : scene_order)
+    for (const Result& r : results) {
+      if (r.scene != scene) continue;
+      if (r.rolling.expected_speed) add_once(rolling, scene);
+      const bool unmeasured = std::any_of(r.skipped.begin(), r.skipped.end(), [](const std::string& note) {
+        return note.starts_with(kReposeUnmeasuredNote);
+      });
+      if (r.angle_of_repose || unmeasured) add_once(repose, scene);
+    }
+  if (rolling.empty() && repose.empty()) return "";
+  const auto rows = [&](const std::string& scene) {
+    std::vector<const Result*> out;
+    for (const Result& r : results)
+      if (r.scene == scene) out.push_back(&r);
+    return out;
+  };
+  Markdown put;
+  put("## Friction\n\nEvery engine and profile on the scenes that judge friction and rotation against what "
+                 "they must do: a ball sliding to roll and a spinning ball dropped, against closed forms, and a heap "
+                 "of balls with and without friction, by its angle of repose. Engines without friction refuse these "
+                 "scenes (a run that ignored the friction would look right and be wrong); each refusal is shown with "
+                 "its reason. Source: `results/SCENE.json`.\n\n");
+  for (const std::string& scene : rolling) put_rolling(put, scene, rows(scene));
+  if (!repose.empty()) {
+    std::vector<std::vector<const Result*>> rows_of;
+    for (const std::string& scene : repose) rows_of.push_back(rows(scene));
+    put_repose(put, repose, rows_of);
+  }
+  return fmt::to_string(put.out);
+}
+
+}  // namespace ballbench
