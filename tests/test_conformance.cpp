@@ -402,21 +402,8 @@ double slide_to_roll(const std::string& engine, const std::string& profile, cons
 // closing at mu g (1 + 1/k));
 // mu = 0.8: it rolls from the impact on. Figure: the relative error of the final speed.
 double spin_drop(const std::string& engine, const std::string& profile, double mu) {
-  const Scene s = scene_from(fmt::format(R"(
-dt = 0.01
-duration = 2.0
-gravity = [0.0, -9.81]
-restitution = 0.0
-friction = {}
-[container]
-min = [-5.0, 0.0]
-max = [5.0, 4.0]
-[[ball]]
-pos = [0.0, 1.25]
-vel = [1.0, 0.0]
-spin = 20.0
-radius = 0.25
-)", mu));
+  Scene s = load_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
+  s.friction = mu;
   const EngineEntry& entry = find_engine(engine);
   if (!entry.info.caps.friction) {
     RunOptions o;

@@ -525,23 +525,8 @@ TEST(ExactFriction, SlideToRollSphere) { expect_slide_to_roll(Inertia::sphere); 
 // Then, if c is left, kinetic friction -sgn(c) mu m g slides it until c = 0; it rolls at
 // (v0 - k r w0) / (1 + k) = -1 m/s (angular momentum about the contact point).
 void expect_spin_drop(double mu, bool sticks) {
-  const Scene s = parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 2.0
-gravity = [0.0, -9.81]
-restitution = 0.0
-friction = {}
-[container]
-min = [-5.0, 0.0]
-max = [5.0, 4.0]
-[[ball]]
-pos = [0.0, 1.25]
-vel = [1.0, 0.0]
-spin = 20.0
-radius = 0.25
-)",
-                                          mu),
-                              "spin-drop.toml");
+  Scene s = load_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
+  s.friction = mu;
   const double g = 9.81, r = 0.25, m = 1, k = 0.5, I = k * m * r * r, v0 = 1, w0 = 20;
   const double t_l = std::sqrt(2 * 1.0 / g), u = g * t_l, x_l = v0 * t_l, angle_l = w0 * t_l;
   const double c = v0 + w0 * r;

@@ -89,21 +89,8 @@ class HomeSpinDrop : public ::testing::TestWithParam<double> {};
 
 TEST_P(HomeSpinDrop, LandsByTheCoulombImpulseLawAndRollsAtTheClosedFormSpeed) {
   const double mu = GetParam(), r = 0.25, k = 0.5, m = 1.0;
-  const Scene s = parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 2.0
-gravity = [0.0, -9.81]
-restitution = 0.0
-friction = {}
-[container]
-min = [-5.0, 0.0]
-max = [5.0, 4.0]
-[[ball]]
-pos = [0.0, 1.25]
-vel = [1.0, 0.0]
-spin = 20.0
-radius = 0.25
-)", mu), "spin-drop.toml");
+  Scene s = load_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
+  s.friction = mu;
   auto home = build_home(s);
   State before, st;
   home->read(before);
