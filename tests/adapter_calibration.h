@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <ostream>
 #include <string>
 
@@ -55,6 +56,43 @@ radius = 0.1
 )",
                                  e, speed),
                      "wall.toml");
+}
+
+// The friction coefficient and inertia factor an engine applies, measured on slide-to-roll (a ball
+// of radius 0.25 sliding on the floor at v0 = 3 m/s, friction 0.5, g 9.81): while it slides,
+// friction slows it at mu g (from the speeds after steps 3 and 13: 0.03 and 0.13 s, before it rolls
+// at 0.17 or 0.20 s); rolling, it keeps v0 / (1 + k), so k = v0 / v_final - 1.
+struct FrictionCalibration {
+  double mu, k;
+};
+
+inline FrictionCalibration measure_friction(const std::string& engine, const std::string& profile, Inertia inertia) {
+  Scene s = load_scene("slide-to-roll");
+  s.inertia = inertia;
+  auto e = find_engine(engine).create(s, profile, {});
+  State st;
+  double v3 = 0, v13 = 0;
+  for (long k = 1; k <= s.steps(); ++k) {
+    e->step(s.dt);
+    e->read(st);
+    if (k == 3) v3 = st.vel(0, 0);
+    if (k == 13) v13 = st.vel(0, 0);
+  }
+  return {(v3 - v13) / (0.10 * 9.81), 3.0 / st.vel(0, 0) - 1.0};
+}
+
+// The scene's friction (0.5) and each inertia (disk 1/2, sphere 2/5) within 0.5% (of mu and of
+// 1 + k: the rolling speed's), for every profile of `engine`; the figures are printed.
+inline void expect_friction_and_inertia_are_the_scenes(const std::string& engine) {
+  for (const std::string& profile : find_engine(engine).info.profiles)
+    for (const Inertia inertia : {Inertia::disk, Inertia::sphere}) {
+      const FrictionCalibration c = measure_friction(engine, profile, inertia);
+      const double k = inertia_factor(inertia);
+      std::printf("%s/%s %s: friction %.6g (0.5), inertia factor %.6g (%g)\n", engine.c_str(), profile.c_str(),
+                  inertia_name(inertia), c.mu, c.k, k);
+      EXPECT_NEAR(c.mu, 0.5, 0.005 * 0.5) << engine << "/" << profile << " " << inertia_name(inertia);
+      EXPECT_NEAR(1 + c.k, 1 + k, 0.005 * (1 + k)) << engine << "/" << profile << " " << inertia_name(inertia);
+    }
 }
 
 // Head-on in open space, unequal radii and masses: relative speed 5 m/s, contact at t = 0.1 s.

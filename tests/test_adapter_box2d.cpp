@@ -176,5 +176,8 @@ TEST(Box2dAdapter, IsDeterministic) {
   }
 }
 
+// The scene's friction coefficient and inertia, as the adapter maps them (its README), measured.
+TEST(Box2dCalibration, FrictionAndInertiaAreTheScenes) { calibration::expect_friction_and_inertia_are_the_scenes("box2d"); }
+
 }  // namespace
 }  // namespace ballbench

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "adapter_calibration.h"
 #include "bullet/bullet_engine.h"
 #include "input_error.h"
 #include "registry.h"
@@ -211,6 +212,9 @@ TEST(BulletEngine, InfoNamesTheLibrary) {
   EXPECT_TRUE(std::regex_match(info.version, std::regex(R"(\d+\.\d\d)"))) << info.version;
   EXPECT_EQ(info.profiles, (std::vector<std::string>{"tuned", "stock"}));
 }
+
+// The scene's friction coefficient and inertia, as the adapter maps them (its README), measured.
+TEST(BulletCalibration, FrictionAndInertiaAreTheScenes) { calibration::expect_friction_and_inertia_are_the_scenes("bullet"); }
 
 }  // namespace
 }  // namespace ballbench

@@ -283,5 +283,8 @@ mass = 5e-324
   EXPECT_NE(r.error.find("SIGABRT"), std::string::npos) << r.error;
 }
 
+// The scene's friction coefficient and inertia, as the adapter maps them (its README), measured.
+TEST(ChipmunkCalibration, FrictionAndInertiaAreTheScenes) { calibration::expect_friction_and_inertia_are_the_scenes("chipmunk"); }
+
 }  // namespace
 }  // namespace ballbench

@@ -220,6 +220,9 @@ TEST(OdeAdapter, WorldsCanFollowOneAnother) {
   EXPECT_EQ(a.vel, b.vel);
 }
 
+// The scene's friction coefficient and inertia, as the adapter maps them (its README), measured.
+TEST(OdeCalibration, FrictionAndInertiaAreTheScenes) { calibration::expect_friction_and_inertia_are_the_scenes("ode"); }
+
 }  // namespace
 }  // namespace ballbench
 
