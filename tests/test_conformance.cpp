@@ -355,29 +355,41 @@ double seed_box_escapes(const std::string& engine, const std::string& profile) {
   return r.metrics.tunnelling_wall;
 }
 
+// A friction case's engine, built for its scene; or, when there is none to run, the case's figure:
+// an engine without friction must refuse the scene (0 if the runner does, infinite if it runs
+// it), and one that cannot build it (a limit of its own) fails the case (infinite).
+struct RoughCase {
+  std::unique_ptr<Engine> engine;
+  double figure = 0;
+};
+
+RoughCase build_rough(const std::string& engine, const std::string& profile, const Scene& s) {
+  const EngineEntry& entry = find_engine(engine);
+  if (!entry.info.caps.friction) {
+    RunOptions o;
+    o.profile = profile;
+    return {nullptr, run_engine(s, entry, o).status == "unsupported" ? 0.0 : HUGE_VAL};
+  }
+  try {
+    return {build(engine, profile, s), 0.0};
+  } catch (const SceneUnsupported&) {
+    return {nullptr, HUGE_VAL};
+  }
+}
+
 // A ball (radius 0.25, mass 1) sliding on the floor at v0 = 3 m/s, friction mu = 0.5, g = 9.81,
 // I = k m r^2. Friction decelerates it at mu g until it rolls, at v0 / (1 + k) (2/3 v0 for a disk,
 // 5/7 v0 for a sphere), from t = v0 k / ((1 + k) mu g) (0.20 s, 0.17 s) on (Goldstein, Classical
 // Mechanics, the rolling constraint v = -w r with the impulse of friction on both). Figure: the
 // larger relative error of the final speed (the inertia in force) and of the friction coefficient
 // measured from the deceleration between t = 0.03 and 0.13 s, while it slides (the friction in
-// force). An engine without friction must refuse the scene: figure 0 if it does, infinite if it
-// runs it.
+// force).
 double slide_to_roll(const std::string& engine, const std::string& profile, const char* inertia) {
   Scene s = load_scene("slide-to-roll");  // v0 3 m/s, friction 0.5, g 9.81, r 0.25, m 1
   s.inertia = inertia == std::string("sphere") ? Inertia::sphere : Inertia::disk;
-  const EngineEntry& entry = find_engine(engine);
-  if (!entry.info.caps.friction) {
-    RunOptions o;
-    o.profile = profile;
-    return run_engine(s, entry, o).status == "unsupported" ? 0.0 : HUGE_VAL;
-  }
-  std::unique_ptr<Engine> eng;
-  try {
-    eng = build(engine, profile, s);
-  } catch (const SceneUnsupported&) {  // a limit of the engine's own: it cannot run the case
-    return HUGE_VAL;
-  }
+  RoughCase rough = build_rough(engine, profile, s);
+  if (!rough.engine) return rough.figure;
+  Engine* eng = rough.engine.get();
   State st;
   double v_early = 0, v_late = 0;
   for (long k = 1; k <= s.steps(); ++k) {
@@ -404,18 +416,9 @@ double slide_to_roll(const std::string& engine, const std::string& profile, cons
 double spin_drop(const std::string& engine, const std::string& profile, double mu) {
   Scene s = load_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
   s.friction = mu;
-  const EngineEntry& entry = find_engine(engine);
-  if (!entry.info.caps.friction) {
-    RunOptions o;
-    o.profile = profile;
-    return run_engine(s, entry, o).status == "unsupported" ? 0.0 : HUGE_VAL;
-  }
-  std::unique_ptr<Engine> eng;
-  try {
-    eng = build(engine, profile, s);
-  } catch (const SceneUnsupported&) {
-    return HUGE_VAL;
-  }
+  RoughCase rough = build_rough(engine, profile, s);
+  if (!rough.engine) return rough.figure;
+  Engine* eng = rough.engine.get();
   for (long k = 0; k < s.steps(); ++k) eng->step(s.dt);
   State st;
   eng->read(st);
@@ -464,18 +467,9 @@ radius = {r1}
 mass = {m1}
 )", fmt::arg("e", e), fmt::arg("mu", mu), fmt::arg("x", x_start), fmt::arg("b", b), fmt::arg("w0", w0), fmt::arg("r0", r0),
                                          fmt::arg("m0", m0), fmt::arg("w1", w1), fmt::arg("r1", r1), fmt::arg("m1", m1)));
-  const EngineEntry& entry = find_engine(engine);
-  if (!entry.info.caps.friction) {
-    RunOptions o;
-    o.profile = profile;
-    return run_engine(s, entry, o).status == "unsupported" ? 0.0 : HUGE_VAL;
-  }
-  std::unique_ptr<Engine> eng;
-  try {
-    eng = build(engine, profile, s);
-  } catch (const SceneUnsupported&) {
-    return HUGE_VAL;
-  }
+  RoughCase rough = build_rough(engine, profile, s);
+  if (!rough.engine) return rough.figure;
+  Engine* eng = rough.engine.get();
   for (long k = 0; k < s.steps(); ++k) eng->step(s.dt);
   State st;
   eng->read(st);

@@ -16,6 +16,7 @@
 #include "input_error.h"
 #include "overlap.h"
 #include "registry.h"
+#include "rough_gas.h"
 #include "scene_loader.h"
 #include "uniform_grid.h"
 
@@ -706,52 +707,17 @@ TEST(ExactFriction, RoughObliqueImpactSliding) { expect_rough_oblique(0.1, false
 // conserved to round-off at any friction and restitution, and the kinetic energy with (1/2) I w^2
 // never grows (the impact law only takes energy).
 void expect_rough_gas(double e) {
-  const Scene s = parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 2.0
-restitution = {}
-friction = 0.5
-[random]
-count = 200
-radius = 0.1
-pos_min = [-4.0, -4.0]
-pos_max = [4.0, 4.0]
-vel_min = [-1.0, -1.0]
-vel_max = [1.0, 1.0]
-spin_min = -20.0
-spin_max = 20.0
-seed = 5
-)",
-                                          e),
-                              "rough-gas.toml");
-  auto momentum = [&](const State& st, double& scale) {
-    double L = 0;
-    scale = 0;
-    for (int i = 0; i < st.n(); ++i) {
-      const double orbital = s.mass(i) * (st.pos(i, 0) * st.vel(i, 1) - st.pos(i, 1) * st.vel(i, 0));
-      const double spin = s.moment_of_inertia(i) * st.w(i);
-      L += orbital + spin;
-      scale += std::abs(orbital) + std::abs(spin);
-    }
-    return L;
-  };
-  auto energy = [&](const State& st) {
-    double E = 0;
-    for (int i = 0; i < st.n(); ++i)
-      E += 0.5 * s.mass(i) * st.vel.row(i).squaredNorm() + 0.5 * s.moment_of_inertia(i) * st.w(i) * st.w(i);
-    return E;
-  };
+  const Scene s = rough_gas::scene(e);
   auto engine = make_exact(s);
   double scale0;
   const State start = read(*engine);
-  const double L0 = momentum(start, scale0), E0 = energy(start);
+  const double L0 = rough_gas::angular_momentum(s, start, &scale0), E0 = rough_gas::kinetic_energy(s, start);
   double worst_L = 0, worst_gain = 0, E_end = E0;
-  for (int step = 0; step < 200; ++step) {
-    engine->step(0.01);
+  for (long step = 0; step < s.steps(); ++step) {
+    engine->step(s.dt);
     const State st = read(*engine);
-    double scale;
-    worst_L = std::max(worst_L, std::abs(momentum(st, scale) - L0) / scale0);
-    E_end = energy(st);
+    worst_L = std::max(worst_L, std::abs(rough_gas::angular_momentum(s, st) - L0) / scale0);
+    E_end = rough_gas::kinetic_energy(s, st);
     worst_gain = std::max(worst_gain, (E_end - E0) / E0);
   }
   // Each impulse moves L by a few roundings of terms of size ~scale / n: hundreds of impacts give

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "registry.h"
+#include "rough_gas.h"
 #include "runner.h"
 #include "scene_loader.h"
 
@@ -21,23 +22,6 @@ namespace {
 constexpr double kClosedForm = 1e-9;
 
 std::unique_ptr<Engine> build_home(const Scene& s) { return find_engine("home").create(s, "default", merged_settings(s, "home", {})); }
-
-double kinetic_energy(const Scene& s, const State& st) {
-  double e = 0;
-  for (int i = 0; i < s.n(); ++i) {
-    e += 0.5 * s.mass(i) * st.vel.row(i).squaredNorm();
-    if (st.rotates()) e += 0.5 * s.moment_of_inertia(i) * st.w(i) * st.w(i);
-  }
-  return e;
-}
-
-// Orbital plus spin angular momentum about the origin (kg m^2/s).
-double angular_momentum(const Scene& s, const State& st) {
-  double l = 0;
-  for (int i = 0; i < s.n(); ++i)
-    l += s.mass(i) * (st.pos(i, 0) * st.vel(i, 1) - st.pos(i, 1) * st.vel(i, 0)) + s.moment_of_inertia(i) * st.w(i);
-  return l;
-}
 
 // A ball sliding at v0 on the floor (scenarios/slide-to-roll.toml: v0 3, mu 0.5, g 9.81, r 0.25):
 // each step's friction impulse is mu times the step's normal impulse m g dt, so the ball slows by
@@ -132,33 +116,17 @@ INSTANTIATE_TEST_SUITE_P(Friction, HomeSpinDrop, ::testing::Values(0.2, 0.8),
 class HomeRoughGas : public ::testing::TestWithParam<double> {};
 
 TEST_P(HomeRoughGas, KeepsAngularMomentumAndNeverGainsEnergy) {
-  const Scene s = parse_scene(fmt::format(R"(
-dt = 0.01
-duration = 2.0
-restitution = {}
-friction = 0.5
-[random]
-count = 200
-radius = 0.1
-mass = 1.0
-pos_min = [-3.0, -3.0]
-pos_max = [3.0, 3.0]
-vel_min = [-2.0, -2.0]
-vel_max = [2.0, 2.0]
-spin_min = -10.0
-spin_max = 10.0
-seed = 5
-)", GetParam()), "rough-gas.toml");
+  const Scene s = rough_gas::scene(GetParam());
   auto home = build_home(s);
   State st;
   home->read(st);
-  const double l0 = angular_momentum(s, st), e0 = kinetic_energy(s, st);
+  const double l0 = rough_gas::angular_momentum(s, st), e0 = rough_gas::kinetic_energy(s, st);
   double worst_l = 0, e_last = e0;
   for (long n = 0; n < s.steps(); ++n) {
     home->step(s.dt);
     home->read(st);
-    worst_l = std::max(worst_l, std::abs(angular_momentum(s, st) - l0));
-    const double e = kinetic_energy(s, st);
+    worst_l = std::max(worst_l, std::abs(rough_gas::angular_momentum(s, st) - l0));
+    const double e = rough_gas::kinetic_energy(s, st);
     EXPECT_LE(e, e_last * (1 + 1e-14)) << "step " << n;  // round-off of the sum only
     e_last = e;
   }
