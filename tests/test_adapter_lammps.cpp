@@ -167,8 +167,9 @@ TEST(LammpsAdapter, TheLightestBallsContactSetsTheStepWhereMassesDiffer) {
     // Hooke: t_c = pi / (w0 sqrt(1 - zeta^2)), w0 = sqrt(kn / meff), zeta = gn / (2 w0). meff 0.5
     // against 50 scales w0 by 10 and zeta (0.0709 at e 0.8) by 1/10: the ratio is
     // 0.1 sqrt(1 - 0.0709^2) / sqrt(1 - 0.00709^2) = 0.09975.
-    if (law == lammps::ContactLaw::hooke)
+    if (law == lammps::ContactLaw::hooke) {
       EXPECT_NEAR(m.light_pair.contact_time / m.pair.contact_time, 0.09975, 1e-5);
+    }
   }
   // Equal masses: the same contact as designed.
   const lammps::ContactModel equal = lammps::derive_contact_model(equal_head_on(0.8), {});
