@@ -1,12 +1,15 @@
 #pragma once
 // The world `home` steps: the balls' state as plain structure of arrays, in the solver's own ball
 // order (renumbered in cell order from 10^4 balls: `ball_of` maps the scene's order to it), and the
-// scene's constants. Every stage of the step reads and writes it; none keeps a copy.
+// scene's constants. Every stage of the step reads and writes it; none keeps a copy. Between events
+// every ball moves on a straight line: on_line and approach_root below.
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "scene.h"
+#include "solver/contact.h"
 
 namespace ballbench {
 
@@ -58,6 +61,8 @@ struct HomeWorld {
 
   double radius(int i) const { return equal_radii ? r0 : r(i); }
   double inv_mass(int i) const { return equal_masses ? inv_m0 : inv_m(i); }
+  // The largest speed now (m/s).
+  double max_speed() const { return n > 0 ? std::sqrt(v.rowwise().squaredNorm().maxCoeff()) : 0.0; }
   // Friction acts: the balls rotate and the coefficient is above 0.
   bool rough() const { return rotation && mu > 0; }
   // Gap between ball i and a wall (m): side 0 is the min wall, side 1 the max wall.
@@ -65,5 +70,28 @@ struct HomeWorld {
     return side == 0 ? p(i, axis) - radius(i) - box.min(axis) : box.max(axis) - radius(i) - p(i, axis);
   }
 };
+
+// Where a ball that was at x with velocity v at its own clock t_own is at time t (one coordinate).
+// Every advance along a line (the event loop's, the end of a step, read()'s end positions) is this
+// one expression, so read() gives exactly what the next step's start computes.
+inline double on_line(double x, double v, double t, double t_own) { return x + v * (t - t_own); }
+
+// How long until an approaching pair (separation d, relative velocity w, b = d.w < 0,
+// c = |d|^2 - (r_i + r_j)^2 > 0) touches: the smaller root of |d + w t| = r_i + r_j, in the
+// cancellation-free form; infinity if it passes by.
+inline double approach_root(double b, double c, double wx, double wy) {
+  const double a = wx * wx + wy * wy;
+  const double disc = b * b - a * c;
+  return disc < 0 ? kNever : c / (-b + std::sqrt(disc));
+}
+
+// Can a ball with these gaps to the four walls (min x, max x, min y, max y) reach the one it moves
+// towards within k = dt (1 + 1e-9)? Bitwise, no ternaries: the direction of motion is a coin toss
+// per ball, and the compiler turned the selects into branches once nothing else needed both gaps.
+inline bool reaches_wall(double gx0, double gx1, double gy0, double gy1, double vx, double vy, double k) {
+  const double kx = std::abs(vx) * k, ky = std::abs(vy) * k;
+  const bool left = vx < 0, down = vy < 0;
+  return (left & (gx0 <= kx)) | (!left & (gx1 <= kx)) | (down & (gy0 <= ky)) | (!down & (gy1 <= ky));
+}
 
 }  // namespace ballbench
