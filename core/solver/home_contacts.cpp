@@ -14,9 +14,7 @@ constexpr double kSpeculativeFraction = 0.5;
 
 }  // namespace
 
-RestingContacts::RestingContacts(int n, bool solves) {
-  if (solves) degree_.assign(n, 0);
-}
+RestingContacts::RestingContacts(int n) : degree_(n, 0) {}
 
 // The velocity constraint of one contact, for the sequential-impulse solve:
 // - approaching faster than v_rest, touching or not: an impact, left to the exact event loop (a

@@ -26,8 +26,9 @@ struct PassContact : Contact {
 class RestingContacts {
  public:
   RestingContacts() = default;
-  // n balls; `solves`: contacts are solved (not in elastic scenes, which have no contact pass).
-  RestingContacts(int n, bool solves);
+  // n balls. Elastic scenes have no contact pass, but a grazing event that rounds to a resting
+  // impact still solves its cluster.
+  explicit RestingContacts(int n);
 
   void clear() { contacts_.clear(); }
   size_t size() const { return contacts_.size(); }

@@ -31,10 +31,12 @@ EventPath<BroadPhase>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, c
       elastic_(sc.elastic),
       step_(w.n, settings.contact_slop),
       broad_(sc, settings, w.n, pool.parts()),
-      contacts_(w.n, !sc.elastic),
+      contacts_(w.n),
       count_(w.n, 0),
       first_events_(pool.parts()) {
-  if (!sc.elastic) in_cluster_.assign(w.n, 0);  // the contact solves'
+  // Sized in elastic scenes too: a grazing event whose approach rounds to 0 is a resting impact
+  // there as well (impact_speed <= v_rest = 0), and its cluster solve needs the marks.
+  in_cluster_.assign(w.n, 0);
 }
 
 // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the positions
