@@ -66,19 +66,23 @@ struct FrictionCalibration {
   double mu, k;
 };
 
-inline FrictionCalibration measure_friction(const std::string& engine, const std::string& profile, Inertia inertia) {
-  Scene s = load_scene("slide-to-roll");
-  s.inertia = inertia;
-  auto e = find_engine(engine).create(s, profile, {});
+// Runs slide-to-roll `s` (its inertia set by the caller) on `e` to its end.
+inline FrictionCalibration measure_slide(Engine& e, const Scene& s) {
   State st;
   double v3 = 0, v13 = 0;
   for (long k = 1; k <= s.steps(); ++k) {
-    e->step(s.dt);
-    e->read(st);
+    e.step(s.dt);
+    e.read(st);
     if (k == 3) v3 = st.vel(0, 0);
     if (k == 13) v13 = st.vel(0, 0);
   }
   return {(v3 - v13) / (0.10 * 9.81), 3.0 / st.vel(0, 0) - 1.0};
+}
+
+inline FrictionCalibration measure_friction(const std::string& engine, const std::string& profile, Inertia inertia) {
+  Scene s = load_scene("slide-to-roll");
+  s.inertia = inertia;
+  return measure_slide(*find_engine(engine).create(s, profile, {}), s);
 }
 
 // The scene's friction (0.5) and each inertia (disk 1/2, sphere 2/5) within 0.5% (of mu and of

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "adapter_calibration.h"
 #include "registry.h"
 #include "runner.h"
 #include "scene_loader.h"
@@ -389,18 +390,10 @@ double slide_to_roll(const std::string& engine, const std::string& profile, cons
   s.inertia = inertia == std::string("sphere") ? Inertia::sphere : Inertia::disk;
   RoughCase rough = build_rough(engine, profile, s);
   if (!rough.engine) return rough.figure;
-  Engine* eng = rough.engine.get();
-  State st;
-  double v_early = 0, v_late = 0;
-  for (long k = 1; k <= s.steps(); ++k) {
-    eng->step(s.dt);
-    eng->read(st);
-    if (k == 3) v_early = st.vel(0, 0);
-    if (k == 13) v_late = st.vel(0, 0);
-  }
-  const double k = inertia_factor(s.inertia), rolling = 3.0 / (1 + k);
-  const double mu = (v_early - v_late) / (0.10 * 9.81);
-  return std::max(std::abs(st.vel(0, 0) - rolling) / rolling, std::abs(mu - 0.5) / 0.5);
+  const calibration::FrictionCalibration m = calibration::measure_slide(*rough.engine, s);
+  const double k = inertia_factor(s.inertia);
+  // The final speed 3 / (1 + m.k) against 3 / (1 + k), relative: |k - m.k| / (1 + m.k).
+  return std::max(std::abs(m.k - k) / (1 + m.k), std::abs(m.mu - 0.5) / 0.5);
 }
 
 // A ball (radius 0.25, mass 1, a disk) dropped from 1 m above the floor with v0 = 1 m/s and backspin
