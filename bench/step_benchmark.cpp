@@ -209,6 +209,14 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
     }
     if (seconds_since_start() > budget_seconds()) {
       const double timed = std::chrono::duration<double>(Clock::now() - timed_start).count();
+      // A run slowed down by balls flying apart is a divergence, not a slow engine.
+      if (options.check_divergence && steps % kDivergenceCheckSteps != 0) {
+        engine->read(read);
+        if (left_the_box(scene, read)) {
+          state.SkipWithError(fmt::format("diverged: a ball left the box by step {}", steps).c_str());
+          break;
+        }
+      }
       state.SkipWithError(fmt::format("stopped at the {:.0f} s budget after {} timed steps: {:.0f} ns per ball-step",
                                       budget_seconds(), steps, timed * 1e9 / (static_cast<double>(steps) * n))
                               .c_str());
