@@ -189,6 +189,13 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
   const auto timed_start = Clock::now();
   const std::optional<double> own_before = engine->own_step_seconds();
   long steps = 0;
+  const auto ball_left_the_box = [&] {
+    engine->read(read);
+    return left_the_box(scene, read);
+  };
+  const auto report_diverged = [&] {
+    state.SkipWithError(fmt::format("diverged: a ball left the box by step {}", steps).c_str());
+  };
   for (auto _ : state) {
     try {
       engine->step(scene.dt);
@@ -199,23 +206,19 @@ void step_benchmark(benchmark::State& state, const EngineEntry* entry, std::stri
     ++steps;
     if (options.check_divergence && steps % kDivergenceCheckSteps == 0) {
       state.PauseTiming();
-      engine->read(read);
-      const bool diverged = left_the_box(scene, read);
-      state.ResumeTiming();
-      if (diverged) {
-        state.SkipWithError(fmt::format("diverged: a ball left the box by step {}", steps).c_str());
+      const bool left = ball_left_the_box();
+      state.ResumeTiming();  // (before SkipWithError: the timer cannot resume after it)
+      if (left) {
+        report_diverged();
         break;
       }
     }
     if (seconds_since_start() > budget_seconds()) {
       const double timed = std::chrono::duration<double>(Clock::now() - timed_start).count();
       // A run slowed down by balls flying apart is a divergence, not a slow engine.
-      if (options.check_divergence && steps % kDivergenceCheckSteps != 0) {
-        engine->read(read);
-        if (left_the_box(scene, read)) {
-          state.SkipWithError(fmt::format("diverged: a ball left the box by step {}", steps).c_str());
-          break;
-        }
+      if (options.check_divergence && steps % kDivergenceCheckSteps != 0 && ball_left_the_box()) {
+        report_diverged();
+        break;
       }
       state.SkipWithError(fmt::format("stopped at the {:.0f} s budget after {} timed steps: {:.0f} ns per ball-step",
                                       budget_seconds(), steps, timed * 1e9 / (static_cast<double>(steps) * n))
