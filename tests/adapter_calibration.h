@@ -66,17 +66,21 @@ struct FrictionCalibration {
   double mu, k;
 };
 
-// Runs slide-to-roll `s` (its inertia set by the caller) on `e` to its end.
+// Runs slide-to-roll `s` (its inertia set by the caller) on `e` to its end. The friction
+// coefficient is the deceleration between steps 3 and 13 over g (the ball slides until ~step 20);
+// k is what the final rolling speed v0 / (1 + k) gives.
 inline FrictionCalibration measure_slide(Engine& e, const Scene& s) {
+  constexpr long kEarly = 3, kLate = 13;
   State st;
-  double v3 = 0, v13 = 0;
+  double v_early = 0, v_late = 0;
   for (long k = 1; k <= s.steps(); ++k) {
     e.step(s.dt);
     e.read(st);
-    if (k == 3) v3 = st.vel(0, 0);
-    if (k == 13) v13 = st.vel(0, 0);
+    if (k == kEarly) v_early = st.vel(0, 0);
+    if (k == kLate) v_late = st.vel(0, 0);
   }
-  return {(v3 - v13) / (0.10 * 9.81), 3.0 / st.vel(0, 0) - 1.0};
+  const double g = s.gravity.norm(), v0 = s.initial.vel(0, 0);
+  return {(v_early - v_late) / ((kLate - kEarly) * s.dt * g), v0 / st.vel(0, 0) - 1.0};
 }
 
 inline FrictionCalibration measure_friction(const std::string& engine, const std::string& profile, Inertia inertia) {
