@@ -4,16 +4,14 @@
 // which can touch during the step are in adjacent cells (cell = 2 r_max + 2 x 1.5 v_max dt). Its
 // screen marks the balls that can have an event this step and finds the contacts within reach of
 // resting speeds, in the grid's cell order, which the contact pass's solve depends on.
-//
-// The interface the event loop uses, the same as ListBroadPhase's (home_broad_list.h):
-// start_step, screen, first_pair, first_events_queued, for_each_near, may_reach_wall, too_fast,
-// too_fast_after_rest, rebuild_mid_step, end_step and unfinished.
+// It models the BroadPhase concept (home_broad_phase.h), as ListBroadPhase does.
 #include <functional>
 #include <utility>
 #include <vector>
 
 #include "fork_join.h"
 #include "solver/home.h"
+#include "solver/home_broad_phase.h"
 #include "solver/home_contacts.h"
 #include "solver/home_grid.h"
 #include "solver/home_step.h"
@@ -91,5 +89,7 @@ class GridBroadPhase {
   std::vector<std::vector<std::pair<int, int>>> pair_hits_;  // ball pairs within contact reach
   std::vector<std::vector<PassContact>> pair_contacts_;      // their contacts
 };
+
+static_assert(BroadPhase<GridBroadPhase>);
 
 }  // namespace ballbench

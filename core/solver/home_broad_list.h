@@ -5,8 +5,7 @@
 // while every ball stays within half the skin of where it was at the build, rebuilt when one may
 // not (at the start of a step, or in mid-step when a collision takes a ball beyond it). Its screen
 // computes the approaching pairs' collision times, which give the balls' first events.
-//
-// The interface the event loop uses is GridBroadPhase's (home_broad_grid.h).
+// It models the BroadPhase concept (home_broad_phase.h), as GridBroadPhase does.
 #include <array>
 #include <functional>
 #include <utility>
@@ -16,6 +15,7 @@
 
 #include "fork_join.h"
 #include "solver/home.h"
+#include "solver/home_broad_phase.h"
 #include "solver/home_contacts.h"
 #include "solver/home_grid.h"
 #include "solver/home_step.h"
@@ -95,5 +95,7 @@ class ListBroadPhase {
   std::vector<int> first_j_;     // its partner (-1: none, kAsk: next_event decides)
   Eigen::MatrixX2d rebuild_at_;  // positions at a rebuild in mid-step
 };
+
+static_assert(BroadPhase<ListBroadPhase>);
 
 }  // namespace ballbench

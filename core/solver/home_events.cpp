@@ -20,8 +20,8 @@ constexpr int kClusterIterations = 200;
 
 }  // namespace
 
-template <class BroadPhase>
-EventPath<BroadPhase>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, const HomeSettings& settings,
+template <BroadPhase B>
+EventPath<B>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, const HomeSettings& settings,
                                  const HomeShortcuts& sc)
     : w_(w),
       grid_(grid),
@@ -41,8 +41,8 @@ EventPath<BroadPhase>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, c
 
 // Symplectic Euler: velocity first (thesis eq. 3, in the bowl program's order), then the positions
 // move along straight lines for the whole step, which the event loop follows exactly.
-template <class BroadPhase>
-void EventPath<BroadPhase>::step(double dt, double v_rest, double t, bool renumber_due,
+template <BroadPhase B>
+void EventPath<B>::step(double dt, double v_rest, double t, bool renumber_due,
                                  const std::function<bool()>& renumber_if_due) {
   step_.dt = dt;
   step_.v_rest = v_rest;
@@ -58,8 +58,8 @@ void EventPath<BroadPhase>::step(double dt, double v_rest, double t, bool renumb
 // zero-time events. The broad phase's screen finds the contacts and marks the balls that may have
 // an event this step (`active`); only active balls are predicted, the rest just move dt along
 // their lines.
-template <class BroadPhase>
-void EventPath<BroadPhase>::contact_pass() {
+template <BroadPhase B>
+void EventPath<B>::contact_pass() {
   contacts_.clear();
   broad_.screen(w_, step_, grid_, pool_, contacts_);
   if (elastic_) return;  // no contact pass: every impact is the event loop's
@@ -69,8 +69,8 @@ void EventPath<BroadPhase>::contact_pass() {
 // Event-driven motion over [0, dt]: every ball moves on its straight line until its next
 // collision, found as the root of a quadratic, in time order (Alder & Wainwright 1959; event
 // invalidation by per-ball collision counters as in Rapaport, "The Art of Molecular Dynamics").
-template <class BroadPhase>
-void EventPath<BroadPhase>::drift(double t) {
+template <BroadPhase B>
+void EventPath<B>::drift(double t) {
   // Every ball's clock is 0 here: the last step's end (or this one's start) left it so.
   queue_.clear();
   // The active balls' predictions read only the state at the start of the step: on several
@@ -131,8 +131,8 @@ void EventPath<BroadPhase>::drift(double t) {
 // Ball i's earliest event from the start of the step: its walls (next_event's own loop), then its
 // pair event as the broad phase's screen found it, or next_event itself where the screen cannot
 // tell (kAsk).
-template <class BroadPhase>
-bool EventPath<BroadPhase>::first_event(int i, PredictedEvent& best) const {
+template <BroadPhase B>
+bool EventPath<B>::first_event(int i, PredictedEvent& best) const {
   const FirstPair pair = broad_.first_pair(i);
   if (pair.j == kAsk) return next_event<true>(i, best);
   best = {kNever, i, 0, count_[i], 0};
@@ -145,16 +145,16 @@ bool EventPath<BroadPhase>::first_event(int i, PredictedEvent& best) const {
 // Every ball's angle from its own clock to the end of the step, before the clocks are set back
 // for the next step (with the positions, at the broad phase's end of this step or start of the
 // next): the angle is kept at the ball's clock, and from here on at the step's end.
-template <class BroadPhase>
-void EventPath<BroadPhase>::end_angles() {
+template <BroadPhase B>
+void EventPath<B>::end_angles() {
   for (int i = 0; i < w_.n; ++i) w_.angle(i) += w_.w(i) * (step_.dt - step_.clock[i]);
 }
 
 // A resting impact (slower than v_rest) at time t inside a pile: solve every contact of the
 // touching cluster around it at once (the same sequential impulses, to the velocity tolerance),
 // rather than one zero-time event at a time (an inelastic collapse of round-off otherwise).
-template <class BroadPhase>
-void EventPath<BroadPhase>::resolve_resting_cluster(int i, int j, double t) {
+template <BroadPhase B>
+void EventPath<B>::resolve_resting_cluster(int i, int j, double t) {
   cluster_.clear();
   contacts_.clear();
   auto enter = [&](int b) {
@@ -194,8 +194,8 @@ void EventPath<BroadPhase>::resolve_resting_cluster(int i, int j, double t) {
 
 // A collision made a ball faster than the broad phase allows for: rebuild it for the rest of the
 // step from time t and predict every ball afresh. Rare (large mass ratios, chains of impacts).
-template <class BroadPhase>
-void EventPath<BroadPhase>::rebuild_mid_step(double t) {
+template <BroadPhase B>
+void EventPath<B>::rebuild_mid_step(double t) {
   broad_.rebuild_mid_step(w_, step_, grid_, pool_, t);
   queue_.clear();
   for (int i = 0; i < w_.n; ++i) {
@@ -206,13 +206,13 @@ void EventPath<BroadPhase>::rebuild_mid_step(double t) {
 
 // The event queue is a binary heap kept in a vector that keeps its capacity between steps,
 // operated exactly as std::priority_queue does (so the order of simultaneous events is too).
-template <class BroadPhase>
-void EventPath<BroadPhase>::push_event(const PredictedEvent& ev) {
+template <BroadPhase B>
+void EventPath<B>::push_event(const PredictedEvent& ev) {
   queue_.push_back(ev);
   std::push_heap(queue_.begin(), queue_.end(), std::greater<>());
 }
-template <class BroadPhase>
-PredictedEvent EventPath<BroadPhase>::pop_event() {
+template <BroadPhase B>
+PredictedEvent EventPath<B>::pop_event() {
   std::pop_heap(queue_.begin(), queue_.end(), std::greater<>());
   const PredictedEvent ev = queue_.back();
   queue_.pop_back();
@@ -220,8 +220,8 @@ PredictedEvent EventPath<BroadPhase>::pop_event() {
 }
 
 // Normal approach speed of an event's pair (or ball and wall) at the event time.
-template <class BroadPhase>
-double EventPath<BroadPhase>::impact_speed(const PredictedEvent& ev) const {
+template <BroadPhase B>
+double EventPath<B>::impact_speed(const PredictedEvent& ev) const {
   if (ev.j < 0) return std::abs(w_.v(ev.i, wall_axis(ev.j)));
   const double dx = w_.p(ev.i, 0) - w_.p(ev.j, 0), dy = w_.p(ev.i, 1) - w_.p(ev.j, 1);
   const double d = std::sqrt(dx * dx + dy * dy);
@@ -231,8 +231,8 @@ double EventPath<BroadPhase>::impact_speed(const PredictedEvent& ev) const {
 // Queues ball i's earliest collision before the end of the step, if any. A touching pair (or
 // ball and wall) approaching so slowly that it would close less than the slop over the step is
 // not an event: that is round-off, and the next contact pass takes care of it.
-template <class BroadPhase>
-void EventPath<BroadPhase>::predict(int i) {
+template <BroadPhase B>
+void EventPath<B>::predict(int i) {
   PredictedEvent best;
   if (next_event(i, best)) push_event(best);
 }
@@ -242,9 +242,9 @@ void EventPath<BroadPhase>::predict(int i) {
 // kAtStart: every ball's clock is 0 (the start of drift), so no clock is read and no ball is
 // brought to a common time (x + v 0 is x): the same events, one array fewer to read per partner
 // and less arithmetic.
-template <class BroadPhase>
+template <BroadPhase B>
 template <bool kAtStart>
-bool EventPath<BroadPhase>::next_event(int i, PredictedEvent& best) const {
+bool EventPath<B>::next_event(int i, PredictedEvent& best) const {
   best = {kNever, i, 0, count_[i], 0};
   const double* clock = step_.clock.data();
   const double ti = kAtStart ? 0.0 : clock[i];
@@ -284,9 +284,9 @@ bool EventPath<BroadPhase>::next_event(int i, PredictedEvent& best) const {
 }
 
 // Ball i's earliest wall event (from its own time), into `best` if earlier.
-template <class BroadPhase>
+template <BroadPhase B>
 template <bool kAtStart>
-void EventPath<BroadPhase>::wall_event(int i, PredictedEvent& best) const {
+void EventPath<B>::wall_event(int i, PredictedEvent& best) const {
   if (!w_.walls || !broad_.may_reach_wall(i)) return;
   const double ti = kAtStart ? 0.0 : step_.clock[i];
   for (int axis = 0; axis < 2; ++axis) {
@@ -304,8 +304,8 @@ void EventPath<BroadPhase>::wall_event(int i, PredictedEvent& best) const {
 
 // Restitution on the normal component; without friction the tangential velocity is untouched,
 // with it the rough-disk impulse law (rough_impact.h) stops or slows the slip.
-template <class BroadPhase>
-void EventPath<BroadPhase>::collide_pair(int i, int j) {
+template <BroadPhase B>
+void EventPath<B>::collide_pair(int i, int j) {
   double nx = w_.p(i, 0) - w_.p(j, 0), ny = w_.p(i, 1) - w_.p(j, 1);
   const double d = std::sqrt(nx * nx + ny * ny);
   if (d == 0) return;  // coincident centres: no normal exists
@@ -320,8 +320,8 @@ void EventPath<BroadPhase>::collide_pair(int i, int j) {
   apply_tangent_impulse(w_, i, j, nx, ny, P.tangent);
 }
 
-template <class BroadPhase>
-void EventPath<BroadPhase>::collide_wall(int i, int code) {
+template <BroadPhase B>
+void EventPath<B>::collide_wall(int i, int code) {
   const int axis = wall_axis(code);
   if (!w_.rough()) {
     w_.v(i, axis) = -w_.e * w_.v(i, axis);

@@ -7,11 +7,11 @@
 //   3. event-driven drift (drift): each active ball's first event, then every event in time order,
 //      each resting impact solved with its touching cluster (resolve_resting_cluster);
 //   4. the broad phase's end of the step (end_step).
-// One event loop serves both broad phases: EventPath<GridBroadPhase> (home_broad_grid.h: a grid
-// every step, the scenes with a contact pass) and EventPath<ListBroadPhase> (home_broad_list.h:
-// a neighbour list, elastic scenes). Each is compiled on its own, so the hot loops (the first
-// predictions, next_event's walk over the near balls) call their broad phase inline, with no
-// indirect call per pair or per event.
+// One event loop serves both broad phases (the BroadPhase concept, home_broad_phase.h):
+// EventPath<GridBroadPhase> (home_broad_grid.h: a grid every step, the scenes with a contact pass)
+// and EventPath<ListBroadPhase> (home_broad_list.h: a neighbour list, elastic scenes). Each is
+// compiled on its own, so the hot loops (the first predictions, next_event's walk over the near
+// balls) call their broad phase inline, with no indirect call per pair or per event.
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -19,6 +19,7 @@
 #include "fork_join.h"
 #include "solver/contact.h"
 #include "solver/home.h"
+#include "solver/home_broad_phase.h"
 #include "solver/home_contacts.h"
 #include "solver/home_grid.h"
 #include "solver/home_step.h"
@@ -26,7 +27,7 @@
 
 namespace ballbench {
 
-template <class BroadPhase>
+template <BroadPhase B>
 class EventPath {
  public:
   // The world, grid and thread team are the engine's (Home), which outlives the path.
@@ -77,7 +78,7 @@ class EventPath {
   int max_events_per_ball_;  // more events per ball in a step is a failure
   bool elastic_;             // no contact pass (HomeShortcuts::elastic)
   EventStep step_;           // this step's clocks, active balls and constants
-  BroadPhase broad_;
+  B broad_;
   RestingContacts contacts_;
   std::vector<uint32_t> count_;  // collisions so far per ball, to recognise stale events
   // The event queue: a min-heap on t (see push_event), and per part of the thread team the active
