@@ -22,7 +22,7 @@ constexpr int kClusterIterations = 200;
 
 template <BroadPhase B>
 EventPath<B>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, const HomeSettings& settings,
-                                 const HomeShortcuts& sc)
+                        const HomeShortcuts& sc)
     : w_(w),
       grid_(grid),
       pool_(pool),
@@ -43,7 +43,7 @@ EventPath<B>::EventPath(HomeWorld& w, HomeGrid& grid, ForkJoin& pool, const Home
 // move along straight lines for the whole step, which the event loop follows exactly.
 template <BroadPhase B>
 void EventPath<B>::step(double dt, double v_rest, double t, bool renumber_due,
-                                 const std::function<bool()>& renumber_if_due) {
+                        const std::function<bool()>& renumber_if_due) {
   step_.dt = dt;
   step_.v_rest = v_rest;
   broad_.start_step(w_, step_, grid_, pool_, renumber_due, renumber_if_due);
