@@ -68,11 +68,12 @@ class SceneUnsupported : public std::runtime_error {
 };
 
 // An accuracy knob `ballbench sweep` varies: a settings key and the values it tries, one at a time,
-// on top of each profile. The step size is varied for every engine by the sweep itself, so it is
-// not listed here.
+// on top of each profile it applies to. The step size is varied for every engine by the sweep
+// itself, so it is not listed here.
 struct SweepKnob {
   std::string key;
-  nlohmann::json values;  // a JSON array of setting values
+  nlohmann::json values;              // a JSON array of setting values
+  std::vector<std::string> profiles;  // the profiles whose runs it changes; empty: every profile
 };
 
 // What an engine is to the harness. The report compares `ours` with `external` engines, measures

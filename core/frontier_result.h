@@ -17,6 +17,9 @@ struct FrontierRow {
   std::string failed_next;  // why the next level failed; "" if every level passed
 };
 
+// The engine refused the scene itself (its first run was `unsupported`): it has no frontier.
+inline bool refused(const FrontierRow& r) { return r.factor == 0 && r.failed_next.starts_with("unsupported"); }
+
 struct FrontierResult {
   std::string scene;
   int n = 0;

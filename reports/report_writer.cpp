@@ -188,9 +188,13 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
     put("| {} |", e);
     for (const auto& k : knobs)
       for (const FrontierRow& r : f.rows)
-        if (run_label(r.engine, r.profile) == e && r.knob == k)
-          put(" {} ({}) |", r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor),
-              r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
+        if (run_label(r.engine, r.profile) == e && r.knob == k) {
+          if (refused(r))
+            put(" {} |", table_cell(r.failed_next));
+          else
+            put(" {} ({}) |", r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor),
+                r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
+        }
     put("\n");
   }
   put("\nAt coarse steps (long enough for a ball to collide several times) the pair pass-through test judges a "

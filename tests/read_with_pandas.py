@@ -16,6 +16,7 @@ except ImportError:
     sys.exit(77)
 
 runs = pd.json_normalize(json.load(open(sys.argv[1])))
+runs = runs[runs.status != "unsupported"]  # a run the engine refused has no samples
 samples = pd.read_csv(sys.argv[2])
 joined = samples.merge(runs[["engine", "profile", "n", "steps_done", "energy.final"]], on=["engine", "profile"])
 bad = []

@@ -86,6 +86,20 @@ const std::map<std::string, std::map<Case, Expectation>>& table() {
         {Case::SpinDropSticking, {kDoubleRun, "the Coulomb impulse law, then rolling to round-off"}},
         {Case::ObliqueSticking, {1e-9, "one rough impact in double"}},
         {Case::ObliqueSliding, {1e-9, "one rough impact in double"}}}},
+      // home's soft profile refuses scenes without gravity (home's default runs them); with it,
+      // friction in the soft step's cone meets the closed forms to round-off.
+      {"home/soft",
+       {{Case::WallBounceElastic, {kDoubleRun, "refused: no gravity (the soft step is for scenes with it)", true}},
+        {Case::WallBounceLossy, {kDoubleRun, "refused: no gravity", true}},
+        {Case::HeadOn, {kDoubleRun, "refused: no gravity", true}},
+        {Case::Drop, {1e-12, "4 substeps of dt / 4, velocity first: their Euler offset is taken off; measured 1.6e-15"}},
+        {Case::SeedBoxContained, {0, "refused: no gravity", true}},
+        {Case::SlideToRollDisk, {kDoubleRun, "mu g a substep while sliding, then rolling; measured 1.3e-14"}},
+        {Case::SlideToRollSphere, {kDoubleRun, "mu g a substep while sliding, then rolling; measured 1.3e-14"}},
+        {Case::SpinDropSliding, {kDoubleRun, "the impact in the soft step, then rolling; measured 4.9e-15"}},
+        {Case::SpinDropSticking, {kDoubleRun, "the impact in the soft step, then rolling; measured 0"}},
+        {Case::ObliqueSticking, {5e-3, "refused: open space without gravity", true}},
+        {Case::ObliqueSliding, {5e-3, "refused: open space without gravity", true}}}},
       {"exact/default",
        {{Case::WallBounceElastic, {kDoubleRun, "exact reflection in double"}},
         {Case::WallBounceLossy, {kDoubleRun, "exact reflection in double"}},
@@ -331,6 +345,9 @@ radius = 0.25
   double lead = engine == "chipmunk" ? -1.0 : 1.0;  // +1: velocity first, -1: position first
   // Rapier steps in solver_iterations substeps of dt / k, each velocity first: its lead is g (dt / k) t / 2.
   if (engine == "rapier") lead = 1.0 / eng->settings()["solver_iterations"].get<double>();
+  // home's soft profile steps in `substeps` substeps of dt / k too (a falling ball this slow needs
+  // no parts: it moves under max_stride of its radius a step).
+  if (engine == "home" && profile == "soft") lead = 1.0 / eng->settings()["substeps"].get<double>();
   // LAMMPS integrates with velocity Verlet, exact under constant gravity: no offset.
   if (engine == "lammps") lead = 0.0;
   State st;
@@ -503,18 +520,22 @@ bool is_float(const std::string& engine) { return engine == "box2d" || engine ==
 void check(const std::string& engine, const std::string& profile, Case c) {
   const std::string label = engine + "/" + profile;
   double figure = 0;
-  switch (c) {
-    case Case::WallBounceElastic: figure = wall_bounce(engine, profile, 1.0); break;
-    case Case::WallBounceLossy: figure = wall_bounce(engine, profile, 0.8); break;
-    case Case::HeadOn: figure = head_on(engine, profile); break;
-    case Case::Drop: figure = drop(engine, profile); break;
-    case Case::SeedBoxContained: figure = seed_box_escapes(engine, profile); break;
-    case Case::SlideToRollDisk: figure = slide_to_roll(engine, profile, "disk"); break;
-    case Case::SlideToRollSphere: figure = slide_to_roll(engine, profile, "sphere"); break;
-    case Case::SpinDropSliding: figure = spin_drop(engine, profile, 0.2); break;
-    case Case::SpinDropSticking: figure = spin_drop(engine, profile, 0.8); break;
-    case Case::ObliqueSticking: figure = oblique_impact(engine, profile, 0.9, true); break;
-    case Case::ObliqueSliding: figure = oblique_impact(engine, profile, 0.1, false); break;
+  try {
+    switch (c) {
+      case Case::WallBounceElastic: figure = wall_bounce(engine, profile, 1.0); break;
+      case Case::WallBounceLossy: figure = wall_bounce(engine, profile, 0.8); break;
+      case Case::HeadOn: figure = head_on(engine, profile); break;
+      case Case::Drop: figure = drop(engine, profile); break;
+      case Case::SeedBoxContained: figure = seed_box_escapes(engine, profile); break;
+      case Case::SlideToRollDisk: figure = slide_to_roll(engine, profile, "disk"); break;
+      case Case::SlideToRollSphere: figure = slide_to_roll(engine, profile, "sphere"); break;
+      case Case::SpinDropSliding: figure = spin_drop(engine, profile, 0.2); break;
+      case Case::SpinDropSticking: figure = spin_drop(engine, profile, 0.8); break;
+      case Case::ObliqueSticking: figure = oblique_impact(engine, profile, 0.9, true); break;
+      case Case::ObliqueSliding: figure = oblique_impact(engine, profile, 0.1, false); break;
+    }
+  } catch (const SceneUnsupported&) {
+    figure = HUGE_VAL;  // a scene the engine refuses: a case it does not meet
   }
   const Expectation x = lookup(label, c, is_float(engine));
   ::testing::Test::RecordProperty("figure", fmt::format("{:.3g}", figure));

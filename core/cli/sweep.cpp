@@ -1,5 +1,6 @@
 #include "sweep.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -44,11 +45,14 @@ std::vector<SweepPlanItem> plan_sweep(const Scene& scene, const std::vector<cons
       }
       if (!o.knobs || e->info.sweep_knobs.empty()) continue;
       const nlohmann::json base = profile_settings(scene, *e, profile);
-      for (const SweepKnob& k : e->info.sweep_knobs)
+      for (const SweepKnob& k : e->info.sweep_knobs) {
+        if (!k.profiles.empty() && std::find(k.profiles.begin(), k.profiles.end(), profile) == k.profiles.end())
+          continue;  // a setting this profile's runs do not read
         for (const auto& v : k.values) {
           if (base.contains(k.key) && base[k.key] == v) continue;  // the dt series has this point
           plan.push_back({e, profile, k.key, v, {{k.key, v}}, scene.dt, steps_for(scene.dt)});
         }
+      }
     }
   return plan;
 }

@@ -241,13 +241,23 @@ EngineEntry home_engine() {
       "double; impacts slower than rest_velocity (2 |g| dt) are resting contact (restitution 0); contacts within "
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
+  // default: the events path; soft: resting = "soft", the soft step, for scenes with gravity.
+  info.profiles = {"default", "soft"};
   info.caps.continuous_collision = true;
   // Coulomb friction at impacts (the rough-disk impulse law) and in resting contacts (sequential
   // impulses in the friction cone); the soft path solves it in its soft step.
-  // Sweeps of the resting-contact solve; motion between contacts is exact at any setting.
-  info.sweep_knobs = {{"contact_iterations", {4, 16, 200}}};
-  return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
+  // Sweeps of the resting-contact solve (default: motion between contacts is exact at any
+  // setting), and the soft step's substeps (soft).
+  info.sweep_knobs = {{"contact_iterations", {4, 16, 200}, {"default"}}, {"substeps", {2, 8, 16}, {"soft"}}};
+  return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             HomeSettings s;
+            if (profile == "soft") {
+              // Without gravity nothing rests: the scene runs event-driven, as the default profile.
+              if (!scene.features().gravity)
+                throw SceneUnsupported("home (soft): the soft step is for scenes with gravity; without it home runs "
+                                       "event-driven, as its default profile");
+              s.resting = "soft";
+            }
             SettingsReader r("home", overrides);
             r.get("contact_iterations", s.contact_iterations);
             r.get("rest_velocity", s.rest_velocity);
