@@ -16,9 +16,10 @@
 // benchmark's window is a few steps after 5 of warm-up, while the balls are still falling freely.
 //
 // step/ENGINE/PROFILE/settled/N times a pile at rest (settled_pile.h) from its saved state; the
-// variants soft-sleep (home) and stock-sleep (box2d) say their settings in the profile's place. step/ENGINE/PROFILE/fluid/N times the fluid (scaled_scene.h) over its first
-// 3 s, the pour and the settle: 300 steps from the start, no warm-up; a ball that leaves the box
-// (checked every 10 steps, outside the timing) ends the benchmark as diverged.
+// variants soft-sleep (home) and stock-sleep (box2d) say their settings in the profile's place.
+// step/ENGINE/PROFILE/fluid/N times the fluid (scaled_scene.h) over its first 3 s, the pour and
+// the settle: 300 steps from the start, no warm-up; a ball that leaves the box (checked every 10
+// steps, outside the timing) ends the benchmark as diverged.
 //
 // A benchmark whose steps (warm-up included) pass --budget_s (default 30 s) stops with an error
 // that says how far it got and what a step cost: a slow engine is reported, not waited for.
