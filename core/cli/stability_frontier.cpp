@@ -102,7 +102,8 @@ void print_frontier(const FrontierResult& f) {
   fmt::print("{:<18} {:<11} {:>10} {:>10}  {}\n", "engine", "knob", "base", "frontier", "next level failed by");
   for (const FrontierRow& r : f.rows) {
     const std::string label = run_label(r.engine, r.profile);
-    const std::string frontier = refused(r) ? "refused" : r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor);
+    const std::string frontier =
+        refused(r) ? "refused" : r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor);
     fmt::print("{:<18} {:<11} {:>10.4g} {:>10}  {}\n", label, r.knob, r.base, frontier,
                r.failed_next.empty() ? fmt::format("(passed all {} levels)", f.levels) : r.failed_next);
   }

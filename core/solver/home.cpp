@@ -252,7 +252,7 @@ EngineEntry home_engine() {
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             HomeSettings s;
             if (profile == "soft") {
-              // Without gravity nothing rests: the scene runs event-driven, as the default profile.
+              // Without gravity nothing rests on anything: the default profile runs such a scene.
               if (!scene.features().gravity)
                 throw SceneUnsupported("home (soft): the soft step is for scenes with gravity; without it home runs "
                                        "event-driven, as its default profile");
