@@ -5,6 +5,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -157,12 +158,23 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
         table_cell(setting_text(*p)), p->dt, 1e3 * p->engine_s_median(), 1e3 * *lo, 1e3 * *hi, p->ns_median(),
         p->pos_rms, p->energy_rel, p->tunnelling, p->sticking);
   }
+  // An engine and profile that refused the scene at every point is named once, with its reason.
+  std::map<std::string, std::string> refused;  // label -> reason, while every point so far was refused
+  std::set<std::string> ran;
+  for (const SweepPoint& p : sw.points) {
+    const std::string label = run_label(p.engine, p.profile);
+    if (p.status == "unsupported" && !ran.contains(label))
+      refused.emplace(label, p.error);
+    else
+      ran.insert(label), refused.erase(label);
+  }
   std::vector<std::string> failed;
   for (const SweepPoint& p : sw.points)
-    if (p.status != "ok")
+    if (p.status != "ok" && !refused.contains(run_label(p.engine, p.profile)))
       failed.push_back(fmt::format("{} {}: {}{}", run_label(p.engine, p.profile), setting_text(p), p.status,
                                    p.error.empty() ? "" : " (" + p.error + ")"));
   if (!failed.empty()) put("\nPoints that did not complete: {}.\n", fmt::join(failed, "; "));
+  for (const auto& [label, why] : refused) put("\n{} refused the scene at every point: {}.\n", label, table_cell(why));
   put("\n");
 }
 
