@@ -84,6 +84,21 @@ int max_piled_balls(const std::string& engine, const std::string& profile, int l
   return std::min(largest, max_balls(engine, profile));
 }
 
+// Largest ball count of the scaled gas and bowl: none for home's soft profile, whose rows are the
+// piles' (it refuses the gas, which has no gravity; the bowl early in its pour is the default
+// profile's case).
+int max_free_balls(const std::string& engine, const std::string& profile) {
+  if (engine == "home" && profile == "soft") return 0;
+  return max_balls(engine, profile);
+}
+
+// Largest settled pile: 10^4 balls, and 10^6 for home's soft profile, the path for piles, which the
+// settled target takes there.
+int max_settled_balls(const std::string& engine, const std::string& profile) {
+  if (engine == "home" && profile == "soft") return 1'000'000;
+  return max_piled_balls(engine, profile, 10'000, 100);
+}
+
 // Current resident set (bytes), from /proc/self/statm.
 double resident_bytes() {
   long pages = 0, resident = 0;
@@ -257,16 +272,12 @@ void register_benchmarks() {
   for (const auto& e : engine_registry()) {
     if (!e.info.unavailable.empty()) continue;  // an engine process that cannot run here (no Node)
     benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
-    for (const auto& profile : e.info.profiles) {
-      // home's soft profile is for piles: its rows are the settled pile's and the fluid's (the gas
-      // has no gravity, which it refuses).
-      if (e.info.name == "home" && profile == "soft") continue;
+    for (const auto& profile : e.info.profiles)
       for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
-        for (int n = 10; n <= max_balls(e.info.name, profile); n *= 10)
+        for (int n = 10; n <= max_free_balls(e.info.name, profile); n *= 10)
           add(fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n), &e, profile,
               kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, bench_settings(e.info.name))
               ->MinTime(0.2);
-    }
   }
   // A pile at rest (settled_pile.h), 10^2 .. 10^4 balls for every engine (home's soft profile to
   // 10^6), and the fluid, 10^3 .. 10^5 (home-seed to 10^3). Not `exact`: an event-driven solver
@@ -277,9 +288,7 @@ void register_benchmarks() {
       // Not engines in other processes, nor LAMMPS: settling a pile takes them most of the budget (see
       // max_balls), and the fluid's 300 steps of thousands of sub-steps each far more.
       if (e.info.name == "exact" || e.info.costly_runs) continue;
-      const int most_settled =
-          e.info.name == "home" && profile == "soft" ? 1'000'000 : max_piled_balls(e.info.name, profile, 10'000, 100);
-      for (int n = 100; n <= most_settled; n *= 10)
+      for (int n = 100; n <= max_settled_balls(e.info.name, profile); n *= 10)
         add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n,
             {.settle = true}, nlohmann::json::object())
             ->MinTime(0.2);

@@ -159,15 +159,12 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
         p->pos_rms, p->energy_rel, p->tunnelling, p->sticking);
   }
   // An engine and profile that refused the scene at every point is named once, with its reason.
-  std::map<std::string, std::string> refused;  // label -> reason, while every point so far was refused
-  std::set<std::string> ran;
-  for (const SweepPoint& p : sw.points) {
-    const std::string label = run_label(p.engine, p.profile);
-    if (p.status == "unsupported" && !ran.contains(label))
-      refused.emplace(label, p.error);
-    else
-      ran.insert(label), refused.erase(label);
-  }
+  std::set<std::string> ran;  // labels with a point the engine did not refuse
+  for (const SweepPoint& p : sw.points)
+    if (p.status != "unsupported") ran.insert(run_label(p.engine, p.profile));
+  std::map<std::string, std::string> refused;  // label -> reason
+  for (const SweepPoint& p : sw.points)
+    if (!ran.contains(run_label(p.engine, p.profile))) refused.emplace(run_label(p.engine, p.profile), p.error);
   std::vector<std::string> failed;
   for (const SweepPoint& p : sw.points)
     if (p.status != "ok" && !refused.contains(run_label(p.engine, p.profile)))

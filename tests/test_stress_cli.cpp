@@ -28,6 +28,15 @@ TEST(StressCli, PrintsOneFrontierTable) {
   EXPECT_NE(out.find("home-seed          dt                0.01       none"), std::string::npos) << out;
 }
 
+// An engine that refuses the scene has no frontier: home's soft profile, in the bullet scene
+// without gravity, reads "refused" with the reason, where an engine that ran and failed reads "none".
+TEST(StressCli, AnEngineThatRefusesTheSceneIsRefusedNotNone) {
+  const std::string out = capture("stress --scene bullet --engine home --profile soft --knobs dt --levels 2");
+  EXPECT_NE(out.find("refused  unsupported: home (soft): the soft step is for scenes with gravity"), std::string::npos)
+      << out;
+  EXPECT_EQ(out.find("none"), std::string::npos) << out;
+}
+
 TEST(StressCli, RejectsAnUnknownKnob) {
   const std::string out = capture("stress --scene bullet --engine home --knobs gravity");
   EXPECT_NE(out.find("unknown knob 'gravity'"), std::string::npos) << out;
