@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
+#include "accuracy_spec.h"
 #include "state.h"
 
 namespace ballbench {
@@ -56,6 +57,7 @@ struct Scene {
   double friction = 0.0;       // Coulomb coefficient, ball-ball and ball-wall
   Inertia inertia = Inertia::disk;
   RequestedMetrics metrics;
+  SceneAccuracy accuracy;      // its [accuracy] table, on top of its class's default spec (accuracy_spec.h)
   bool allow_overlap = false;  // balls may start overlapping (the thesis's random placement does)
   Container container;
   Eigen::VectorXd radius;      // (n, m)

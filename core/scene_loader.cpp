@@ -354,6 +354,35 @@ std::string printable(const std::string& text) {
   return out;
 }
 
+// [accuracy]: the scene's own spec terms (accuracy_spec.h), each a bound or false (drops the term
+// its class would bound).
+void read_accuracy(const toml::node& node, const std::string& source, Scene& s) {
+  if (!node.is_table())
+    throw InputError(fmt::format("{}:{}: accuracy: expected a table [accuracy], got {}", source,
+                                 node.source().begin.line, node_type_name(node)));
+  const toml::table& t = *node.as_table();
+  TableReader r(t, source, "accuracy");
+  std::vector<std::string> keys;
+  for (const SpecTermDef& d : spec_terms()) keys.push_back(d.key);
+  for (const auto& [k, v] : t) {
+    const std::string key(k.str());
+    const auto term = spec_term_named(key);
+    if (!term) r.fail(&v, key, "unknown key" + did_you_mean(key, keys));
+    const int i = static_cast<int>(*term);
+    s.accuracy.set[i] = true;
+    if (v.is_boolean() && !v.as_boolean()->get()) continue;  // dropped
+    if (!v.is_number()) r.fail(&v, key, fmt::format("expected a number (or false to drop it), got {}", node_type_name(v)));
+    const double bound = v.value<double>().value_or(-1);
+    try {
+      check_spec_bound(*term, bound, source);
+    } catch (const InputError&) {
+      r.fail(&v, key, fmt::format("must be a finite number >= 0{}, got {}",
+                                  *term == SpecTerm::tunnelling || *term == SpecTerm::sticking ? " and whole" : "", bound));
+    }
+    s.accuracy.bound[i] = bound;
+  }
+}
+
 Scene parse_scene_text(const std::string& toml_text, const std::string& source, int64_t seed_offset);
 
 }  // namespace
@@ -422,7 +451,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
   top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction", "inertia",
-                  "allow_overlap", "container", "ball", "random", "lattice", "metrics", "settings"});
+                  "allow_overlap", "container", "ball", "random", "lattice", "metrics", "accuracy", "settings"});
 
   Scene s;
   s.source = source;
@@ -523,6 +552,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   }
 
   if (const toml::node* m = top.node("metrics")) read_requested_metrics(*m, source, s);
+  if (const toml::node* a = top.node("accuracy")) read_accuracy(*a, source, s);
 
   if (const toml::node* st = top.node("settings")) {
     if (!st->is_table()) top.fail(st, "settings", "expected tables [settings.ENGINE]");

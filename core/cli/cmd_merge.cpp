@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "match.h"
 #include "sweep_result.h"
 
 namespace ballbench::cli {
@@ -22,6 +23,15 @@ struct MergeArgs {
   std::vector<std::string> shards;
   std::string out, csv;
 };
+
+void merge_matches(const MergeArgs& a) {
+  std::vector<MatchResult> shards;
+  for (const auto& path : a.shards) shards.push_back(read_match_file(path));
+  const MatchResult merged = merge_match_shards(shards, a.shards);
+  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
+  write_match_files(merged, a.out, csv);
+  fmt::print("merged {} match shards ({} tries) into {} and {}\n", shards.size(), merged.tries.size(), a.out, csv);
+}
 
 void merge_sweeps(const MergeArgs& a) {
   std::vector<SweepResult> shards;
@@ -114,6 +124,7 @@ void merge(const MergeArgs& a) {
   if (folders != 0 && folders != a.shards.size())
     throw InputError("merge: give either sweep shards (JSON files) or report shards (folders), not both");
   if (folders) merge_reports(a);
+  else if (parse_json_file(a.shards.front(), "a shard").value("kind", "") == "match") merge_matches(a);
   else merge_sweeps(a);
 }
 
@@ -122,7 +133,7 @@ void merge(const MergeArgs& a) {
 void add_merge(CLI::App& app) {
   auto a = std::make_shared<MergeArgs>();
   auto* cmd = app.add_subcommand(
-      "merge", "join the shards of one sweep (JSON files) or one report (--out folders) run with --shard I/N");
+      "merge", "join the shards of one sweep or match (JSON files) or one report (--out folders) run with --shard I/N");
   cmd->add_option("shards", a->shards, "every shard's sweep JSON file, or every shard's report folder")->required();
   cmd->add_option("--out", a->out, "the merged sweep's JSON file, or the merged report's folder")->required();
   cmd->add_option("--csv", a->csv, "sweeps: the merged CSV (default: --out with .csv)");

@@ -14,6 +14,7 @@ void add_report(CLI::App& app);
 void add_regress(CLI::App& app);
 void add_stress(CLI::App& app);
 void add_sweep(CLI::App& app);
+void add_match(CLI::App& app);
 void add_merge(CLI::App& app);
 void add_view(CLI::App& app);
 

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   ballbench::cli::add_regress(app);
   ballbench::cli::add_stress(app);
   ballbench::cli::add_sweep(app);
+  ballbench::cli::add_match(app);
   ballbench::cli::add_merge(app);
   ballbench::cli::add_view(app);
   try {

@@ -202,6 +202,13 @@ std::vector<MetricDef> build_catalog() {
                   [](auto& r) -> auto& { return r.metrics.penetration_mean; })),
         "penetration mean", "", true)
       .regress = kReal;
+  add(field("penetration.initial", "",
+            fixed("penetration max of the first sample alone: how deep the placement starts overlapping"),
+            [](auto& r) -> auto& { return r.metrics.penetration_initial; }));
+  add(field("penetration.after_start", "",
+            fixed("penetration max over every sample after the first: how deep the engine lets balls sink (the "
+                  "accuracy spec's `overlap`)"),
+            [](auto& r) -> auto& { return r.metrics.penetration_after_start; }));
 
   // Whole-run figures of the final state.
   add(field("jitter", "m/s",

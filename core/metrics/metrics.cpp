@@ -43,13 +43,14 @@ void MetricsAccumulator::observe(const State& s) {
   m_.slip = slip_.summary();
 
   // Overlaps: penetration (every depth) and sticking (deeper than the tolerance).
+  double sample_max = 0;  // this sample's deepest overlap / radius
   overlapping_pairs(s.pos, scene_.radius, overlap_scratch_, overlaps_);
   deep_.clear();
   deep_leaving_.clear();
   for (const Overlap& o : overlaps_) {
     const double rel = o.depth / std::min(scene_.radius(o.i), scene_.radius(o.j));
     penetration_sum_ += rel, ++penetration_count_;
-    m_.penetration_max = std::max(m_.penetration_max, rel);
+    sample_max = std::max(sample_max, rel);
     if (o.depth > cfg_.contact_tolerance * (scene_.radius(o.i) + scene_.radius(o.j))) {
       deep_.push_back(o);
       const Eigen::Vector2d d = (s.pos.row(o.i) - s.pos.row(o.j)).transpose();
@@ -73,11 +74,12 @@ void MetricsAccumulator::observe(const State& s) {
       wall_leaving_[i] = inward[k] > 0;
       if (depth > 0) {
         penetration_sum_ += depth / r, ++penetration_count_;
-        m_.penetration_max = std::max(m_.penetration_max, depth / r);
+        sample_max = std::max(sample_max, depth / r);
       }
       deep_in_wall_[i] = depth > cfg_.contact_tolerance * r;
     }
   }
+  m_.penetration_max = std::max(m_.penetration_max, sample_max);
   sticking_.observe(deep_, deep_leaving_, deep_in_wall_, wall_leaving_);
   for (int i : sticking_.counted_walls()) keep({EventKind::StickWall, motion_steps_, s.t, i, -1, s.pos(i, 0), s.pos(i, 1)});
   for (const auto& [i, j] : sticking_.counted_pairs()) {
@@ -87,6 +89,8 @@ void MetricsAccumulator::observe(const State& s) {
   m_.sticking_pair = sticking_.pair_events();
   m_.sticking_wall = sticking_.wall_events();
   m_.penetration_mean = penetration_count_ ? penetration_sum_ / penetration_count_ : 0.0;
+  if (m_.samples == 0) m_.penetration_initial = m_.penetration_max;
+  else m_.penetration_after_start = std::max(m_.penetration_after_start, sample_max);
   ++m_.samples;
 }
 

@@ -67,6 +67,10 @@ struct MetricsSummary {
   int sticking_wall = 0, sticking_pair = 0;
   double penetration_max = 0;   // max overlap depth / radius (pairs: the smaller radius)
   double penetration_mean = 0;  // mean of the same over every overlapping contact in every sample
+  // The deepest overlap / radius in the first sample (a placement that starts overlapping), and in
+  // every sample after it: what the engine's contacts let balls sink into each other.
+  double penetration_initial = 0;
+  double penetration_after_start = 0;
   long samples = 0;
 };
 

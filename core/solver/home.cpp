@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "accuracy_spec.h"
 #include "engine_settings.h"
 #include "fork_join.h"
 #include "input_error.h"
@@ -14,6 +15,7 @@
 #include "solver/home_broad_list.h"
 #include "solver/home_events.h"
 #include "solver/home_grid.h"
+#include "solver/home_method.h"
 #include "solver/home_soft.h"
 #include "solver/home_world.h"
 
@@ -140,6 +142,7 @@ class Home final : public Engine {
             {"contact_slop", s_.contact_slop},
             {"max_events_per_ball", s_.max_events_per_ball},
             {"resting", s_.resting},
+            {"overlap", s_.overlap},
             {"substeps", s_.soft.substeps},
             {"substep_iterations", s_.soft.substep_iterations},
             {"relax_iterations", s_.soft.relax_iterations},
@@ -230,6 +233,17 @@ class Home final : public Engine {
   HomePath path_;  // last: it holds references to the world, the thread team and the grid
 };
 
+// resting = "auto": the method for this scene (home_method.h), at the overlap asked or the scene's
+// spec's; settings given explicitly win.
+void resolve_auto(const Scene& scene, const nlohmann::json& overrides, HomeSettings& s) {
+  if (s.overlap == 0) s.overlap = scene_spec(scene)[SpecTerm::overlap].value_or(0.01);
+  const HomeMethod m = choose_home_method(scene, scene.dt, s.overlap);
+  s.resting = m.soft ? "soft" : "events";
+  if (!m.soft) return;
+  if (!overrides.contains("substeps")) s.soft.substeps = m.substeps;
+  if (!overrides.contains("contact_hertz")) s.soft.contact_hertz = m.contact_hertz;
+}
+
 }  // namespace
 
 EngineEntry home_engine() {
@@ -241,16 +255,20 @@ EngineEntry home_engine() {
       "double; impacts slower than rest_velocity (2 |g| dt) are resting contact (restitution 0); contacts within "
       "contact_slop (1e-6 of the radius sum) count as touching";
   info.summary = "our solver: symplectic Euler, resting-contact solve, exact event-driven motion within each step";
-  // default: the events path; soft: resting = "soft", the soft step, for scenes with gravity.
-  info.profiles = {"default", "soft"};
+  // default: the method chosen from the scene and its accuracy spec (resting = "auto"); events and
+  // soft force one.
+  info.profiles = {"default", "events", "soft"};
   info.caps.continuous_collision = true;
   // Coulomb friction at impacts (the rough-disk impulse law) and in resting contacts (sequential
   // impulses in the friction cone); the soft path solves it in its soft step.
   // Sweeps of the resting-contact solve (default: motion between contacts is exact at any
   // setting), and the soft step's substeps (soft).
-  info.sweep_knobs = {{"contact_iterations", {4, 16, 200}, {"default"}}, {"substeps", {2, 8, 16}, {"soft"}}};
+  info.sweep_knobs = {{"overlap", {0.005, 0.0025, 0.001}, {"default"}},
+                      {"contact_iterations", {4, 16, 200}, {"events"}},
+                      {"substeps", {2, 8, 16}, {"soft"}}};
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             HomeSettings s;
+            if (profile == "default") s.resting = "auto";
             if (profile == "soft") {
               // Without gravity nothing rests on anything: the default profile runs such a scene.
               if (!scene.features().gravity)
@@ -263,7 +281,8 @@ EngineEntry home_engine() {
             r.get("rest_velocity", s.rest_velocity);
             r.get("contact_slop", s.contact_slop);
             r.get("max_events_per_ball", s.max_events_per_ball);
-            r.get("resting", s.resting, {"soft", "events"});
+            r.get("resting", s.resting, {"auto", "soft", "events"});
+            r.get("overlap", s.overlap);
             r.get("substeps", s.soft.substeps);
             r.get("substep_iterations", s.soft.substep_iterations);
             r.get("relax_iterations", s.soft.relax_iterations);
@@ -288,6 +307,8 @@ EngineEntry home_engine() {
             if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
             if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
             if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
+            if (!(s.overlap >= 0 && s.overlap < 1)) throw InputError("settings.home.overlap: must be in [0, 1)");
+            if (s.resting == "auto") resolve_auto(scene, overrides, s);
             return make_home(scene, s);
           }};
 }

@@ -39,11 +39,17 @@ struct HomeSettings {
   /// Safety valve: more events than this per ball in one step is reported as a failure instead of
   /// running on (it would mean an inelastic collapse the contact pass did not resolve). (count)
   int max_events_per_ball = 1000;
-  /// Resting contact in scenes with gravity: "soft", the soft step (core/solver/soft_step.h) over
-  /// every contact; "events", a contact pass at the start of the step, then exact event-driven
-  /// motion with resting clusters solved where they form. Scenes without gravity always run
-  /// the event-driven path, exact between collisions.
+  /// How balls that rest on each other are solved: "soft", the soft step (core/solver/soft_step.h)
+  /// over every contact, in scenes with gravity; "events", a contact pass at the start of the step,
+  /// then exact event-driven motion with resting clusters solved where they form; "auto", the
+  /// default profile's, soft where balls pile up (gravity and a box) with substeps and stiffness
+  /// derived from `overlap` (core/solver/home_method.h), events elsewhere. Scenes without gravity
+  /// always run the event-driven path, exact between collisions.
   std::string resting = "events";
+  /// resting = "auto": the largest overlap the soft step is built for, as a fraction of the
+  /// smallest radius; 0 takes the scene's accuracy spec's (scenarios/README.md, "Accuracy").
+  /// Substeps or contact_hertz given as settings win over what it derives. (fraction of the radius)
+  double overlap = 0;
   /// The soft step's substeps, sweeps, push-out stiffness, damping and speed (resting = "soft").
   SoftStepSettings soft;
   /// The soft step fixes each contact's normal for its step, which holds while the balls move a

@@ -1,0 +1,90 @@
+// `ballbench match`: equal accuracy. For a scene and an accuracy spec (the scene's, changed by
+// --spec), each engine and profile's cheapest configuration that meets the spec (match.h); one
+// table, our solver's ratio to the cheapest external engine, and JSON and CSV of every try.
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands.h"
+#include "data_file.h"
+#include "input_error.h"
+#include "interrupt.h"
+#include "match.h"
+#include "progress.h"
+#include "registry.h"
+#include "scene_loader.h"
+#include "sweep_result.h"
+#include "validators.h"
+
+namespace ballbench::cli {
+namespace {
+
+struct MatchArgs {
+  std::string scene, engines, json, csv, shard;
+  std::vector<std::string> spec;
+  bool no_knobs = false;
+  MatchOptions options;
+};
+
+void match(MatchArgs& a) {
+  Progress::quiet = a.options.quiet;
+  const Scene scene = load_scene(a.scene);
+  const auto engines = parse_engine_list(a.engines);
+  check_profile(engines, a.options.profile);
+  a.options.spec = scene_spec(scene);
+  apply_spec_texts(a.options.spec, a.spec, "--spec");
+  if (a.options.spec.empty()) throw InputError("--spec: every term dropped: a spec needs at least one bound");
+  a.options.knobs = !a.no_knobs;
+  a.options.reference = reference_engine();
+  a.options.converged_reference = converged_reference_engine();
+  if (!a.shard.empty()) a.options.shard = parse_shard(a.shard);
+  if (a.json.empty())
+    a.json = a.options.shard.all() ? fmt::format("match-{}.json", scene.name)
+                                   : fmt::format("match-{}.shard{}of{}.json", scene.name, a.options.shard.index,
+                                                 a.options.shard.count);
+  if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
+  if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
+  check_writable(a.json, "the match results", true);
+  check_writable(a.csv, "the match CSV", true);
+  install_interrupt_handlers();
+  const MatchResult m = run_match(scene, engines, a.options, run_context());
+  write_match_files(m, a.json, a.csv);
+  print_match(m);
+  fmt::print("wrote {} and {}\n", a.json, a.csv);
+  exit_if_interrupted(fmt::format("{} tries written to {} and {}", m.tries.size(), a.json, a.csv));
+}
+
+}  // namespace
+
+void add_match(CLI::App& app) {
+  auto a = std::make_shared<MatchArgs>();
+  auto* cmd = app.add_subcommand(
+      "match", "equal accuracy: each engine's cheapest configuration (step size, its own knobs) that meets a spec");
+  cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
+  cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
+  cmd->add_option("--profile", a->options.profile, "settings profile, or all (default: all)");
+  cmd->add_option("--spec", a->spec,
+                  "spec terms over the scene's own, KEY=VALUE, comma-separated (overlap, tunnelling, sticking, "
+                  "rest_speed, energy_drift, energy_error, horizon, rolling; VALUE none drops a term)")
+      ->delimiter(',');
+  cmd->add_option("--max-halvings", a->options.max_halvings, "finest step tried: dt / 2^this (default 6)")
+      ->check(CLI::Range(0, 20));
+  cmd->add_option("--budget", a->options.budget_s, "wall time for each engine and profile's search (s, default 600)")
+      ->check(kPositiveNumber);
+  cmd->add_option("--repeats", a->options.repeats,
+                  "timing runs of each found configuration beside its measuring run; the median is reported "
+                  "(default 2)")
+      ->check(CLI::Range(0, 100));
+  cmd->add_flag("--no-knobs", a->no_knobs, "search the step size only, not the engines' own knobs");
+  cmd->add_option("--json", a->json, "JSON output (default match-SCENE.json)");
+  cmd->add_option("--csv", a->csv, "CSV of every try (default: the JSON path with .csv)");
+  cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds one run may take (default 600)")
+      ->check(kPositiveNumber);
+  cmd->add_option("--shard", a->shard,
+                  "search only shard I of N of the engine and profile pairs (I/N; join the shards' JSON files "
+                  "with `ballbench merge`)");
+  cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
+  cmd->callback([a] { match(*a); });
+}
+
+}  // namespace ballbench::cli

@@ -1,0 +1,59 @@
+#include "spec_verdict.h"
+
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "result.h"
+
+namespace ballbench {
+
+std::optional<double> spec_figure(SpecTerm t, const Result& r) {
+  if (r.steps_done < 1) return std::nullopt;
+  const MetricsSummary& m = r.metrics;
+  switch (t) {
+    case SpecTerm::overlap: return m.penetration_after_start;
+    case SpecTerm::tunnelling: return double(m.tunnelling_wall + m.tunnelling_pair);
+    case SpecTerm::sticking: return double(m.sticking_wall + m.sticking_pair);
+    case SpecTerm::rest_speed: return r.jitter;
+    case SpecTerm::energy_drift: return m.energy.max_rel_drift;
+    case SpecTerm::energy_error:
+      if (!r.reference.available) return std::nullopt;
+      return r.reference.energy_rel_max;
+    case SpecTerm::horizon:
+      if (!r.reference.available) return std::nullopt;
+      // Never left the tolerance: the whole run compared (up to a reference that failed).
+      if (!r.reference.horizon)
+        return (r.reference.reference_failed_step >= 0 ? r.reference.reference_failed_step : r.steps_done) * r.dt;
+      return *r.reference.horizon;
+    case SpecTerm::rolling:
+      if (!r.rolling.speed || !r.rolling.expected_speed || *r.rolling.expected_speed == 0) return std::nullopt;
+      return std::abs(*r.rolling.speed - *r.rolling.expected_speed) / std::abs(*r.rolling.expected_speed);
+  }
+  return std::nullopt;
+}
+
+SpecVerdict judge(const AccuracySpec& spec, const Result& r) {
+  SpecVerdict v;
+  std::vector<std::string> fails;
+  if (r.status != "ok") fails.push_back(r.status + (r.error.empty() ? "" : ": " + r.error));
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound) continue;
+    const auto figure = spec_figure(d.term, r);
+    v.figures[d.key] = figure ? nlohmann::json(*figure) : nlohmann::json();
+    if (!figure) {
+      fails.push_back(fmt::format("{} not measured", d.key));
+      continue;
+    }
+    const bool ok = d.at_least ? *figure >= *bound : *figure <= *bound;
+    if (!ok) fails.push_back(fmt::format("{} {:.3g} {} {:g}", d.key, *figure, d.at_least ? "<" : ">", *bound));
+  }
+  v.met = fails.empty();
+  v.why_not = fmt::format("{}", fmt::join(fails, "; "));
+  return v;
+}
+
+}  // namespace ballbench

@@ -1,0 +1,29 @@
+#pragma once
+// Judging a run against an accuracy spec (accuracy_spec.h): each term's figure comes from what the
+// harness measured from the run's states, never from an engine's own claims.
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "accuracy_spec.h"
+
+namespace ballbench {
+
+struct Result;
+
+// One term's figure for a run: measured by the harness from the run's states; none where the run
+// has none (no reference ran, the scene asks no rolling, nothing was stepped).
+std::optional<double> spec_figure(SpecTerm t, const Result& r);
+
+struct SpecVerdict {
+  bool met = false;
+  // Why not, one clause per failing term ("overlap 0.056 > 0.01"), or the run's status.
+  std::string why_not;
+  // Every bound term's figure (null where unmeasured), keyed as spec_terms().
+  nlohmann::json figures = nlohmann::json::object();
+};
+// Whether `r` meets `spec`: a run that did not end ok never does; an unmeasured term fails.
+SpecVerdict judge(const AccuracySpec& spec, const Result& r);
+
+}  // namespace ballbench

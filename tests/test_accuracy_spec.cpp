@@ -1,0 +1,276 @@
+// The accuracy spec: scene classes and their defaults, the [accuracy] table and --spec texts,
+// judging a run against a spec, `home`'s method chosen from the spec, and `ballbench match`.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "accuracy_spec.h"
+#include "cli_runner.h"
+#include "input_error.h"
+#include "match.h"
+#include "registry.h"
+#include "result.h"
+#include "runner.h"
+#include "scene_loader.h"
+#include "solver/home_method.h"
+#include "spec_verdict.h"
+
+namespace ballbench {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::run_cli;
+
+// A small pile: 60 balls dropped into a narrow box, settling for two seconds.
+const char* kSmallPile = R"(name = "small-pile"
+dt = 0.01
+duration = 3.0
+gravity = [0.0, -9.81]
+restitution = 0.3
+[container]
+min = [-1.0, 0.0]
+max = [1.0, 6.0]
+[random]
+count = 60
+radius = 0.1
+pos_min = [-0.9, 0.1]
+pos_max = [0.9, 5.0]
+seed = 3
+)";
+
+TEST(SceneClass, FollowsGravityBoxAndRolling) {
+  EXPECT_EQ(scene_class(load_scene("pile")), SceneClass::pile);
+  EXPECT_EQ(scene_class(load_scene("seed-bowl")), SceneClass::pile);
+  EXPECT_EQ(scene_class(load_scene("gas")), SceneClass::gas);
+  EXPECT_EQ(scene_class(load_scene("seed-box")), SceneClass::gas);
+  EXPECT_EQ(scene_class(load_scene("slide-to-roll")), SceneClass::rolling);
+  EXPECT_EQ(scene_class(load_scene("projectile")), SceneClass::free);
+}
+
+TEST(ClassSpec, PileBoundsOverlapTunnellingAndRest) {
+  const Scene pile = load_scene("pile");
+  const AccuracySpec s = scene_spec(pile);
+  EXPECT_EQ(s[SpecTerm::overlap], 0.01);
+  EXPECT_EQ(s[SpecTerm::tunnelling], 0);
+  // 1% of sqrt(|g| r) with g = 9.81 and r = 0.25.
+  ASSERT_TRUE(s[SpecTerm::rest_speed]);
+  EXPECT_NEAR(*s[SpecTerm::rest_speed], 0.01 * std::sqrt(9.81 * 0.25), 1e-12);
+  EXPECT_FALSE(s[SpecTerm::energy_drift]);
+  EXPECT_FALSE(s.needs_reference());
+}
+
+TEST(ClassSpec, ElasticGasToRoundOffAndAnOverlappingPlacementUnbounded) {
+  const AccuracySpec gas = scene_spec(load_scene("gas"));
+  EXPECT_EQ(gas[SpecTerm::energy_drift], 1e-9);
+  EXPECT_EQ(gas[SpecTerm::overlap], 0.01);
+  // seed-box starts overlapping (allow_overlap) and loses energy (restitution 0.99).
+  const AccuracySpec box = scene_spec(load_scene("seed-box"));
+  EXPECT_FALSE(box[SpecTerm::overlap]);
+  EXPECT_FALSE(box[SpecTerm::energy_drift]);
+  EXPECT_EQ(box[SpecTerm::tunnelling], 0);
+  EXPECT_EQ(scene_spec(load_scene("slide-to-roll"))[SpecTerm::rolling], 0.005);
+}
+
+TEST(SceneAccuracyTable, ReplacesAndDropsTermsOverTheClass) {
+  const Scene s = parse_scene(std::string(kSmallPile) + "[accuracy]\noverlap = 0.002\nrest_speed = false\n"
+                                                             "horizon = 0.5\n",
+                                   "small.toml");
+  const AccuracySpec spec = scene_spec(s);
+  EXPECT_EQ(spec[SpecTerm::overlap], 0.002);
+  EXPECT_FALSE(spec[SpecTerm::rest_speed]);
+  EXPECT_EQ(spec[SpecTerm::horizon], 0.5);
+  EXPECT_EQ(spec[SpecTerm::tunnelling], 0);  // kept from the class
+  EXPECT_TRUE(spec.needs_reference());
+}
+
+TEST(SceneAccuracyTable, BadTermsAreOneLineNamingFileLineAndField) {
+  const auto error = [](const std::string& table) {
+    try {
+      parse_scene(std::string(kSmallPile) + "[accuracy]\n" + table, "small.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error("overlapp = 0.01\n"), "small.toml:16: accuracy.overlapp: unknown key, did you mean 'overlap'?");
+  EXPECT_EQ(error("overlap = -0.01\n"), "small.toml:16: accuracy.overlap: must be a finite number >= 0, got -0.01");
+  EXPECT_EQ(error("tunnelling = 0.5\n"),
+            "small.toml:16: accuracy.tunnelling: must be a finite number >= 0 and whole, got 0.5");
+  EXPECT_EQ(error("overlap = \"small\"\n"),
+            "small.toml:16: accuracy.overlap: expected a number (or false to drop it), got a string");
+}
+
+TEST(SpecTexts, SetAndDropTermsAndRefuseWhatIsNotOne) {
+  AccuracySpec s = scene_spec(load_scene("pile"));
+  apply_spec_texts(s, {"overlap=0.005", "rest_speed=none", "sticking=3"}, "--spec");
+  EXPECT_EQ(s[SpecTerm::overlap], 0.005);
+  EXPECT_FALSE(s[SpecTerm::rest_speed]);
+  EXPECT_EQ(s[SpecTerm::sticking], 3);
+  EXPECT_THROW(apply_spec_texts(s, {"overlap"}, "--spec"), InputError);
+  EXPECT_THROW(apply_spec_texts(s, {"depth=0.1"}, "--spec"), InputError);
+  EXPECT_THROW(apply_spec_texts(s, {"overlap=0.1x"}, "--spec"), InputError);
+  EXPECT_THROW(apply_spec_texts(s, {"overlap=nan"}, "--spec"), InputError);
+  EXPECT_THROW(apply_spec_texts(s, {"tunnelling=1.5"}, "--spec"), InputError);
+}
+
+Result ok_run() {
+  Result r;
+  r.status = "ok";
+  r.steps_done = 10;
+  r.dt = 0.01;
+  return r;
+}
+
+TEST(Judge, MeetsOnlyWhenEveryBoundTermIsWithinIt) {
+  AccuracySpec spec;
+  spec[SpecTerm::overlap] = 0.01;
+  spec[SpecTerm::tunnelling] = 0;
+  spec[SpecTerm::rest_speed] = 0.001;
+  Result r = ok_run();
+  r.metrics.penetration_max = 0.5;  // the placement's, not judged
+  r.metrics.penetration_after_start = 0.008;
+  r.jitter = 1e-4;
+  SpecVerdict v = judge(spec, r);
+  EXPECT_TRUE(v.met) << v.why_not;
+  EXPECT_EQ(v.figures["overlap"], 0.008);
+
+  r.metrics.penetration_after_start = 0.02;
+  r.metrics.tunnelling_pair = 1;
+  v = judge(spec, r);
+  EXPECT_FALSE(v.met);
+  EXPECT_EQ(v.why_not, "overlap 0.02 > 0.01; tunnelling 1 > 0");
+
+  r = ok_run();
+  r.jitter.reset();  // a term the run did not measure fails, never passes
+  v = judge(spec, r);
+  EXPECT_FALSE(v.met);
+  EXPECT_EQ(v.why_not, "rest_speed not measured");
+  EXPECT_TRUE(v.figures["rest_speed"].is_null());
+
+  r = ok_run();
+  r.jitter = 0;
+  r.status = "diverged";
+  r.error = "a ball left the container";
+  EXPECT_FALSE(judge(spec, r).met);
+}
+
+TEST(Judge, HorizonIsAtLeastAndTheWholeRunWhereNeverExceeded) {
+  AccuracySpec spec;
+  spec[SpecTerm::horizon] = 0.05;
+  Result r = ok_run();
+  EXPECT_EQ(judge(spec, r).why_not, "horizon not measured");  // no reference ran
+  r.reference.available = true;
+  r.reference.horizon = 0.03;
+  EXPECT_EQ(judge(spec, r).why_not, "horizon 0.03 < 0.05");
+  r.reference.horizon.reset();  // never left the tolerance: all 10 steps of 0.01 s
+  EXPECT_TRUE(judge(spec, r).met);
+  EXPECT_DOUBLE_EQ(spec_figure(SpecTerm::horizon, r).value(), 0.1);
+}
+
+TEST(HomeMethod, EventsWithoutAPileAndAStifferSoftStepForATighterOverlap) {
+  EXPECT_FALSE(choose_home_method(load_scene("gas"), 0.01, 0.01).soft);
+  EXPECT_FALSE(choose_home_method(load_scene("projectile"), 0.01, 0.01).soft);
+  const Scene pile = load_scene("pile");
+  // 500 balls of r = 0.25 in a box 12 m wide: 500 pi 0.0625 / (0.82 x 12) = 9.98 m, / (sqrt 3 x 0.25).
+  EXPECT_NEAR(settled_layers(pile), 500 * M_PI * 0.0625 / (0.82 * 12) / (std::sqrt(3.0) * 0.25), 1e-9);
+  const HomeMethod loose = choose_home_method(pile, 0.01, 0.01), tight = choose_home_method(pile, 0.01, 0.0025);
+  ASSERT_TRUE(loose.soft && tight.soft);
+  // Sag ~ 1 / f^2: a quarter of the overlap takes twice the frequency.
+  EXPECT_NEAR(tight.contact_hertz / loose.contact_hertz, 2.0, 1e-9);
+  // The push-out uses at most a quarter of the substep rate, substeps / dt.
+  EXPECT_GE(loose.substeps / 0.01 / 4, loose.contact_hertz);
+  EXPECT_LT((loose.substeps - 1) / 0.01 / 4, loose.contact_hertz);
+}
+
+TEST(HomeMethod, TheDefaultProfileRecordsTheMethodItChose) {
+  const EngineEntry& home = find_engine("home");
+  const auto settings = [&](const std::string& scene, const nlohmann::json& set) {
+    return home.create(load_scene(scene), "default", set)->settings();
+  };
+  EXPECT_EQ(settings("gas", {})["resting"], "events");
+  const auto pile = settings("pile", {});
+  EXPECT_EQ(pile["resting"], "soft");
+  EXPECT_EQ(pile["overlap"], 0.01);  // the scene's spec
+  EXPECT_EQ(pile["substeps"], choose_home_method(load_scene("pile"), 0.01, 0.01).substeps);
+  // A setting given explicitly wins over the derived one.
+  EXPECT_EQ(settings("pile", {{"substeps", 5}})["substeps"], 5);
+  EXPECT_EQ(home.create(load_scene("pile"), "events", {})->settings()["resting"], "events");
+}
+
+// The search on a small pile: home meets the class spec, the thesis port (no resting contact, balls
+// sink into each other) never does; a found point re-run by itself meets the spec again.
+TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o;
+  o.spec = scene_spec(scene);
+  o.max_halvings = 1;
+  o.repeats = 1;
+  o.knobs = false;
+  o.quiet = true;
+  o.isolation.enabled = false;
+  const cli::MatchResult m = cli::run_match(scene, {&find_engine("home"), &find_engine("home-seed")}, o, {});
+  ASSERT_EQ(m.outcomes.size(), 4u);  // home: default, events, soft; home-seed
+  const cli::MatchOutcome& home = m.outcomes[0];
+  ASSERT_TRUE(home.reached) << m.tries.at(std::max(0, home.best)).why_not;
+  const cli::MatchTry& found = m.tries[home.found];
+  EXPECT_TRUE(found.met);
+  EXPECT_EQ(found.halvings, 0);
+  EXPECT_EQ(home.cost_repeats.size(), 2u);
+  EXPECT_NE(home.command.find("--profile default --dt 0.01"), std::string::npos) << home.command;
+  Scene again = scene;
+  again.dt = found.dt;
+  RunOptions ro;
+  ro.profile = found.profile;
+  EXPECT_TRUE(judge(o.spec, run_engine(again, find_engine("home"), ro)).met);
+
+  const cli::MatchOutcome& seed = m.outcomes[3];
+  EXPECT_EQ(seed.engine, "home-seed");
+  EXPECT_FALSE(seed.reached);
+  EXPECT_EQ(seed.found, -1);
+  ASSERT_GE(seed.best, 0);
+  EXPECT_FALSE(m.tries[seed.best].met);
+  EXPECT_FALSE(m.tries[seed.best].why_not.empty());
+  EXPECT_EQ(seed.tries, 2);  // dt and dt/2
+  EXPECT_DOUBLE_EQ(seed.finest_dt, 0.005);
+
+  // The JSON holds every try and reads back to the same outcomes.
+  const cli::MatchResult back = cli::match_from_json(cli::to_json(m));
+  EXPECT_EQ(back.tries.size(), m.tries.size());
+  EXPECT_EQ(back.outcomes[3].best, seed.best);
+  EXPECT_EQ(back.spec.to_json(), m.spec.to_json());
+}
+
+TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {
+  const fs::path dir = fs::temp_directory_path() / "ballbench-match-cli";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string scene = (dir / "small-pile.toml").string();
+  std::ofstream(scene) << kSmallPile;
+  const std::string base = "match --scene " + scene + " --engine home --profile all --max-halvings 0 --quiet ";
+  for (int i = 1; i <= 2; ++i) {
+    const auto r = run_cli(base + fmt::format("--shard {}/2 --json {}/m{}.json", i, dir.string(), i));
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  const auto merged = run_cli(fmt::format("merge {0}/m1.json {0}/m2.json --out {0}/m.json", dir.string()));
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  const cli::MatchResult m = cli::read_match_file((dir / "m.json").string());
+  EXPECT_EQ(m.outcomes.size(), 3u);
+  EXPECT_EQ(m.shard_count, 1);
+  std::ifstream csv(dir / "m.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("engine,profile,knob,value,halvings,dt,status,met,cost_ns,cost_pipe_ns,wall_s,overlap,", 0), 0u);
+
+  const auto bad = run_cli("match --scene pile --engine home --spec overlapp=0.01 --quiet");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--spec overlapp=0.01: expected KEY=VALUE with KEY one of overlap"), std::string::npos)
+      << bad.err;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ballbench
