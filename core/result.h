@@ -34,12 +34,14 @@ struct Result {
   bool diverged = false;
   long diverged_step = -1;
   double engine_s = 0;          // engine step time summed over the run (s); JSON "engine_s"
+  // The engine's own step time per step and per ball-step: self-timed by an engine in another
+  // process (engine_process_s), the harness's timing of step() for every other.
   double ns_per_step = 0;
   double ns_per_ball_step = 0;
   double harness_s = 0;         // reading states, metrics and trajectory output (s)
   // Engines in another process (adapters/process/): their step time as that process measured it
   // around its own step calls (s), beside engine_s, which adds the pipe. JSON "engine_process_s"
-  // and "ns_per_ball_step_process", present only for such engines.
+  // and "ns_per_ball_step_pipe" (engine_s per ball-step), present only for such engines.
   std::optional<double> engine_process_s;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   MetricsSummary metrics;

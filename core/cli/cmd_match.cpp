@@ -62,7 +62,7 @@ void add_match(CLI::App& app) {
       "match", "equal accuracy: each engine's cheapest configuration (step size, its own knobs) that meets a spec");
   cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
-  cmd->add_option("--profile", a->options.profile, "settings profile, or all (default: all)");
+  cmd->add_option("--profile", a->options.profile, "settings profile, comma-separated profiles, or all (default: all)");
   cmd->add_option("--spec", a->spec,
                   "spec terms over the scene's own, KEY=VALUE, comma-separated (overlap, tunnelling, sticking, "
                   "rest_speed, energy_drift, energy_error, horizon, rolling; VALUE none drops a term)")

@@ -196,7 +196,7 @@ void add_run(CLI::App& app) {
                   "refuse a --trajectory estimated larger than this many GB (default 10)")
       ->check(kPositiveNumber);
   cmd->add_option("--profile", a->profile,
-                  "settings profile (see `ballbench list`): a name, or all; engines without it run their default");
+                  "settings profile (see `ballbench list`): a name, comma-separated names, or all; engines without any run their default");
   cmd->add_option("--set", a->sets, "engine setting ENGINE.KEY=VALUE (repeatable)");
   cmd->add_option("--sample-every", a->sample_every,
                   "sampled metrics (energy, momentum, overlaps, sticking, error, checksums) see every K-th step "

@@ -61,7 +61,7 @@ void add_sweep(CLI::App& app) {
       "sweep", "work against precision: vary each engine's accuracy knobs, time each point, error against exact");
   cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
-  cmd->add_option("--profile", a->options.profile, "settings profile, or all (default: all)");
+  cmd->add_option("--profile", a->options.profile, "settings profile, comma-separated profiles, or all (default: all)");
   cmd->add_option("--horizon", a->options.horizon,
                   "simulated time at which the position error is taken (s, default 0.2; a whole number of steps "
                   "at every dt)")

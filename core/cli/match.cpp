@@ -58,14 +58,22 @@ std::string run_command(const Scene& scene, const MatchTry& t) {
   return cmd;
 }
 
-// Fewer failing terms first, then the finer step.
-int better_miss(const std::vector<MatchTry>& tries, int a, int b) {
-  if (a < 0) return b;
-  const auto fails = [&](int k) { return std::count(tries[k].why_not.begin(), tries[k].why_not.end(), ';'); };
-  if (tries[b].status == "ok" && tries[a].status != "ok") return b;
-  if (tries[b].status != "ok" && tries[a].status == "ok") return a;
-  if (fails(b) != fails(a)) return fails(b) < fails(a) ? b : a;
-  return tries[b].dt <= tries[a].dt ? b : a;
+// How far a try is from the spec: its worst term's figure over the bound (the bound over the figure
+// for a term that must be at least; 1 + the figure for a bound of 0); infinite for a run that did
+// not end ok or a term it did not measure.
+double miss(const MatchTry& t, const AccuracySpec& spec) {
+  if (t.status != "ok") return std::numeric_limits<double>::infinity();
+  double worst = 0;
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound) continue;
+    const auto f = t.figures.value(d.key, nlohmann::json());
+    if (f.is_null()) return std::numeric_limits<double>::infinity();
+    const double x = f.get<double>();
+    worst = std::max(worst, d.at_least ? (x > 0 ? *bound / x : std::numeric_limits<double>::infinity())
+                                       : (*bound > 0 ? x / *bound : 1 + x));
+  }
+  return worst;
 }
 
 class Search {
@@ -73,54 +81,48 @@ class Search {
   Search(const Scene& scene, const EngineEntry& e, std::string profile, const MatchOptions& o, MatchResult& out)
       : scene_(scene), e_(e), profile_(std::move(profile)), o_(o), out_(out) {}
 
+  // First the profile as it is, coarse to fine until it meets the spec; then each knob setting from
+  // two halvings coarser than that (a knob may let a longer step meet it) down to where the profile
+  // met it (or to the finest step if it never did), refined while it can still be cheaper.
   MatchOutcome run(Progress& progress) {
     MatchOutcome oc;
     oc.engine = e_.info.name, oc.profile = profile_, oc.role = role_name(e_.info.role);
     const auto configs = configs_for(scene_, e_, profile_, o_.knobs);
-    // Per configuration: its cost at the last step size it ran ok, and whether it is still searched.
-    std::vector<double> last_cost(configs.size(), -1);
-    std::vector<bool> live(configs.size(), true);
-    const auto start = Clock::now();
-    double best_cost = std::numeric_limits<double>::infinity();
-    for (int k = 0; k <= o_.max_halvings && oc.stopped.empty(); ++k) {
-      for (size_t c = 0; c < configs.size() && oc.stopped.empty(); ++c) {
-        if (!live[c]) continue;
-        if (last_cost[c] > 0 && kHalvingCostFloor * last_cost[c] >= best_cost) {
-          live[c] = false;  // finer cannot be cheaper than what met the spec
-          continue;
-        }
-        const double left = o_.budget_s - std::chrono::duration<double>(Clock::now() - start).count();
-        if (left <= 0) {
+    start_ = Clock::now();
+    int met_at = -1;
+    for (size_t c = 0; c < configs.size() && oc.stopped.empty(); ++c) {
+      const int first = c == 0 || met_at < 0 ? 0 : std::max(0, met_at - 2);
+      const int last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
+      double cost = -1;  // at the last step size it ran ok
+      int cost_at = 0;
+      for (int k = first; k <= last && oc.stopped.empty(); ++k) {
+        if (cost > 0 && cost * std::pow(kHalvingCostFloor, k - cost_at) >= best_cost_) break;  // cannot be cheaper
+        if (budget_left() <= 0) {
           oc.stopped = fmt::format("the {:g} s budget", o_.budget_s);
           break;
         }
-        const int t = try_config(configs[c], k, left);
-        ++oc.tries;
-        oc.finest_dt = out_.tries[t].dt;
+        const int t = try_config(configs[c], k, budget_left());
         const MatchTry& tr = out_.tries[t];
-        if (tr.status == "unsupported" || tr.status == "interrupted") live[c] = false;
-        if (tr.status == "timed out") {
-          live[c] = false;  // a finer step takes longer still
-          if (std::chrono::duration<double>(Clock::now() - start).count() >= o_.budget_s)
-            oc.stopped = fmt::format("the {:g} s budget", o_.budget_s);
-        }
-        if (tr.status == "ok") last_cost[c] = tr.cost_ns;
-        if (tr.met) {
-          live[c] = false;  // a finer step of the same configuration costs more
-          if (tr.cost_ns < best_cost) best_cost = tr.cost_ns, oc.found = t;
-        } else {
-          oc.best = better_miss(out_.tries, oc.best, t);
-        }
+        ++oc.tries;
+        oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
         if (interrupt_signal()) oc.stopped = "an interrupt";
-        if (!o_.quiet) progress.update(double(k * configs.size() + c + 1) / double((o_.max_halvings + 1) * configs.size()));
+        if (tr.status == "ok") cost = tr.cost_ns, cost_at = k;
+        if (tr.met) {
+          if (tr.cost_ns < best_cost_) best_cost_ = tr.cost_ns, oc.found = t;
+          if (c == 0) met_at = k;
+          break;  // finer costs more
+        }
+        if (oc.best < 0 || miss(tr, o_.spec) < miss(out_.tries[oc.best], o_.spec)) oc.best = t;
+        if (tr.status == "unsupported" || tr.status == "timed out") break;  // finer will not do better
       }
-      if (std::none_of(live.begin(), live.end(), [](bool b) { return b; })) break;
+      if (!o_.quiet) progress.update(double(c + 1) / configs.size());
     }
     oc.reached = oc.found >= 0;
-    if (!oc.reached && oc.stopped.empty()) oc.stopped = fmt::format("dt / 2^{} tried", o_.max_halvings);
     if (oc.reached) {
       oc.stopped.clear();
       retime(oc);
+    } else if (oc.stopped.empty()) {
+      oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
     const int shown = oc.reached ? oc.found : oc.best;
     if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown]);
@@ -187,6 +189,12 @@ class Search {
   std::string profile_;
   const MatchOptions& o_;
   MatchResult& out_;
+  Clock::time_point start_;
+  double best_cost_ = std::numeric_limits<double>::infinity();
+
+  double budget_left() const {
+    return o_.budget_s - std::chrono::duration<double>(Clock::now() - start_).count();
+  }
 };
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }

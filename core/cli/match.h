@@ -1,10 +1,11 @@
 #pragma once
 // Equal accuracy (`ballbench match`): for each engine and profile, the cheapest configuration that
 // meets one accuracy spec (accuracy_spec.h) on a scene. The step size is searched geometrically
-// (dt / 2^k, the scene's duration kept) together with the engine's own accuracy knobs
-// (EngineInfo::sweep_knobs, one at a time on top of the profile), coarse to fine, with a bound that
-// skips a configuration once halving its step cannot make it cheaper than the best found: a step
-// half as long costs at least kHalvingCostFloor times as much per scene step.
+// (dt / 2^k, the scene's duration kept): first the profile as it is, coarse to fine until it meets
+// the spec; then each of the engine's own accuracy knobs (EngineInfo::sweep_knobs, one at a time on
+// top of the profile) from two halvings coarser than that, refined while it can still be cheaper
+// than the best found: a step half as long costs at least kHalvingCostFloor times as much per scene
+// step.
 #include <string>
 #include <vector>
 
@@ -62,7 +63,7 @@ struct MatchOutcome {
   std::string role;      // the engine's (role_name): ours is compared with the external engines
   bool reached = false;
   int found = -1;        // index into MatchResult::tries of the cheapest that met
-  int best = -1;         // not reached: the try that failed fewest terms, finest first
+  int best = -1;         // the try nearest the spec that did not meet it (its worst term's ratio to its bound)
   int tries = 0;
   double finest_dt = 0;  // the finest step tried (s)
   std::vector<double> cost_repeats;  // the found configuration's cost in each timing run (ns)

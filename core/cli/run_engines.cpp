@@ -127,14 +127,19 @@ void print_table(const std::vector<Result>& results) {
       shown.push_back(&m);
   fmt::print("{:<18} {:<11} {:>6} {:>8}", "engine", "status", "n", "steps");
   for (const MetricDef* m : shown) fmt::print(" {:>10}", m->heading);
-  fmt::print(" {:>10} {:>9} {:>12}\n", "pos.err", "horizon", "ns/ball-step");
+  fmt::print(" {:>10} {:>9} {:>12} {:>10}\n", "pos.err", "horizon", "ns/ball-step", "with pipe");
   for (const auto& r : results) {
     const auto& e = r.reference;
     fmt::print("{:<18} {:<11} {:>6} {:>8}", run_label(r), r.status, r.n, r.steps_done);
     for (const MetricDef* m : shown) fmt::print(" {:>10}", metric_text(m->get(r)));
-    fmt::print(" {:>10} {:>9} {:>12.1f}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
-               !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step);
+    fmt::print(" {:>10} {:>9} {:>12.1f} {:>10}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
+               !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step,
+               r.engine_process_s ? fmt::format("{:.1f}", r.engine_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n))
+                                  : "-");
   }
+  if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.engine_process_s.has_value(); }))
+    fmt::print("ns/ball-step: the engine's own step time; an engine in another process times its step calls itself, "
+               "and `with pipe` is the harness's time of the whole request\n");
   for (const auto& r : results) {
     if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
     for (const std::string& note : r.skipped)
@@ -167,11 +172,32 @@ void print_ensemble(const std::vector<Result>& results, int seeds, const std::st
     if (!r.error.empty()) fmt::print("{} (seed offset {}): {}\n", run_label(r), r.seed_offset, r.error);
 }
 
+namespace {
+
+// "tuned,default" -> {"tuned", "default"}: the names of a --profile list, each once.
+std::vector<std::string> profile_names(const std::string& list) {
+  std::vector<std::string> names;
+  size_t at = 0;
+  while (at <= list.size()) {
+    const size_t comma = std::min(list.find(',', at), list.size());
+    const std::string name = list.substr(at, comma - at);
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    at = comma + 1;
+  }
+  return names;
+}
+
+}  // namespace
+
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile) {
   const auto& mine = e.info.profiles;
-  if (profile == "all") return mine;
-  if (!profile.empty() && std::find(mine.begin(), mine.end(), profile) != mine.end()) return {profile};
-  return {mine.front()};
+  std::vector<std::string> out;
+  for (const std::string& name : profile_names(profile)) {
+    if (name == "all") return mine;
+    if (std::find(mine.begin(), mine.end(), name) != mine.end()) out.push_back(name);
+  }
+  if (out.empty()) out.push_back(mine.front());
+  return out;
 }
 
 size_t run_count(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
@@ -181,15 +207,14 @@ size_t run_count(const std::vector<const EngineEntry*>& engines, const std::stri
 }
 
 void check_profile(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
-  if (profile.empty() || profile == "all") return;
   std::vector<std::string> known;
   for (const auto* e : engines)
-    for (const auto& p : e->info.profiles) {
-      if (p == profile) return;
+    for (const auto& p : e->info.profiles)
       if (std::find(known.begin(), known.end(), p) == known.end()) known.push_back(p);
-    }
-  throw InputError(fmt::format("--profile: no selected engine has a profile '{}' (they have: {}, or all)", profile,
-                               fmt::join(known, ", ")));
+  for (const std::string& name : profile_names(profile))
+    if (name != "all" && std::find(known.begin(), known.end(), name) == known.end())
+      throw InputError(fmt::format("--profile: no selected engine has a profile '{}' (they have: {}, or all)", name,
+                                   fmt::join(known, ", ")));
 }
 
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,

@@ -14,9 +14,10 @@
 
 namespace ballbench::cli {
 
-// The profiles to run for one engine: "" = its default; "all" = every profile it has; a name =
-// that profile if the engine has it, else its default (so `--profile tuned` names every external
-// engine's tuned profile while our solvers, which have one profile, run theirs).
+// The profiles to run for one engine: "" = its default; "all" = every profile it has; a name, or
+// comma-separated names = those of them the engine has, else its default (so `--profile tuned`
+// names every external engine's tuned profile while our solvers run their default, and
+// `--profile default,stock` runs our solvers' default and the external engines' stock).
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile);
 
 // The runs run_all makes of one scene: every engine x profiles_for(engine, profile).

@@ -128,7 +128,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       const Result t = run(s, *item.engine, options);
       if (t.status != "ok") break;
       p.ns_per_ball_step.push_back(t.ns_per_ball_step);
-      p.engine_s.push_back(t.engine_s);
+      p.engine_s.push_back(t.engine_process_s.value_or(t.engine_s));  // the engine's own time, as ns_per_ball_step
     }
     out.points.push_back(std::move(p));
     if (interrupt_signal()) {  // the point in progress is kept, marked by its run's status
