@@ -15,13 +15,15 @@ struct BenchRow {
                                        // "pipe" (the process protocol alone: an engine that moves nothing)
   std::string engine, profile, scene;  // from the benchmark name WINDOW/ENGINE/PROFILE/SCENE/N
   long n = 0;
-  double ns_per_ball_step = 0;         // the benchmark's counter
+  // The engine's own step time: the benchmark's counter, or for an engine in another process the
+  // step time its process measured (the counter, with the pipe, is then pipe_ns_per_ball_step).
+  double ns_per_ball_step = 0;
   std::optional<double> steps_per_s;              // when the benchmark reports it
   std::optional<double> peak_rss_bytes_per_ball;  // the process's peak resident set over n
   std::optional<double> engine_bytes_per_ball;    // resident growth while the engine was built and run
   std::optional<double> settle_steps;             // settled pile: steps before the timed ones
   std::optional<double> start_rms_speed;          // settled pile: RMS speed when the timed steps began (m/s)
-  std::optional<double> engine_process_ns_per_ball_step;  // an engine in another process: its own step alone
+  std::optional<double> pipe_ns_per_ball_step;  // an engine in another process: the harness's time, pipe included
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 

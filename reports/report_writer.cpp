@@ -215,7 +215,7 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
 void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
   std::vector<const BenchRow*> rows;
   for (const BenchRow& r : bench.rows)
-    if (r.error.empty() && r.engine_process_ns_per_ball_step) rows.push_back(&r);
+    if (r.error.empty() && r.pipe_ns_per_ball_step) rows.push_back(&r);
   if (rows.empty()) return;
   const auto pipe_at = [&](const std::string& scene, long n) -> const BenchRow* {
     for (const BenchRow& p : bench.pipe)
@@ -223,15 +223,15 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
     return nullptr;
   };
   put("Engines in another process (`adapters/process/`, the Node engines) pay the pipe on every step: the step "
-      "request, the reply and the state block. The harness times the whole round trip (its ns per ball-step, as in "
-      "the tables above); the engine's process times its own step call; `pipe/noop/default/SCENE/N` is a Node "
+      "request, the reply and the state block. The engine's process times its own step call (its ns per ball-step, "
+      "as in the tables above); the harness times the whole round trip; `pipe/noop/default/SCENE/N` is a Node "
       "engine that moves nothing (`adapters/node/noop.js`), so its time is the pipe alone.\n\n");
   put("| engine | scene | balls | harness: step and pipe | its own step | pipe alone (`pipe/noop`) |\n"
       "|---|---|---:|---:|---:|---:|\n");
   for (const BenchRow* r : rows) {
     const BenchRow* p = pipe_at(r->scene, r->n);
     put("| {} | {} | {} | {:.0f} | {:.0f} | {} |\n", run_label(r->engine, r->profile), r->scene, r->n,
-        r->ns_per_ball_step, *r->engine_process_ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : "-");
+        *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : "-");
   }
   put("\nns per ball-step. Source: `results/bench.json`.\n\n");
 }

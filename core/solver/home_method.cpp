@@ -31,7 +31,8 @@ double settled_layers(const Scene& scene) {
 
 HomeMethod choose_home_method(const Scene& scene, double dt, double overlap) {
   HomeMethod m;
-  if (scene_class(scene) != SceneClass::pile || scene.n() == 0) return m;
+  // One ball has nothing to pile on: the event-driven path follows its bounces exactly.
+  if (scene_class(scene) != SceneClass::pile || scene.n() < 2) return m;
   m.soft = true;
   const double load = settled_layers(scene) * scene.gravity.norm();  // per unit mass (m/s^2)
   const double sag = overlap * scene.radius.minCoeff();               // (m)

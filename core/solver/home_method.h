@@ -1,7 +1,7 @@
 #pragma once
 // How `home` runs a scene when its profile leaves the choice to it (the default profile): the
-// event-driven path where nothing rests on anything (no gravity, or no box to pile in), and the
-// soft step where balls pile up, with its stiffness and substeps derived from the overlap the
+// event-driven path where nothing rests on anything (no gravity, no box to pile in, or a single
+// ball), and the soft step where balls pile up, with its stiffness and substeps derived from the overlap the
 // scene's accuracy spec allows (accuracy_spec.h).
 #include <string>
 
