@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -516,6 +517,46 @@ radius = 0.25
     ASSERT_TRUE(r.reference.available);
     EXPECT_TRUE(std::isfinite(r.reference.pos_rms_max)) << mode << ": " << r.reference.pos_rms_max;
     EXPECT_GT(r.reference.pos_rms_max, 0.5 * x) << mode;
+  }
+}
+
+// A helper the engine started, holding the engine's stdout, ends with the engine's process.
+TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
+  const std::string pid_file = (std::filesystem::temp_directory_path() / ("bb_helper." + std::to_string(::getpid()))).string();
+  {
+    const EngineEntry e = process_engine_entry(spec({"python3", kMisbehaving, "helper", pid_file}));
+    ASSERT_TRUE(e.info.unavailable.empty()) << e.info.unavailable;
+    EXPECT_EQ(run_engine(box(), e, steps(5)).status, "ok");
+  }  // the entry and its idle process are gone
+  std::ifstream in(pid_file);
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  std::filesystem::remove(pid_file);
+  // Killed (gone, or a zombie its new parent has not reaped yet): not sleeping on.
+  bool alive = false;
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
+    if (!alive) break;
+    ::usleep(20'000);
+  }
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
+}
+
+TEST(EnginesFile, RefusesAFolderAndTheNameAll) {
+  try {
+    read_engines_file(std::filesystem::temp_directory_path().string());
+    ADD_FAILURE() << "no InputError for a folder";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(has(e.what(), "it is a folder")) << e.what();
+  }
+  const std::string all = write_file("bb_engines_all.toml", "[[engine]]\nname = \"all\"\ncommand = [\"a\"]\n");
+  try {
+    read_engines_file(all);
+    ADD_FAILURE() << "no InputError for the name all";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(has(e.what(), ":2: engine.name: expected a name")) << e.what();
   }
 }
 

@@ -3,7 +3,7 @@
 and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
 Modes that misbehave at the handshake or the scene: "unavailable", "protocol-3", "no-hello",
-"name-escape" (a name with an escape code), "name-all", "profiles-twice", "settings-at-scene" (a
+"name-escape" (a name with an escape code), "helper" (starts a process that keeps its stdout), "name-all", "profiles-twice", "settings-at-scene" (a
 settings error for every scene), "unsupported" (refuses every scene as unsupported), "minimal" (a
 handshake of the required fields only). Test-only: never in an engines file."""
 import array
@@ -20,6 +20,11 @@ def send(reply, block=b""):
     out.flush()
 
 
+if mode == "helper":  # starts a helper that keeps stdout open, and says its pid in argv[2]
+    import subprocess
+    helper = subprocess.Popen(["sleep", "600"])
+    with open(sys.argv[2], "w") as f:
+        f.write(str(helper.pid))
 if mode == "no-hello":
     sys.stderr.write("misbehaving engine: refusing to start\n")
     sys.exit(4)
