@@ -751,8 +751,9 @@ TEST(Cli, ASweepWithoutOneMeasuredPointExitsOne) {
   EXPECT_TRUE(std::filesystem::exists(s / "s.json"));
 }
 
-// A regress baseline's tolerances are checked before anything runs: a negative one is refused.
-TEST(Cli, RegressRefusesANegativeTolerance) {
+// A regress baseline's tolerances are checked before anything runs: a negative one is refused; and
+// a baseline that cannot be read is replaced by --update.
+TEST(Cli, RegressRefusesANegativeToleranceAndUpdatesACorruptBaseline) {
   const Scratch s("bb_regress_tolerance");
   nlohmann::json baseline = nlohmann::json::parse(slurp(std::string(BALLBENCH_REGRESS_DIR) + "/baseline.json"));
   ASSERT_TRUE(baseline["tolerances"].is_object());
@@ -761,6 +762,11 @@ TEST(Cli, RegressRefusesANegativeTolerance) {
   std::ofstream(s / "baseline.json") << baseline.dump();
   expect_one_line_error(cli("regress --baseline " + s / "baseline.json"),
                         "tolerances." + key + ".rel: expected a finite number >= 0, got -1");
+  // --update replaces a baseline it cannot read (the reason to update it), with the defaults.
+  std::ofstream(s / "corrupt.json") << "{\"runs\": [";
+  const Outcome update = cli("regress --update --baseline " + s / "corrupt.json");
+  EXPECT_EQ(update.status, 0) << update.err;
+  EXPECT_EQ(cli("regress --baseline " + s / "corrupt.json").status, 0);
 }
 
 }  // namespace
