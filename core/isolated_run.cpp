@@ -260,6 +260,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     return r;
   }
   std::fflush(nullptr);  // or the child's copies of unwritten output could be written twice
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int err = errno;
@@ -271,6 +272,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
   if (pid == 0) {
     // Dies with this process (a SIGKILL to it leaves no run behind, busy on a core).
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);  // the parent died before the request took
     install_interrupt_handlers(false);
     ::close(fds[0]);
     child_main(fds[1], scene, entry, options, isolation);
