@@ -541,6 +541,8 @@ TEST(Cli, OutputsOntoInputsOrEachOtherAreRefusedHoweverSpelled) {
   const std::string own = "run --quiet --scene " + scene + " --engine home --steps 2 --no-reference ";
   expect_one_line_error(cli(own + "--json " + s / "link.json"), "--json " + s / "link.json" + ": same file as --scene " + scene);
   expect_one_line_error(cli(own + "--trajectory " + s / "hard.csv"), "same file as --scene " + scene);
+  expect_one_line_error(cli("stress --quiet --scene " + scene + " --engine home --json " + d + "/./scene.toml"),
+                        "--json " + d + "/./scene.toml: same file as --scene " + scene);
   EXPECT_EQ(slurp(scene), before);
   // The engines file given to the whole command.
   std::ofstream(s / "engines.toml") << "# no engines\n";

@@ -417,6 +417,16 @@ TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {
   }
 }
 
+// An engine that declares "precision": "float" may keep its time in float: t is checked to float's
+// round-off; the same time from an engine that declares none is another clock.
+TEST(ProcessEngine, AFloatEnginesTimeIsCheckedToFloatsRoundOff) {
+  const Result declared = run_engine(box(), misbehaving("float-t"), steps(200));
+  EXPECT_EQ(declared.status, "ok") << declared.error;
+  const Result undeclared = run_engine(box(), misbehaving("float-t-undeclared"), steps(200));
+  EXPECT_EQ(undeclared.status, "failed");
+  EXPECT_TRUE(has(undeclared.error, "sent a state at t = ")) << undeclared.error;
+}
+
 TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
   const Result r = run_engine(box(), misbehaving("huge-step-s"), steps(10));
   EXPECT_EQ(r.status, "failed");

@@ -3,11 +3,13 @@
 and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
 Modes that misbehave at the handshake or the scene: "unavailable", "protocol-3", "no-hello",
-"name-escape" (a name with an escape code), "helper" (starts a process that keeps its stdout), "name-all", "profiles-twice", "settings-at-scene" (a
+"name-escape" (a name with an escape code), "helper" (starts a process that keeps its stdout), "float-t" and
+"float-t-undeclared" (the time summed in float32, the precision declared or not), "name-all", "profiles-twice", "settings-at-scene" (a
 settings error for every scene), "unsupported" (refuses every scene as unsupported), "minimal" (a
 handshake of the required fields only). Test-only: never in an engines file."""
 import array
 import json
+import struct
 import sys
 import time
 
@@ -38,6 +40,8 @@ for line in sys.stdin.buffer:
         name = {"name-escape": "mis\x1b[31mbehaving", "name-all": "all"}.get(mode, "misbehaving")
         hello = {"ok": True, "protocol": 3 if mode == "protocol-3" else 2, "name": name, "version": "0",
                  "capabilities": {"friction": True}, "profiles": ["default"], "settings_keys": ["level"]}
+        if mode == "float-t":
+            hello["precision"] = "float"
         if mode == "profiles-twice":
             hello["profiles"] = ["default", "default"]
         if mode == "minimal":
@@ -59,6 +63,8 @@ for line in sys.stdin.buffer:
         if msg["op"] == "step":
             steps += 1
             t += msg["dt"]
+            if mode.startswith("float-t"):  # the time kept in float32, as a float engine keeps it
+                t = struct.unpack("f", struct.pack("f", t))[0]
         if steps == 3:
             if mode == "crash":
                 sys.stderr.write("Traceback: the misbehaving engine fell over\n")
