@@ -74,13 +74,16 @@ void check_writable(const std::string& path, const std::string& what, bool creat
 nlohmann::json parse_json_file(const std::string& path, const std::string& what);
 std::string json_shape_error(const std::string& path, const std::string& what, const std::exception& e);
 
-// parse_json_file, then `convert` (JSON -> value); a field missing or of the wrong type is an
-// InputError naming the file too.
+// parse_json_file, then `convert` (JSON -> value); a field missing or of the wrong type (a JSON
+// exception, or an InputError of the converter's naming the field) is an InputError naming the
+// file too.
 template <class Convert>
 auto read_json_file(const std::string& path, const std::string& what, Convert convert) {
   const nlohmann::json j = parse_json_file(path, what);
   try {
     return convert(j);
+  } catch (const InputError& e) {  // a field the converter named: "points[3].dt: expected a number"
+    throw InputError(json_shape_error(path, what, e));
   } catch (const nlohmann::json::exception& e) {
     throw InputError(json_shape_error(path, what, e));
   } catch (const std::length_error& e) {  // a count no file of ours holds

@@ -673,7 +673,12 @@ TEST(Cli, InputsAreBoundedAndRegularFilesOnly) {
   expect_one_line_error(cli("merge " + s / "nested.json" + " --out " + s / "m.json"), "nests deeper than 64 levels");
   // Wrong types: the file named, exit 2, never an internal error.
   std::ofstream(s / "typed.json") << R"({"scene": 5, "points": "many"})";
-  expect_one_line_error(cli("merge " + s / "typed.json" + " --out " + s / "m.json"), s / "typed.json");
+  expect_one_line_error(cli("merge " + s / "typed.json" + " --out " + s / "m.json"),
+                        s / "typed.json" + ": not a sweep result: scene: expected a string, got number");
+  std::ofstream(s / "point.json") << R"({"scene": "seed-box", "n": 20, "horizon": 0.2, "reference": "exact", "repeats": 1,
+                                        "points": [{"engine": "home", "profile": "default", "knob": "dt", "value": 0.01, "dt": "fast"}]})";
+  expect_one_line_error(cli("merge " + s / "point.json" + " --out " + s / "m.json"),
+                        s / "point.json" + ": not a sweep result: points[0].dt: expected a number, got string");
   std::filesystem::create_directories(s / "report/results");
   std::ofstream(s / "report/results/run.json") << R"({"command": 5, "scenes": "seed-box", "suite": []})";
   expect_one_line_error(cli("report --out " + s / "report" + " --render-only"), "run.json");
