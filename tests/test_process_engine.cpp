@@ -466,6 +466,9 @@ TEST(ProcessEngine, AMinimalHandshakeClaimsNoFriction) {
   EXPECT_FALSE(minimal.info.caps.continuous_collision);
   EXPECT_TRUE(default_capabilities(1).friction);
   EXPECT_FALSE(default_capabilities(2).friction);
+  const EngineEntry version_1 = misbehaving("minimal-1");  // still taken, with version 1's defaults
+  ASSERT_TRUE(version_1.info.unavailable.empty()) << version_1.info.unavailable;
+  EXPECT_TRUE(version_1.info.caps.friction);
   const Result r = run_engine(slide_to_roll("disk"), minimal, steps(5));
   EXPECT_EQ(r.status, "unsupported") << r.error;
   EXPECT_EQ(run_engine(box(), minimal, steps(5)).status, "ok");

@@ -2,11 +2,12 @@
 """A process engine that misbehaves on purpose (tests/test_process_engine.cpp): balls stay put,
 and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
-Modes that misbehave at the handshake or the scene: "unavailable", "protocol-3", "no-hello",
-"name-escape" (a name with an escape code), "helper" (starts a process that keeps its stdout), "float-t" and
-"float-t-undeclared" (the time summed in float32, the precision declared or not), "name-all", "profiles-twice", "settings-at-scene" (a
-settings error for every scene), "unsupported" (refuses every scene as unsupported), "minimal" (a
-handshake of the required fields only). Test-only: never in an engines file."""
+Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-escape" (a name
+with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
+stdout, its pid written to argv[2]), "float-t" and "float-t-undeclared" (the time summed in
+float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
+"unsupported" (refuses every scene as unsupported), "minimal" and "minimal-1" (a handshake of the
+required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
 import array
 import json
 import struct
@@ -44,9 +45,9 @@ for line in sys.stdin.buffer:
             hello["precision"] = "float"
         if mode == "profiles-twice":
             hello["profiles"] = ["default", "default"]
-        if mode == "minimal":
-            hello = {"ok": True, "protocol": 2, "name": name, "version": "0", "capabilities": {},
-                     "profiles": ["default"]}
+        if mode in ("minimal", "minimal-1"):
+            hello = {"ok": True, "protocol": 1 if mode == "minimal-1" else 2, "name": name, "version": "0",
+                     "capabilities": {}, "profiles": ["default"]}
         send(hello)
     elif msg["op"] == "scene":
         if msg["settings"].get("level", 0) > 3 or mode == "settings-at-scene":
