@@ -187,6 +187,9 @@ void regress(const RegressArgs& a) {
       throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
     check_baseline(baseline, a.baseline);
   } else {
+    std::vector<PathUse> uses = noted_input_files();
+    uses.push_back({"--baseline", a.baseline, true});
+    check_path_clashes(uses);
     check_writable(a.baseline, "the baseline", true);
   }
 
