@@ -12,6 +12,7 @@
 #include "box2d/box2d_engine.h"
 #include "bullet/bullet_engine.h"
 #include "chipmunk/chipmunk_engine.h"
+#include "data_file.h"
 #include "input_error.h"
 #if BALLBENCH_HAS_LAMMPS
 #include "lammps/lammps_engine.h"
@@ -65,6 +66,8 @@ struct Registry {
     } else if (std::error_code ec; std::filesystem::exists(BALLBENCH_ENGINES_FILE, ec)) {
       files.push_back(BALLBENCH_ENGINES_FILE);
     }
+    // An input no output may overwrite (the user's --engines files are noted where they are given).
+    if (!files.empty()) note_input_file("the engines file", files.front());
     for (const auto& f : user_engines_files()) files.push_back(f);
     for (const auto& f : files)
       for (auto& spec : read_engines_file(f)) {

@@ -1,15 +1,20 @@
 #include "data_file.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include <fmt/format.h>
 
 #include "input_error.h"
 
 namespace ballbench {
-
-namespace {
 
 // An existing target that is not a regular file (a FIFO, a device such as /dev/null), or a symbolic
 // link (/dev/stdout, a user's link to a file), is written in place: a rename would replace it with
@@ -22,14 +27,103 @@ bool special_target(const std::string& path) {
          !std::filesystem::is_directory(st);
 }
 
+std::string temp_base(const std::string& path) {
+  if (!special_target(path)) return path;
+  std::error_code ec;
+  const auto dir = std::filesystem::temp_directory_path(ec);
+  return ((ec ? std::filesystem::path("/tmp") : dir) / "ballbench-output").string();
+}
+
+namespace {
+
 void fail_if_folder(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: cannot write {}: it is a folder", path, what));
 }
 
+// What identifies a file: its device and inode where it exists, else its resolved absolute path.
+struct FileKey {
+  bool exists = false, special = false;  // special: a device or a FIFO, which several outputs may share
+  dev_t dev = 0;
+  ino_t ino = 0;
+  std::string resolved;
+  bool operator==(const FileKey& o) const {
+    return exists == o.exists && (exists ? dev == o.dev && ino == o.ino : resolved == o.resolved);
+  }
+};
+
+FileKey file_key(const std::string& path) {
+  FileKey k;
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0) {
+    k.exists = true, k.dev = st.st_dev, k.ino = st.st_ino;
+    k.special = !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+    return k;
+  }
+  std::error_code ec;
+  const std::filesystem::path abs = std::filesystem::absolute(path, ec);
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(abs, ec);
+  k.resolved = (ec ? abs : resolved).lexically_normal().string();
+  return k;
+}
+
+std::vector<PathUse>& noted_inputs() {
+  static std::vector<PathUse> uses;
+  return uses;
+}
+
 }  // namespace
 
+std::string create_temp_beside(const std::string& path, const std::string& what) {
+  static std::mt19937_64 rng{std::random_device{}() ^ static_cast<uint64_t>(::getpid())};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string tmp = fmt::format("{}.tmp.{}.{:08x}", path, ::getpid(), static_cast<uint32_t>(rng()));
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0) {
+      ::close(fd);
+      return tmp;
+    }
+    if (errno != EEXIST) throw InputError(fmt::format("{}: cannot write {} there: {}", path, what, std::strerror(errno)));
+  }
+  throw InputError(fmt::format("{}: cannot write {} there: no free temporary name", path, what));
+}
+
+void check_readable_file(const std::string& path, const std::string& what, std::uintmax_t max_bytes) {
+  struct stat st {};
+  if (path.empty()) throw InputError(fmt::format("cannot read {}: an empty path", what));
+  if (::stat(path.c_str(), &st) != 0)
+    throw InputError(fmt::format("{}: cannot read {}: {}", path, what,
+                                 errno == ENOENT ? "no such file" : std::strerror(errno)));
+  if (S_ISDIR(st.st_mode)) throw InputError(fmt::format("{}: cannot read {}: it is a folder", path, what));
+  if (!S_ISREG(st.st_mode))
+    throw InputError(fmt::format("{}: cannot read {}: not a regular file (a {})", path, what,
+                                 S_ISFIFO(st.st_mode) ? "FIFO" : S_ISSOCK(st.st_mode) ? "socket" : "device"));
+  if (static_cast<std::uintmax_t>(st.st_size) > max_bytes)
+    throw InputError(fmt::format("{}: cannot read {}: {} bytes, above the limit of {} MiB", path, what,
+                                 static_cast<std::uintmax_t>(st.st_size), max_bytes >> 20));
+}
+
+void check_path_clashes(const std::vector<PathUse>& uses) {
+  std::vector<FileKey> keys;
+  for (const PathUse& u : uses) keys.push_back(file_key(u.path));
+  for (size_t i = 0; i < uses.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      if (!uses[i].output && !uses[j].output) continue;  // reading one file twice is harmless
+      if (!(keys[i] == keys[j])) continue;
+      if (keys[i].special && uses[i].output && uses[j].output) continue;  // /dev/null twice
+      // The output is named first: it is the one that would destroy the other.
+      const PathUse& a = uses[i].output ? uses[i] : uses[j];
+      const PathUse& b = uses[i].output ? uses[j] : uses[i];
+      throw InputError(fmt::format("{} {}: same file as {} {}", a.flag, a.path, b.flag, b.path));
+    }
+}
+
+void note_input_file(const std::string& flag, const std::string& path) { noted_inputs().push_back({flag, path, false}); }
+
+const std::vector<PathUse>& noted_input_files() { return noted_inputs(); }
+
 void write_file_atomically(const std::string& path, const std::string& text, const std::string& what) {
+  if (path.empty()) throw InputError(fmt::format("cannot write {}: an empty path", what));
   fail_if_folder(path, what);
   // A FIFO or a device is written directly, with no temporary file beside it (a user may not
   // write into /dev), rather than through move_file_into_place's copy.
@@ -37,16 +131,22 @@ void write_file_atomically(const std::string& path, const std::string& text, con
   const std::filesystem::path target(path);
   std::error_code ec;
   if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
-  const std::string tmp = in_place ? path : path + ".tmp";
+  const std::string tmp = in_place ? path : create_temp_beside(path, what);
+  const auto fail = [&](const std::string& message) {
+    if (!in_place) std::filesystem::remove(tmp, ec);
+    throw InputError(message);
+  };
   {
     std::ofstream out(tmp, std::ios::binary);
-    if (!out) throw InputError(fmt::format("{}: cannot write {}", path, what));
+    if (!out) fail(fmt::format("{}: cannot write {}", path, what));
     out << text;
-    if (!out.flush()) throw InputError(fmt::format("{}: writing {} failed (disk full?)", path, what));
+    if (!out.flush()) fail(fmt::format("{}: writing {} failed (disk full?)", path, what));
+    out.close();
+    if (!out) fail(fmt::format("{}: writing {} failed (disk full?)", path, what));
   }
   if (in_place) return;
   std::filesystem::rename(tmp, target, ec);
-  if (ec) throw InputError(fmt::format("{}: cannot write {}: {}", path, what, ec.message()));
+  if (ec) fail(fmt::format("{}: cannot write {}: {}", path, what, ec.message()));
 }
 
 void move_file_into_place(const std::string& from, const std::string& to, const std::string& what) {
@@ -73,21 +173,35 @@ void check_writable(const std::string& path, const std::string& what, bool creat
   const std::filesystem::path target(path);
   std::error_code ec;
   if (create_parents && target.has_parent_path()) std::filesystem::create_directories(target.parent_path(), ec);
-  const std::string probe = path + ".tmp";
-  const bool existed = std::filesystem::exists(probe, ec);
-  {
-    std::ofstream out(probe, std::ios::binary | std::ios::app);
-    if (!out) throw InputError(fmt::format("{}: cannot write {} there", path, what));
+  std::string probe;
+  try {
+    probe = create_temp_beside(path, what);
+  } catch (const InputError&) {
+    throw InputError(fmt::format("{}: cannot write {} there", path, what));
   }
-  if (!existed) std::filesystem::remove(probe, ec);
+  std::filesystem::remove(probe, ec);
 }
 
 nlohmann::json parse_json_file(const std::string& path, const std::string& what) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: cannot read {}: it is a folder", path, what));
+  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: cannot open {}", path, what));
+  check_readable_file(path, what, kMaxResultsFileBytes);
   std::ifstream in(path);
   if (!in) throw InputError(fmt::format("{}: cannot open {}", path, what));
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  // Nesting is bounded while parsing: a deeply nested value would be copied and destroyed
+  // recursively afterwards, past the stack.
+  struct TooDeep {};
+  const nlohmann::json::parser_callback_t depth_cap = [](int depth, nlohmann::json::parse_event_t, nlohmann::json&) {
+    if (depth > kMaxJsonDepth) throw TooDeep{};
+    return true;
+  };
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in, depth_cap, false);
+  } catch (const TooDeep&) {
+    throw InputError(fmt::format("{}: {} nests deeper than {} levels: not a file ballbench wrote", path, what, kMaxJsonDepth));
+  }
   if (j.is_discarded()) throw InputError(fmt::format("{}: {} is not valid JSON", path, what));
   return j;
 }

@@ -1,15 +1,60 @@
 #pragma once
-// Result files: whole-file writes that a reader never sees half done (the text goes to PATH.tmp,
-// then a rename; a FIFO or a device is written in place), and JSON reads that fail with one line
-// naming the file.
+// Result files: whole-file writes that a reader never sees half done (the text goes to a temporary
+// file of this process's own beside PATH, then a rename; a FIFO or a device is written in place),
+// JSON reads that are bounded and fail with one line naming the file, and the check that no
+// output of a command lands on one of its inputs or on another output.
+#include <cstdint>
 #include <exception>
+#include <new>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "input_error.h"
 
 namespace ballbench {
+
+// The most a results file read back (a run, a sweep, a report's part) may hold, and how deeply its
+// JSON may nest: far beyond what `ballbench` writes, short of what would exhaust memory or stack.
+inline constexpr std::uintmax_t kMaxResultsFileBytes = 256ull << 20;
+inline constexpr int kMaxJsonDepth = 64;
+
+// True if `path` is written in place, not replaced by a rename: an existing FIFO, device or
+// symbolic link (/dev/null, /dev/stdout, a user's link to a file).
+bool special_target(const std::string& path);
+
+// Where the temporary files for writing `path` go: `path` itself, or, for a special target (whose
+// folder, /dev, is not for files), a name in the temporary folder.
+std::string temp_base(const std::string& path);
+
+// A temporary file of this process's own beside `path`, created empty (O_EXCL, so never a file
+// that was there): "PATH.tmp.PID.TOKEN". Throws InputError naming `path` and `what` if it cannot.
+std::string create_temp_beside(const std::string& path, const std::string& what);
+
+// A regular file to read, checked before it is opened: it exists, is a regular file (not a
+// folder, a FIFO or a device, which could block or never end) and holds at most `max_bytes`.
+// Throws InputError "PATH: cannot read WHAT: WHY".
+void check_readable_file(const std::string& path, const std::string& what, std::uintmax_t max_bytes);
+
+// One file a command reads (`output` false) or writes, named by the flag that gave it.
+struct PathUse {
+  std::string flag;  // "--json", "--scene", "RESULTS"
+  std::string path;
+  bool output = false;
+};
+
+// Before anything runs: no output is the same file as an input or as another output, however
+// spelled (./a, sub/../a, a symbolic link, a hard link: compared by device and inode where the
+// file exists, by resolved path where it does not). Two outputs into the same device or FIFO
+// (/dev/null) are allowed. Throws InputError "--X PATH: same file as --Y PATH".
+void check_path_clashes(const std::vector<PathUse>& uses);
+
+// Files read by options of the whole command (`--engines`), noted as they are read so that each
+// subcommand checks its outputs against them too.
+void note_input_file(const std::string& flag, const std::string& path);
+const std::vector<PathUse>& noted_input_files();
 
 // Creates the parent folders; throws InputError naming `path` and `what` ("the results file") if
 // the file cannot be written.
@@ -24,18 +69,26 @@ void move_file_into_place(const std::string& from, const std::string& to, const 
 // the parent folders (write_file_atomically does), so they are created here.
 void check_writable(const std::string& path, const std::string& what, bool create_parents);
 
-// Throws InputError naming the file and `what` if it cannot be opened or is not JSON.
+// Throws InputError naming the file and `what` if it cannot be opened, is not a regular file,
+// holds more than kMaxResultsFileBytes, nests deeper than kMaxJsonDepth or is not JSON.
 nlohmann::json parse_json_file(const std::string& path, const std::string& what);
 std::string json_shape_error(const std::string& path, const std::string& what, const std::exception& e);
 
-// parse_json_file, then `convert` (JSON -> value); a field missing or of the wrong type is an
-// InputError naming the file too.
+// parse_json_file, then `convert` (JSON -> value); a field missing or of the wrong type (a JSON
+// exception, or an InputError of the converter's naming the field) is an InputError naming the
+// file too.
 template <class Convert>
 auto read_json_file(const std::string& path, const std::string& what, Convert convert) {
   const nlohmann::json j = parse_json_file(path, what);
   try {
     return convert(j);
+  } catch (const InputError& e) {  // a field the converter named: "points[3].dt: expected a number"
+    throw InputError(json_shape_error(path, what, e));
   } catch (const nlohmann::json::exception& e) {
+    throw InputError(json_shape_error(path, what, e));
+  } catch (const std::length_error& e) {  // a count no file of ours holds
+    throw InputError(json_shape_error(path, what, e));
+  } catch (const std::bad_alloc& e) {
     throw InputError(json_shape_error(path, what, e));
   }
 }

@@ -11,6 +11,14 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Text from outside (an engine's name or error, a file's field) made safe for one line of a
+// terminal: control characters escaped (\n, \t, \x1b), and text beyond `max_bytes` cut, saying how
+// much: "... (N bytes cut)".
+std::string printable(const std::string& text, size_t max_bytes = 2000);
+
+// True if `text` holds a control character (a newline, an escape): not allowed in names.
+bool has_control_character(const std::string& text);
+
 // Levenshtein distance, for "did you mean" hints on unknown names.
 int edit_distance(const std::string& a, const std::string& b);
 

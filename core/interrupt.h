@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM as a request to stop, not a kill: a command that installs the handlers checks
+// SIGINT, SIGTERM and SIGHUP (a closed terminal or ssh session) as a request to stop, not a kill: a command that installs the handlers checks
 // interrupt_signal() between steps and between runs, ends what it is doing, writes what it has
 // computed (its rows so far, the interrupted one marked `interrupted`) and removes its temporary
 // files. Child processes forked for isolated runs inherit the handlers, so an engine's run ends at
@@ -9,15 +9,20 @@
 namespace ballbench {
 
 // Installs the handlers (sigaction, no SA_RESTART: a blocking poll or wait returns with EINTR).
-// `second_kills`: a second signal, more than half a second after the first, ends the process at
-// once (its default action), for a user who means it; an isolated run's child sets it false, as it may get the terminal's signal and the
-// one its parent forwards.
+// `second_kills`: a second signal, more than half a second after the first, hurries (the runs in
+// child processes are killed at once, what is finished is still written) and a third, as long
+// after the second, ends the process at once (its default action), for a user who means it; an
+// isolated run's child sets it false, as it may get the terminal's signal and the one its parent
+// forwards.
 void install_interrupt_handlers(bool second_kills = true);
 
-// The signal that asked to stop (SIGINT or SIGTERM), or 0.
+// The signal that asked to stop (SIGINT, SIGTERM or SIGHUP), or 0.
 int interrupt_signal();
 
-// "SIGINT" or "SIGTERM" for the signal that asked to stop.
+// A second signal came: child processes still running are to be killed now, not waited for.
+bool interrupt_hurried();
+
+// "SIGINT", "SIGTERM" or "SIGHUP" for the signal that asked to stop.
 const char* interrupt_name();
 
 // Thrown by work that has nothing to keep when asked to stop (placing a scene's balls before any

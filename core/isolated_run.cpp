@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -59,7 +60,8 @@ void send(int fd, const std::string& text) {
   try {
     std::optional<TrajectoryCsv> trajectory;
     if (!isolation.trajectory_path.empty())
-      trajectory.emplace(isolation.trajectory_path, scene.features().rotation), options.trajectory = &*trajectory;
+      trajectory.emplace(isolation.trajectory_path, scene.features().rotation, isolation.trajectory_path + ".tmp"),
+          options.trajectory = &*trajectory;
     options.progress = [fd](long done, long total) { send(fd, fmt::format("progress {} {}\n", done, total)); };
     const Result r = run_engine(scene, entry, options);
     if (trajectory) trajectory->close();
@@ -113,13 +115,17 @@ class ChildWatcher {
   }
   bool past_deadline() const { return Clock::now() >= deadline_; }
 
-  // Asked to stop (interrupt.h): the child is asked too, once (it may have the terminal's signal
-  // already; it ends at a step boundary and sends its result), and given a few seconds for it.
+  // Asked to stop (interrupt.h): the child is asked too, once, by the same signal (it may have the
+  // terminal's signal already; it ends at a step boundary and sends its result), and given a few
+  // seconds for it. Asked again (interrupt_hurried): the child is killed at once.
   void forward_interrupt() {
-    if (out_.interrupted || !interrupt_signal()) return;
-    out_.interrupted = true;
-    ::kill(pid_, SIGINT);
-    deadline_ = std::min(deadline_, Clock::now() + std::chrono::seconds(kInterruptGrace));
+    if (!interrupt_signal()) return;
+    if (!out_.interrupted) {
+      out_.interrupted = true;
+      ::kill(pid_, interrupt_signal());
+      deadline_ = std::min(deadline_, Clock::now() + std::chrono::seconds(kInterruptGrace));
+    }
+    if (interrupt_hurried()) deadline_ = std::min(deadline_, Clock::now());
   }
 
   void read_until_eof() {
@@ -254,6 +260,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     return r;
   }
   std::fflush(nullptr);  // or the child's copies of unwritten output could be written twice
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int err = errno;
@@ -263,6 +270,9 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     return r;
   }
   if (pid == 0) {
+    // Dies with this process (a SIGKILL to it leaves no run behind, busy on a core).
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);  // the parent died before the request took
     install_interrupt_handlers(false);
     ::close(fds[0]);
     child_main(fds[1], scene, entry, options, isolation);

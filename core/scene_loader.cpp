@@ -1,5 +1,7 @@
 #include "scene_loader.h"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -11,6 +13,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -25,6 +28,12 @@ namespace {
 
 // The most steps a scene may ask for: beyond this a typo (dt = 1e-12) would look like a hang.
 constexpr double kMaxSteps = 1e9;
+// The largest scene file read: explicit [[ball]] tables of a few hundred thousand balls; more
+// balls are placed by [random] or [lattice].
+constexpr long long kMaxSceneBytes = 16ll << 20;
+// The smallest radius (m): below it differences of positions lose every digit a contact needs
+// (and engines with a minimum contact distance never finish a step).
+constexpr double kMinRadius = 1e-9;
 // The most balls a scene may hold: beyond this the state alone would not fit in memory here.
 constexpr int64_t kMaxBalls = 50'000'000;
 // The largest |value| of a coordinate, velocity, gravity component, radius or mass (m, m/s, m/s^2,
@@ -153,9 +162,11 @@ void check_positive(const TableReader& r, const char* key, double v) {
   if (!(v > 0)) r.fail(r.node(key), key, fmt::format("must be positive, got {}", v));
 }
 
-// A radius or a mass: positive and at most kMaxMagnitude.
+// A radius or a mass: positive and at most kMaxMagnitude; a radius at least kMinRadius.
 void check_size(const TableReader& r, const char* key, double v) {
   check_positive(r, key, v);
+  if (std::string_view(key) == "radius" && v < kMinRadius)
+    r.fail(r.node(key), key, fmt::format("must be at least {:g} m, got {}", kMinRadius, v));
   if (v > kMaxMagnitude) r.fail(r.node(key), key, fmt::format("must be at most {:g}, got {}", kMaxMagnitude, v));
 }
 
@@ -244,7 +255,7 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
   if (count < 0) r.fail(r.node("count"), "count", "missing or negative (a whole number of balls is required)");
   if (count > kMaxBalls) r.fail(r.node("count"), "count", fmt::format("at most {} balls are supported", kMaxBalls));
   const double radius = r.number("radius"), mass = r.number_or("mass", 1.0), spacing = r.number("spacing");
-  check_positive(r, "radius", radius);
+  check_size(r, "radius", radius);
   check_positive(r, "mass", mass);
   if (spacing < 2 * radius) r.fail(r.node("spacing"), "spacing", fmt::format("must be at least the diameter {}", 2 * radius));
   if (container.kind != ContainerKind::Box && (!r.has("origin") || !r.has("columns")))
@@ -341,19 +352,6 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   }
 }
 
-// Messages quote what the file says (key names, strings), which may hold control characters
-// ("a\nb" is a valid quoted key): escape them, so every message stays one line.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (u < 0x20 || u == 0x7f) out += fmt::format("\\x{:02x}", u);
-    else out += c;
-  }
-  return out;
-}
-
 // [accuracy]: the scene's own spec terms (accuracy_spec.h), each a bound or false (drops the term
 // its class would bound).
 void read_accuracy(const toml::node& node, const std::string& source, Scene& s) {
@@ -391,7 +389,9 @@ Scene parse_scene(const std::string& toml_text, const std::string& source, int64
   try {
     return parse_scene_text(toml_text, source, seed_offset);
   } catch (const InputError& e) {
-    throw InputError(printable(e.what()));
+    // Messages quote what the file says (key names, strings), which may hold control characters
+    // ("a\nb" is a valid quoted key): escaped, so every message stays one line.
+    throw InputError(printable(e.what(), 100000));
   }
 }
 
@@ -581,12 +581,26 @@ Scene load_scene_file(const std::string& path, int64_t seed_offset) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: scene file not found", path));
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, not a scene file", path));
+  // Checked before opening: a FIFO without a writer would block the open, a device (/dev/zero)
+  // would never end.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(fmt::format("{}: cannot read the scene file: {}", path, std::strerror(errno)));
+  if (!S_ISREG(st.st_mode))
+    throw InputError(fmt::format("{}: cannot read the scene file: not a regular file (a {})", path,
+                                 S_ISFIFO(st.st_mode) ? "FIFO" : S_ISSOCK(st.st_mode) ? "socket" : "device"));
+  if (st.st_size > kMaxSceneBytes)
+    throw InputError(fmt::format("{}: cannot read the scene file: {} bytes, above the limit of {} MiB (place many balls "
+                                 "with [random] or [lattice])",
+                                 path, static_cast<long long>(st.st_size), kMaxSceneBytes >> 20));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(fmt::format("{}: cannot read the scene file: {}", path, std::strerror(errno)));
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text(static_cast<size_t>(kMaxSceneBytes) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > static_cast<size_t>(kMaxSceneBytes))
+    throw InputError(fmt::format("{}: cannot read the scene file: above the limit of {} MiB", path, kMaxSceneBytes >> 20));
   if (in.bad()) throw InputError(fmt::format("{}: reading the scene file failed: {}", path, std::strerror(errno)));
-  return parse_scene(text.str(), path, seed_offset);
+  return parse_scene(text, path, seed_offset);
 }
 
 std::string scenario_dir() {
@@ -604,11 +618,14 @@ std::vector<std::string> builtin_scene_names() {
 }
 
 Scene load_scene(const std::string& name_or_path, int64_t seed_offset) {
-  const bool looks_like_path = name_or_path.find('/') != std::string::npos ||
-                               name_or_path.ends_with(".toml") || std::filesystem::exists(name_or_path);
-  if (looks_like_path) return load_scene_file(name_or_path, seed_offset);
+  // A path by its spelling ('/' or .toml); a built-in's name is the built-in even where the working
+  // folder holds a file or folder of that name; anything else is a path if it exists.
   const auto names = builtin_scene_names();
-  if (std::find(names.begin(), names.end(), name_or_path) == names.end())
+  const bool builtin = std::find(names.begin(), names.end(), name_or_path) != names.end();
+  const bool looks_like_path = name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".toml") ||
+                               (!builtin && std::filesystem::exists(name_or_path));
+  if (looks_like_path) return load_scene_file(name_or_path, seed_offset);
+  if (!builtin)
     throw InputError(fmt::format("--scene: unknown scene '{}'{} (built-in scenes: {}; or give a path to a .toml file)",
                                  name_or_path, did_you_mean(name_or_path, names), fmt::join(names, ", ")));
   return load_scene_file((std::filesystem::path(scenario_dir()) / (name_or_path + ".toml")).string(), seed_offset);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -78,41 +79,69 @@ nlohmann::json to_json(const SweepResult& s) {
           {"points", points}};
 }
 
+namespace {
+
+// j[key] as T, or an InputError naming the field ("points[3].dt: expected a number, got string").
+template <class T>
+T field(const nlohmann::json& j, const char* key, const std::string& where) {
+  const std::string name = where.empty() ? key : where + "." + key;
+  if (!j.is_object()) throw InputError(fmt::format("{}: expected an object, got {}", where.empty() ? "the file" : where, j.type_name()));
+  const auto it = j.find(key);
+  if (it == j.end()) throw InputError(fmt::format("{}: missing", name));
+  try {
+    return it->get<T>();
+  } catch (const nlohmann::json::exception&) {
+    const char* want = std::is_same_v<T, std::string> ? "a string" : std::is_same_v<T, bool> ? "true or false" : "a number";
+    throw InputError(fmt::format("{}: expected {}, got {}", name, want, it->type_name()));
+  }
+}
+
+// j[key], which must be an array.
+const nlohmann::json& array_field(const nlohmann::json& j, const char* key, const std::string& where) {
+  const std::string name = where.empty() ? key : where + "." + key;
+  if (!j.is_object() || !j.contains(key)) throw InputError(fmt::format("{}: missing", name));
+  if (!j.at(key).is_array()) throw InputError(fmt::format("{}: expected an array, got {}", name, j.at(key).type_name()));
+  return j.at(key);
+}
+
+}  // namespace
+
 SweepResult sweep_from_json(const nlohmann::json& j) {
   SweepResult s;
-  s.scene = j.at("scene").get<std::string>();
-  s.n = j.at("n").get<int>();
-  s.horizon = j.at("horizon").get<double>();
-  s.reference = j.at("reference").get<std::string>();
-  s.repeats = j.at("repeats").get<int>();
+  s.scene = field<std::string>(j, "scene", "");
+  s.n = field<int>(j, "n", "");
+  s.horizon = field<double>(j, "horizon", "");
+  s.reference = field<std::string>(j, "reference", "");
+  s.repeats = field<int>(j, "repeats", "");
   s.context = j.value("context", nlohmann::json::object());
   s.interrupted = j.value("interrupted", "");
   s.plan = j.value("plan", nlohmann::json());
   if (j.contains("shard")) {
-    s.shard_index = j.at("shard").at("index").get<int>();
-    s.shard_count = j.at("shard").at("count").get<int>();
+    s.shard_index = field<int>(j.at("shard"), "index", "shard");
+    s.shard_count = field<int>(j.at("shard"), "count", "shard");
     if (s.shard_count < 1 || s.shard_index < 1 || s.shard_index > s.shard_count)
       throw InputError(fmt::format("shard {}/{}: not a shard (I/N with 1 <= I <= N)", s.shard_index, s.shard_count));
   }
-  for (const auto& q : j.at("points")) {
+  for (const auto& q : array_field(j, "points", "")) {
     SweepPoint p;
-    p.engine = q.at("engine").get<std::string>();
-    p.profile = q.at("profile").get<std::string>();
-    p.knob = q.at("knob").get<std::string>();
+    const std::string at = fmt::format("points[{}]", s.points.size());
+    p.engine = field<std::string>(q, "engine", at);
+    p.profile = field<std::string>(q, "profile", at);
+    p.knob = field<std::string>(q, "knob", at);
     p.value = q.at("value");
-    p.dt = q.at("dt").get<double>();
-    p.steps = q.at("steps").get<long>();
+    p.dt = field<double>(q, "dt", at);
+    p.steps = field<long>(q, "steps", at);
     p.settings = q.at("settings");
-    p.status = q.at("status").get<std::string>();
-    p.error = q.at("error").get<std::string>();
-    for (const auto& x : q.at("ns_per_ball_step")) p.ns_per_ball_step.push_back(json_number(x));
-    for (const auto& x : q.at("engine_s")) p.engine_s.push_back(json_number(x));
+    p.status = field<std::string>(q, "status", at);
+    p.error = field<std::string>(q, "error", at);
+    for (const auto& x : array_field(q, "ns_per_ball_step", at)) p.ns_per_ball_step.push_back(json_number(x));
+    for (const auto& x : array_field(q, "engine_s", at)) p.engine_s.push_back(json_number(x));
     p.pos_rms = json_number(q.at("pos_rms"));
     p.vel_rms = json_number(q.at("vel_rms"));
     p.energy_rel = json_number(q.at("energy_rel"));
-    p.tunnelling = q.at("tunnelling").get<int>();
-    p.sticking = q.at("sticking").get<int>();
-    p.pareto = q.at("pareto").get<bool>();
+    p.tunnelling = field<int>(q, "tunnelling", at);
+    p.sticking = field<int>(q, "sticking", at);
+    p.pareto = field<bool>(q, "pareto", at);
     p.plan_index = q.value("plan_index", static_cast<long>(s.points.size()));
     s.points.push_back(std::move(p));
   }

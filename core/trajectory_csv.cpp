@@ -9,15 +9,27 @@
 
 namespace ballbench {
 
-TrajectoryCsv::TrajectoryCsv(const std::string& path, bool rotation)
-    : path_(path), tmp_(path + ".tmp"), rotation_(rotation) {
+TrajectoryCsv::TrajectoryCsv(const std::string& path, bool rotation, const std::string& tmp)
+    : path_(path), rotation_(rotation) {
+  try {
+    tmp_ = tmp.empty() ? create_temp_beside(temp_base(path), "the trajectory") : tmp;
+  } catch (const InputError&) {
+    throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
+  }
   f_ = std::fopen(tmp_.c_str(), "w");
-  if (!f_) throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
+  if (!f_) {
+    std::error_code ec;
+    if (tmp.empty()) std::filesystem::remove(tmp_, ec);
+    throw InputError(fmt::format("--trajectory {}: cannot open for writing", path));
+  }
   std::fputs(rotation ? "engine,profile,step,t,id,x,y,vx,vy,w,angle\n" : "engine,profile,step,t,id,x,y,vx,vy\n", f_);
 }
 
 TrajectoryCsv::~TrajectoryCsv() {
-  if (f_) std::fclose(f_);
+  if (!f_) return;
+  std::fclose(f_);
+  std::error_code ec;
+  std::filesystem::remove(tmp_, ec);
 }
 
 void TrajectoryCsv::write(const std::string& engine, const std::string& profile, long step, const State& s) {
@@ -34,10 +46,19 @@ void TrajectoryCsv::write(const std::string& engine, const std::string& profile,
 void TrajectoryCsv::close() {
   if (!f_) return;
   const bool ok = std::fflush(f_) == 0 && !std::ferror(f_);
-  std::fclose(f_);
+  const bool closed = std::fclose(f_) == 0;
   f_ = nullptr;
-  if (!ok) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
-  move_file_into_place(tmp_, path_, "the trajectory");
+  std::error_code ec;
+  if (!ok || !closed) {
+    std::filesystem::remove(tmp_, ec);
+    throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
+  }
+  try {
+    move_file_into_place(tmp_, path_, "the trajectory");
+  } catch (const InputError&) {
+    std::filesystem::remove(tmp_, ec);
+    throw;
+  }
 }
 
 }  // namespace ballbench

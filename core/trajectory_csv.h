@@ -12,14 +12,16 @@ namespace ballbench {
 
 class TrajectoryCsv {
  public:
-  // Throws InputError if it cannot be opened. `rotation`: the states carry w and angle.
-  TrajectoryCsv(const std::string& path, bool rotation);
+  // Throws InputError if it cannot be opened. `rotation`: the states carry w and angle. The rows
+  // go to `tmp` (default: a temporary file of this process's own beside `path`), renamed to `path`
+  // by close(); a writer destroyed without close() removes it.
+  TrajectoryCsv(const std::string& path, bool rotation, const std::string& tmp = "");
   ~TrajectoryCsv();
   TrajectoryCsv(const TrajectoryCsv&) = delete;
   TrajectoryCsv& operator=(const TrajectoryCsv&) = delete;
 
   void write(const std::string& engine, const std::string& profile, long step, const State& s);
-  void close();  // flushes and renames into place; throws InputError if writing failed
+  void close();  // flushes and renames into place; throws InputError if writing failed (then removes it)
 
  private:
   std::string path_, tmp_;

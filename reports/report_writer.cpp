@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "data_file.h"
 #include "input_error.h"
 #include "json_value.h"
 #include "metrics/catalog.h"
@@ -479,8 +480,7 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   for (const auto& f : files) {
     const std::string name = f.filename().string();
     if (name == "run.json") {
-      std::ifstream s(f);
-      in.run = nlohmann::json::parse(s, nullptr, false);
+      in.run = parse_json_file(f.string(), "a report's run record");
       if (!in.run.is_object())
         throw InputError(fmt::format("{}: not a report's run record (a JSON object): write it again with "
                                      "`ballbench report`",

@@ -90,6 +90,37 @@ std::string viewer_page(const std::vector<const Result*>& runs) {
     if (!shown && !r->series.frames.empty()) shown = r;
   }
   if (!shown) throw InputError("no run has frames to show");
+  // A results file is read, not trusted: its frames must be what a run writes, or the page would
+  // draw garbage (a null as -9.2e18) or the count would exhaust memory.
+  constexpr int kMaxFrameBalls = 1000;  // the runner keeps frames of scenes up to this many balls
+  constexpr double kMaxCoordinate = 1e12;  // m: a scene's own bound on coordinates
+  if (shown->n < 1 || shown->n > kMaxFrameBalls)
+    throw InputError(fmt::format("n: {} balls, not a run with frames (those have 1 to {} balls)", shown->n, kMaxFrameBalls));
+  for (size_t k = 0; k < runs.size(); ++k) {
+    const Result& r = *runs[k];
+    const std::string where = fmt::format("run {} ({})", k + 1, printable(run_label(r), 200));
+    if (r.series.frames.empty()) continue;
+    if (r.series.frame_t.size() != r.series.frames.size())
+      throw InputError(fmt::format("{}: series.frame_t has {} times for {} frames", where, r.series.frame_t.size(),
+                                   r.series.frames.size()));
+    if (!r.series.radius.empty() && static_cast<int>(r.series.radius.size()) != r.n)
+      throw InputError(fmt::format("{}: series.radius has {} radii for {} balls", where, r.series.radius.size(), r.n));
+    for (double radius : r.series.radius)
+      if (!(radius > 0 && radius <= kMaxCoordinate))
+        throw InputError(fmt::format("{}: series.radius holds {}, not a radius", where, radius));
+    for (size_t f = 0; f < r.series.frames.size(); ++f) {
+      if (!std::isfinite(r.series.frame_t[f]))
+        throw InputError(fmt::format("{}: series.frame_t[{}] is {}, not a time", where, f, r.series.frame_t[f]));
+      const auto& frame = r.series.frames[f];
+      if (static_cast<int>(frame.size()) != r.n)
+        throw InputError(fmt::format("{}: series.frames[{}] holds {} positions for {} balls", where, f, frame.size(), r.n));
+      for (size_t b = 0; b < frame.size(); ++b)
+        for (double v : frame[b])
+          if (!(std::abs(v) <= kMaxCoordinate))
+            throw InputError(fmt::format("{}: series.frames[{}][{}] holds {}, not a position (finite, at most {:g} m)",
+                                         where, f, b, v, kMaxCoordinate));
+    }
+  }
   const Result& s = *shown;
   std::vector<double> radius = s.series.radius;
   if (static_cast<int>(radius.size()) != s.n) radius.assign(s.n, s.series.radius_mean);  // files without radii

@@ -10,8 +10,12 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
 
@@ -239,15 +243,16 @@ TEST(Cli, SettingsOfEnginesNotRunAreCheckedToo) {
 TEST(Cli, OutputsAreCheckedBeforeRunningAndNeverClobberWhatTheyShouldNot) {
   const std::string scene = write_scene("ballbench_outputs.toml", kSchemaExample);
   const std::string before = slurp(scene);
-  expect_one_line_error(cli("run --quiet --scene " + scene + " --engine home --steps 2 --json " + scene), "scene file");
+  expect_one_line_error(cli("run --quiet --scene " + scene + " --engine home --steps 2 --json " + scene),
+                        "--json " + scene + ": same file as --scene " + scene);
   EXPECT_EQ(slurp(scene), before);
   const auto dir = std::filesystem::temp_directory_path();
   const std::string same = (dir / "ballbench_same.out").string();
   expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json " + same + " --trajectory " + same),
-                        "both name");
+                        "--trajectory " + same + ": same file as --json " + same);
   expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json /proc/no/such/x.json"),
                         "cannot write the results there");
-  expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json " + dir.string()), "it is a folder");
+  expect_one_line_error(cli("run --quiet --scene seed-box --engine home --steps 2 --json " + dir.string()), "is a folder");
   const Outcome null_out = cli("run --quiet --scene seed-box --engine home --steps 2 --json /dev/null --trajectory /dev/null");
   EXPECT_EQ(null_out.status, 0) << null_out.err;
   EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
@@ -322,7 +327,7 @@ radius = 0.25
 TEST(Cli, AnInterruptKeepsTheRowsDoneAndLeavesNothingBehind) {
   const auto dir = std::filesystem::temp_directory_path() / ("ballbench_interrupt." + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
-  for (const auto& [signal, status] : {std::pair{"INT", 130}, {"TERM", 143}}) {
+  for (const auto& [signal, status] : {std::pair{"INT", 130}, {"TERM", 143}, {"HUP", 129}}) {
     const std::string json = (dir / "r.json").string(), csv = (dir / "t.csv").string();
     const std::string out = (dir / "out").string(), err = (dir / "err").string();
     // home-seed's row is short; home's event path on the pile takes minutes: the signal lands in it
@@ -339,6 +344,8 @@ TEST(Cli, AnInterruptKeepsTheRowsDoneAndLeavesNothingBehind) {
     EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << e;
     const std::string results = slurp(json);
     EXPECT_NE(results.find("\"status\": \"interrupted\""), std::string::npos) << results.substr(0, 300);
+    // The row names the signal that came, not another.
+    EXPECT_NE(results.find(std::string("interrupted by SIG") + signal), std::string::npos) << results.substr(0, 2000);
     EXPECT_EQ(slurp(csv).rfind("engine,profile,step,t,id,x,y,vx,vy\n", 0), 0u);
     for (const auto& f : std::filesystem::directory_iterator(dir)) {
       const std::string name = f.path().filename().string();
@@ -493,6 +500,280 @@ TEST(Cli, ListShowsScenesAndEnginesWithVersions) {
   EXPECT_NE(o.out.find("seed-bowl"), std::string::npos);
   EXPECT_NE(o.out.find("home-seed    thesis-2017    thesis"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("box2d        2.4.1          external"), std::string::npos) << o.out;
+}
+
+// A folder of this test process's own under the temporary folder, removed at the end.
+struct Scratch {
+  std::filesystem::path dir;
+  explicit Scratch(const std::string& name)
+      : dir(std::filesystem::temp_directory_path() / (name + "." + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  ~Scratch() { std::filesystem::remove_all(dir); }
+  std::string operator/(const std::string& name) const { return (dir / name).string(); }
+};
+
+// The names in a folder, sorted.
+std::vector<std::string> names_in(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// Every output is compared with every input and every other output before anything runs, by
+// device and inode (or resolved path): another spelling, a symbolic or a hard link is the same file.
+TEST(Cli, OutputsOntoInputsOrEachOtherAreRefusedHoweverSpelled) {
+  const Scratch s("bb_clash");
+  const std::string d = s.dir.string(), scene = s / "scene.toml";
+  std::ofstream(scene) << kSchemaExample;
+  std::filesystem::create_directories(s / "sub");
+  const std::string run = "run --quiet --scene seed-box --engine home --steps 2 --no-reference ";
+  expect_one_line_error(cli(run + "--json " + d + "/./a.json --trajectory " + d + "/a.json"),
+                        "--trajectory " + d + "/a.json: same file as --json " + d + "/./a.json");
+  expect_one_line_error(cli(run + "--json " + d + "/sub/../a.json --trajectory " + d + "/a.json"),
+                        "same file as --json " + d + "/sub/../a.json");
+  EXPECT_FALSE(std::filesystem::exists(s / "a.json"));
+  const std::string before = slurp(scene);
+  std::filesystem::create_symlink(scene, s / "link.json");
+  std::filesystem::create_hard_link(scene, s / "hard.csv");
+  const std::string own = "run --quiet --scene " + scene + " --engine home --steps 2 --no-reference ";
+  expect_one_line_error(cli(own + "--json " + s / "link.json"), "--json " + s / "link.json" + ": same file as --scene " + scene);
+  expect_one_line_error(cli(own + "--trajectory " + s / "hard.csv"), "same file as --scene " + scene);
+  expect_one_line_error(cli("stress --quiet --scene " + scene + " --engine home --json " + d + "/./scene.toml"),
+                        "--json " + d + "/./scene.toml: same file as --scene " + scene);
+  EXPECT_EQ(slurp(scene), before);
+  // The engines file given to the whole command.
+  std::ofstream(s / "engines.toml") << "# no engines\n";
+  expect_one_line_error(cli("run --engines " + s / "engines.toml" + " --quiet --scene seed-box --engine home --steps 2 --json " +
+                            d + "/./engines.toml"),
+                        "--json " + d + "/./engines.toml: same file as --engines " + s / "engines.toml");
+  EXPECT_EQ(slurp(s / "engines.toml"), "# no engines\n");
+  // view, sweep and merge.
+  ASSERT_EQ(cli(run + "--frames 2 --json " + s / "r.json").status, 0);
+  std::filesystem::copy_file(s / "r.json", s / "r2.json");
+  const std::string results = slurp(s / "r.json");
+  expect_one_line_error(cli("view " + s / "r.json" + " --out " + d + "/./r.json"),
+                        "--out " + d + "/./r.json: same file as RESULTS " + s / "r.json");
+  expect_one_line_error(cli("sweep --quiet --scene seed-box --engine home --json " + s / "s.json" + " --csv " + d +
+                            "/sub/../s.json"),
+                        "--csv " + d + "/sub/../s.json: same file as --json " + s / "s.json");
+  expect_one_line_error(cli("merge " + s / "r.json" + " " + s / "r2.json" + " --out " + s / "r2.json"),
+                        "--out " + s / "r2.json" + ": same file as SHARD " + s / "r2.json");
+  EXPECT_EQ(slurp(s / "r.json"), results);
+  EXPECT_EQ(slurp(s / "r2.json"), results);
+  // No file at all, or a folder, is refused before the run, not after it.
+  expect_one_line_error(cli(run + "--json ''"), "empty path");
+  expect_one_line_error(cli(run + "--json " + d + "/out/"), "is a folder");
+  expect_one_line_error(cli(run + "--trajectory " + d), "is a folder");
+  EXPECT_FALSE(std::filesystem::exists(s / "out"));
+  // A user's own FILE.tmp is not ours to overwrite; and nothing of ours is left.
+  std::ofstream(s / "out.json.tmp") << "mine";
+  std::ofstream(s / "out.csv.tmp") << "mine too";
+  const auto listed = names_in(s.dir);
+  const Outcome ok = cli(run + "--json " + s / "out.json" + " --trajectory " + s / "out.csv");
+  ASSERT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(slurp(s / "out.json.tmp"), "mine");
+  EXPECT_EQ(slurp(s / "out.csv.tmp"), "mine too");
+  EXPECT_NE(slurp(s / "out.json").find("\"checksum\""), std::string::npos);
+  auto expected = listed;
+  expected.push_back("out.csv"), expected.push_back("out.json");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(names_in(s.dir), expected);
+}
+
+// Trajectory parts are the run's own: a killed run's leftovers (of any naming) are never joined
+// into another run's file, and are left alone.
+TEST(Cli, APartLeftByAnotherRunIsNeverJoined) {
+  const Scratch s("bb_parts");
+  const std::string csv = s / "t.csv";
+  const std::string intruder = "engine,profile,step,t,id,x,y,vx,vy\nintruder,default,0,0,0,1,1,1,1\n";
+  for (const std::string& left : {csv + ".part0", csv + ".part1", csv + ".part0.tmp", csv + ".part.tmp.1.deadbeef",
+                                  csv + ".tmp", csv + ".joining"})
+    std::ofstream(left) << intruder;
+  const auto before = names_in(s.dir);
+  const Outcome o = cli("run --quiet --no-reference --scene seed-box --engine home-seed,home --steps 3 --trajectory " + csv);
+  ASSERT_EQ(o.status, 0) << o.err;
+  const std::string rows = slurp(csv);
+  EXPECT_EQ(rows.find("intruder"), std::string::npos) << rows.substr(0, 400);
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 1 + 2 * 4 * 20);
+  auto expected = before;
+  expected.push_back("t.csv");
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(names_in(s.dir), expected);
+  for (const std::string& left : {csv + ".part0", csv + ".tmp"}) EXPECT_EQ(slurp(left), intruder);
+}
+
+// Two runs writing one trajectory at once: each writes its own temporary files and renames the
+// whole file into place, so the file is one run's, never a mix.
+TEST(Cli, TwoRunsWritingOneTrajectoryAtOnceDoNotMixRows) {
+  const Scratch s("bb_two_writers");
+  const std::string csv = s / "t.csv";
+  const std::string run = std::string(BALLBENCH_CLI) + " run --quiet --no-reference --scene seed-box --engine home --trajectory " + csv;
+  const std::string cmd = "(" + run + " --steps 300 >/dev/null 2>&1 & " + run + " --steps 200 >/dev/null 2>&1 & wait)";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string rows = slurp(csv);
+  const long lines = std::count(rows.begin(), rows.end(), '\n');
+  EXPECT_TRUE(lines == 1 + 301 * 20 || lines == 1 + 201 * 20) << lines << " lines: rows of both runs in one file";
+  EXPECT_EQ(rows.find("engine,", 1), std::string::npos);  // one header
+  EXPECT_EQ(names_in(s.dir), std::vector<std::string>{"t.csv"});
+}
+
+// A trajectory that cannot be written (a full disk: /dev/full) loses the trajectory, not the
+// table or the JSON; one line says so, and the exit status is 1.
+TEST(Cli, AFailedTrajectoryWriteKeepsTheTableAndTheJson) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full here";
+  const Scratch s("bb_full");
+  const Outcome o = cli("run --quiet --no-reference --scene seed-box --engine home-seed,home --steps 20 --json " +
+                        s / "r.json" + " --trajectory /dev/full");
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_NE(o.out.find("home-seed          ok"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("home               ok"), std::string::npos) << o.out;
+  EXPECT_NE(slurp(s / "r.json").find("\"checksum\""), std::string::npos);
+  EXPECT_NE(o.err.find("ballbench: error: /dev/full: writing the trajectory failed"), std::string::npos) << o.err;
+  EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+}
+
+// A second SIGINT hurries: the run in a child that does not answer (an engine process stuck in a
+// step) is killed at once, and the rows finished are still printed and written.
+TEST(Cli, ASecondInterruptKeepsTheFinishedRows) {
+  const Scratch s("bb_second_int");
+  const std::string hang = "process:python3 " + std::string(BALLBENCH_SOURCE_DIR) +
+                           "/tests/process_engines/misbehaving_engine.py hang";
+  const std::string cmd = std::string(BALLBENCH_CLI) + " run --quiet --no-reference --scene seed-box --steps 50 --engine 'home-seed," +
+                          hang + "' --json " + s / "r.json" + " >" + s / "out" + " 2>" + s / "err" +
+                          " & pid=$!; sleep 4; kill -INT $pid; sleep 1; kill -INT $pid; wait $pid; echo $? >" + s / "status";
+  std::system(cmd.c_str());
+  EXPECT_EQ(slurp(s / "status"), "130\n") << slurp(s / "err");
+  const std::string results = slurp(s / "r.json");
+  EXPECT_NE(results.find("\"engine\": \"home-seed\""), std::string::npos) << slurp(s / "err");
+  EXPECT_NE(results.find("\"status\": \"interrupted\""), std::string::npos) << results.substr(0, 300);
+  EXPECT_NE(slurp(s / "out").find("home-seed          ok"), std::string::npos) << slurp(s / "out");
+  const std::string e = slurp(s / "err");
+  EXPECT_NE(e.find("ballbench: interrupted by SIGINT: 2 row(s) written"), std::string::npos) << e;
+}
+
+// Every file read is checked before it is opened (regular files only, a size cap) and bounded while
+// read (nesting); counts and step caps are checked; each problem is one line and exit status 2.
+TEST(Cli, InputsAreBoundedAndRegularFilesOnly) {
+  const Scratch s("bb_bounded");
+  expect_one_line_error(cli("run --scene /dev/zero --engine home"), "/dev/zero: cannot read the scene file: not a regular file");
+  const std::string fifo = s / "fifo.toml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  expect_one_line_error(cli("run --scene " + fifo + " --engine home"), "not a regular file (a FIFO)");
+  {
+    std::ofstream big(s / "big.toml");
+    const std::string comment = "# " + std::string(1022, 'x') + "\n";
+    for (int k = 0; k < 17 * 1024; ++k) big << comment;
+  }
+  expect_one_line_error(cli("run --scene " + s / "big.toml" + " --engine home"), "above the limit of 16 MiB");
+  std::ofstream(s / "nested.json") << std::string(1'000'000, '[') << std::string(1'000'000, ']');
+  expect_one_line_error(cli("view " + s / "nested.json"), "nests deeper than 64 levels");
+  expect_one_line_error(cli("merge " + s / "nested.json" + " --out " + s / "m.json"), "nests deeper than 64 levels");
+  // Wrong types: the file named, exit 2, never an internal error.
+  std::ofstream(s / "typed.json") << R"({"scene": 5, "points": "many"})";
+  expect_one_line_error(cli("merge " + s / "typed.json" + " --out " + s / "m.json"),
+                        s / "typed.json" + ": not a sweep result: scene: expected a string, got number");
+  std::ofstream(s / "point.json") << R"({"scene": "seed-box", "n": 20, "horizon": 0.2, "reference": "exact", "repeats": 1,
+                                        "points": [{"engine": "home", "profile": "default", "knob": "dt", "value": 0.01, "dt": "fast"}]})";
+  expect_one_line_error(cli("merge " + s / "point.json" + " --out " + s / "m.json"),
+                        s / "point.json" + ": not a sweep result: points[0].dt: expected a number, got string");
+  std::filesystem::create_directories(s / "report/results");
+  std::ofstream(s / "report/results/run.json") << R"({"command": 5, "scenes": "seed-box", "suite": []})";
+  expect_one_line_error(cli("report --out " + s / "report" + " --render-only"), "run.json");
+  // The cap of 1e9 steps, however it is reached.
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2147483647"), "at most 1e9 steps");
+  expect_one_line_error(cli("stress --scene seed-box --engine home --steps 2000000000"), "at most 1e9 steps");
+  expect_one_line_error(cli("sweep --scene seed-box --engine home --dt-factors 1e-9"), "cap of 1e9 steps");
+  expect_one_line_error(cli("sweep --scene seed-box --engine home --horizon 1e12"), "cap of 1e9 steps");
+  // A radius too small to hold a contact, as one too large.
+  const std::string tiny = write_scene("ballbench_tiny_radius.toml", R"(dt = 0.01
+duration = 0.1
+[container]
+min = [-5.0, -5.0]
+max = [5.0, 5.0]
+[[ball]]
+pos = [0.0, 0.0]
+radius = 1e-300
+)");
+  expect_one_line_error(cli("run --scene " + tiny + " --engine home"), ":8: ball[0].radius: must be at least 1e-09 m");
+  expect_one_line_error(cli("run --scene deep-pile --engine home --frames 5"), "at most 1000 balls");
+}
+
+// `view` checks the frames it draws: of the run's length, finite and of a scene's size.
+TEST(Cli, ViewRefusesFramesNoRunWrites) {
+  const Scratch s("bb_view_frames");
+  ASSERT_EQ(cli("run --quiet --no-reference --scene seed-box --engine home --steps 4 --frames 2 --json " + s / "r.json").status, 0);
+  const nlohmann::json good = nlohmann::json::parse(slurp(s / "r.json"));
+  ASSERT_EQ(good[0]["series"]["frames"][0].size(), 20u);
+  const auto broken = [&](const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json j = good;
+    edit(j[0]);
+    std::ofstream(s / name) << j.dump();
+    return cli("view " + s / name + " --out " + s / "page.html");
+  };
+  expect_one_line_error(broken("short.json", [](nlohmann::json& r) { r["series"]["frames"][1].erase(0); }),
+                        "series.frames[1] holds 19 positions for 20 balls");
+  expect_one_line_error(broken("null.json", [](nlohmann::json& r) { r["series"]["frames"][0][3][0] = nullptr; }),
+                        "series.frames[0][3] holds nan, not a position");
+  expect_one_line_error(broken("huge.json", [](nlohmann::json& r) { r["series"]["frames"][0][3][1] = 1e300; }),
+                        "series.frames[0][3] holds 1e+300, not a position");
+  expect_one_line_error(broken("many.json", [](nlohmann::json& r) { r["n"] = 1000000000; }), "n: 1000000000 balls");
+  expect_one_line_error(broken("pair.json", [](nlohmann::json& r) { r["series"]["frames"][0][3] = {1.0}; }), "pair.json");
+  EXPECT_FALSE(std::filesystem::exists(s / "page.html"));
+  ASSERT_EQ(cli("view " + s / "r.json" + " --out " + s / "page.html").status, 0);
+}
+
+// Text from outside is printed escaped, on one line, and cut when huge.
+TEST(Cli, ErrorsAreOneEscapedLineCutWhenHuge) {
+  const Outcome escape = cli("run --scene \"$(printf 'a\\033[31mb')\" --engine home");
+  expect_one_line_error(escape, "unknown scene 'a\\x1b[31mb'");
+  EXPECT_EQ(escape.err.find('\033'), std::string::npos);
+  const Outcome huge = cli("run --scene " + std::string(9000, 'x') + ".toml --engine home");
+  expect_one_line_error(huge, " bytes cut)");
+  EXPECT_LT(huge.err.size(), 2200u);
+}
+
+// A built-in scene's name is the built-in scene, whatever the working folder holds; a path says so
+// by a '/' or by .toml (README, --scene).
+TEST(Cli, ABuiltInSceneIsNotShadowedByAFolderOfItsName) {
+  const Scratch s("bb_shadow");
+  std::filesystem::create_directories(s / "seed-box");
+  const std::string cmd = "cd " + s.dir.string() + " && " + BALLBENCH_CLI +
+                          " run --quiet --no-reference --scene seed-box --engine home --steps 2 >/dev/null 2>" + s / "err";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << slurp(s / "err");
+  expect_one_line_error(cli("run --scene " + s / "seed-box" + " --engine home --steps 2"), "is a directory");
+}
+
+// A sweep of which not one point ran to a result exits 1, saying so.
+TEST(Cli, ASweepWithoutOneMeasuredPointExitsOne) {
+  const Scratch s("bb_sweep_failed");
+  const std::string crash = "process:python3 " + std::string(BALLBENCH_SOURCE_DIR) +
+                            "/tests/process_engines/misbehaving_engine.py crash";
+  const Outcome o = cli("sweep --quiet --scene seed-box --engine '" + crash + "' --no-knobs --dt-factors 1,0.5 --repeats 1 --json " +
+                        s / "s.json");
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_NE(o.err.find("none of the 2 point(s) ran to a result"), std::string::npos) << o.err;
+  EXPECT_TRUE(std::filesystem::exists(s / "s.json"));
+}
+
+// A regress baseline's tolerances are checked before anything runs: a negative one is refused; and
+// a baseline that cannot be read is replaced by --update.
+TEST(Cli, RegressRefusesANegativeToleranceAndUpdatesACorruptBaseline) {
+  const Scratch s("bb_regress_tolerance");
+  nlohmann::json baseline = nlohmann::json::parse(slurp(std::string(BALLBENCH_REGRESS_DIR) + "/baseline.json"));
+  ASSERT_TRUE(baseline["tolerances"].is_object());
+  const std::string key = baseline["tolerances"].begin().key();
+  baseline["tolerances"][key]["rel"] = -1;
+  std::ofstream(s / "baseline.json") << baseline.dump();
+  expect_one_line_error(cli("regress --baseline " + s / "baseline.json"),
+                        "tolerances." + key + ".rel: expected a finite number >= 0, got -1");
+  // --update replaces a baseline it cannot read (the reason to update it), with the defaults.
+  std::ofstream(s / "corrupt.json") << "{\"runs\": [";
+  const Outcome update = cli("regress --update --baseline " + s / "corrupt.json");
+  EXPECT_EQ(update.status, 0) << update.err;
+  EXPECT_EQ(cli("regress --baseline " + s / "corrupt.json").status, 0);
 }
 
 }  // namespace

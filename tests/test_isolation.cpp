@@ -349,5 +349,38 @@ TEST(Isolation, AnInterruptBetweenRunsMarksTheNextRun) {
       ::testing::ExitedWithCode(0), "");
 }
 
+// SIGHUP (a closed terminal) is a request to stop like SIGINT and SIGTERM, and rows name the
+// signal that came. In a child (a death test), as the flag stays raised.
+TEST(Isolation, SighupIsARequestToStopNamedAsItself) {
+  const std::vector<const EngineEntry*> engines{&find_engine("home-seed")};
+  EXPECT_EXIT(
+      {
+        const Scene& scene = box();
+        install_interrupt_handlers();
+        std::raise(SIGHUP);  // handled: the process goes on
+        const auto results = cli::run_all(scene, engines, "", steps(5), true, {true, 60});
+        const bool ok = interrupt_signal() == SIGHUP && std::string(interrupt_name()) == "SIGHUP" &&
+                        results.size() == 1 && results[0].error == "interrupted by SIGHUP before this run started";
+        std::exit(ok ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
+// A run interrupted by SIGTERM is told by SIGTERM: its row names it, not SIGINT.
+TEST(Isolation, TheRunIsToldByTheSignalThatCame) {
+  const EngineEntry slow = test_engine("slow", Misbehaviour::None);
+  EXPECT_EXIT(
+      {
+        install_interrupt_handlers();
+        std::thread([] {
+          std::this_thread::sleep_for(std::chrono::milliseconds(300));
+          std::raise(SIGTERM);
+        }).detach();
+        const Result r = run_engine_isolated(box(), slow, steps(50'000'000), {60, ""});
+        std::exit(r.status == "interrupted" && r.error.rfind("interrupted by SIGTERM after step", 0) == 0 ? 0 : 1);
+      },
+      ::testing::ExitedWithCode(0), "");
+}
+
 }  // namespace
 }  // namespace ballbench

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <stdlib.h>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
@@ -18,6 +19,7 @@
 #include "isolated_run.h"
 #include "process/engines_file.h"
 #include "process/process_engine.h"
+#include "process/protocol_client.h"
 #include "registry.h"
 #include "run_engines.h"
 #include "runner.h"
@@ -74,7 +76,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   EXPECT_EQ(r.status, "ok") << r.error;
   EXPECT_EQ(r.steps_done, 40);
   EXPECT_EQ(r.settings["pair_passes"], 1);
-  EXPECT_EQ(r.settings["process"]["protocol"], 1);
+  EXPECT_EQ(r.settings["process"]["protocol"], 2);
   // The engine's own step time, beside the harness's, which adds the pipe.
   ASSERT_TRUE(r.engine_process_s.has_value());
   EXPECT_GT(*r.engine_process_s, 0);
@@ -126,7 +128,7 @@ TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
 
 TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
   for (const auto& [mode, says] : {std::pair{"garbage", "sent garbage in reply to 'step': 'this is not json'"},
-                                   {"short-block", "closed its output before sending a state"},
+                                   {"short-block", "closed its output after a state block 792 bytes short (of 800)"},
                                    {"bad-ids", "ball id 0 at row 1 is not a new index"},
                                    {"error", "refused 'step': the solver lost track of ball 7"}}) {
     const Result r = run_engine(box(), misbehaving(mode), steps(10));
@@ -147,7 +149,7 @@ TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   EXPECT_EQ(r.status, "unsupported");
   EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
   for (const auto& [mode, says] : {std::pair{"unavailable", "the frobnicator library is not installed"},
-                                   {"protocol-2", "speaks protocol version 2"},
+                                   {"protocol-3", "speaks protocol version 3"},
                                    {"no-hello", "refusing to start"}}) {
     ProcessEngineSpec s = spec({"python3", kMisbehaving, mode});
     s.name = "m";
@@ -400,6 +402,175 @@ TEST(EnginesFile, AUsersFileJoinsListAndRun) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_TRUE(has(bad.err, "ballbench: error: /no/such/file.toml: engines file not found")) << bad.err;
   ::unsetenv("BALLBENCH_ENGINES");
+}
+
+// The protocol is one reply per request, and a state's t is the steps' dts summed: a reply sent
+// twice (which would shift the trajectory a step late) or a clock of the engine's own fails the run.
+TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {
+  for (const auto& [mode, says] :
+       {std::pair{"twice", "sent more than one reply before 'step' was asked"},
+        {"wrong-t", "sent a state at t = 270 s in reply to 'step' after 3 step(s), whose dts sum to 0.03 s"}}) {
+    const Result r = run_engine(box(), misbehaving(mode), steps(10));
+    EXPECT_EQ(r.status, "failed") << mode;
+    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
+    EXPECT_LE(r.steps_done, 3) << mode;
+  }
+}
+
+// An engine that declares "precision": "float" may keep its time in float: t is checked to float's
+// round-off; the same time from an engine that declares none is another clock.
+TEST(ProcessEngine, AFloatEnginesTimeIsCheckedToFloatsRoundOff) {
+  const Result declared = run_engine(box(), misbehaving("float-t"), steps(200));
+  EXPECT_EQ(declared.status, "ok") << declared.error;
+  const Result undeclared = run_engine(box(), misbehaving("float-t-undeclared"), steps(200));
+  EXPECT_EQ(undeclared.status, "failed");
+  EXPECT_TRUE(has(undeclared.error, "sent a state at t = ")) << undeclared.error;
+}
+
+TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
+  const Result r = run_engine(box(), misbehaving("huge-step-s"), steps(10));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_TRUE(has(r.error, "no step time 'step_s' from 0 to 1e+06 s")) << r.error;
+  ASSERT_TRUE(r.engine_process_s.has_value());
+  EXPECT_LT(*r.engine_process_s, 1.0);
+}
+
+// A short block says how many bytes it lacked, whether the engine then closes its output or waits.
+TEST(ProcessEngine, AShortStateBlockSaysHowManyBytesAreMissing) {
+  const Result r = run_engine(box(), misbehaving("short-block-alive", 3.0), steps(10));
+  EXPECT_EQ(r.status, "failed");
+  EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more within the time limit")) << r.error;
+}
+
+// The handshake: names without control characters and not `all`, each profile once, the versions
+// the harness speaks.
+TEST(ProcessEngine, TheHandshakeRefusesWhatWouldBreakTablesAndNames) {
+  ProcessEngineSpec named = spec({"python3", kMisbehaving, "name-escape"});
+  named.name = "m";
+  const std::string escape = process_engine_entry(named).info.unavailable;
+  EXPECT_TRUE(has(escape, "control character")) << escape;
+  EXPECT_FALSE(has(escape, "\033")) << escape;
+  const EngineEntry all = misbehaving("name-all");
+  EXPECT_TRUE(has(run_engine(box(), all, steps(5)).error, "is empty, 'all', or holds")) << run_engine(box(), all, steps(5)).error;
+  const EngineEntry twice = misbehaving("profiles-twice");
+  EXPECT_EQ(twice.info.profiles, std::vector<std::string>{"default"});
+}
+
+// A handshake of the required fields only claims what PROTOCOL.md lists as the defaults: no
+// friction, so a scene that rotates is never sent to it. Version 1 kept friction by default.
+TEST(ProcessEngine, AMinimalHandshakeClaimsNoFriction) {
+  const EngineEntry minimal = misbehaving("minimal");
+  ASSERT_TRUE(minimal.info.unavailable.empty()) << minimal.info.unavailable;
+  EXPECT_FALSE(minimal.info.caps.friction);
+  EXPECT_TRUE(minimal.info.caps.gravity);
+  EXPECT_FALSE(minimal.info.caps.continuous_collision);
+  EXPECT_TRUE(default_capabilities(1).friction);
+  EXPECT_FALSE(default_capabilities(2).friction);
+  const EngineEntry version_1 = misbehaving("minimal-1");  // still taken, with version 1's defaults
+  ASSERT_TRUE(version_1.info.unavailable.empty()) << version_1.info.unavailable;
+  EXPECT_TRUE(version_1.info.caps.friction);
+  const Result r = run_engine(slide_to_roll("disk"), minimal, steps(5));
+  EXPECT_EQ(r.status, "unsupported") << r.error;
+  EXPECT_EQ(run_engine(box(), minimal, steps(5)).status, "ok");
+}
+
+// An engine refuses one scene with the reply kind `unsupported` and its reason.
+TEST(ProcessEngine, AnEngineRefusesASceneAsUnsupportedWithItsReason) {
+  const EngineEntry e = misbehaving("unsupported");
+  const Result r = run_engine(box(), e, steps(5));
+  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_TRUE(has(r.error, "misbehaving cannot run walls today")) << r.error;
+}
+
+// A settings error answering the scene, found only when the run builds its world, fails that
+// engine's row: the rows before and after stand.
+TEST(ProcessEngine, ASettingsErrorAnsweringTheSceneFailsOnlyItsRow) {
+  const EngineEntry refuser = misbehaving("settings-at-scene");
+  const std::vector<const EngineEntry*> engines{&find_engine("home"), &refuser, &find_engine("home-seed")};
+  for (const bool isolated : {true, false}) {
+    const auto results = cli::run_all(box(), engines, "", steps(5), true, {isolated, 60});
+    ASSERT_EQ(results.size(), 3u);
+    EXPECT_EQ(results[0].status, "ok");
+    EXPECT_EQ(results[1].status, "failed");
+    EXPECT_TRUE(has(results[1].error, "refused its settings: settings.misbehaving.level")) << results[1].error;
+    EXPECT_EQ(results[2].status, "ok");
+  }
+}
+
+// A position far beyond any scene (1e200 m: its square overflows) is measured as the harness
+// measures any: in a box the ball left it (the run diverged at that step); in open space its jump
+// out and back passes through the other ball twice, and the error against the reference stays a
+// number.
+TEST(ProcessEngine, AFarPositionIsMeasuredNotLost) {
+  const EngineEntry far = misbehaving("far");
+  const Result boxed = run_engine(box(), far, steps(10));
+  EXPECT_EQ(boxed.status, "diverged");
+  EXPECT_EQ(boxed.diverged_step, 3);
+  const Scene open = parse_scene(R"(
+name = "open-far"
+dt = 0.01
+duration = 0.1
+[container]
+kind = "none"
+[[ball]]
+pos = [0.0, 0.0]
+vel = [1.0, 0.0]
+radius = 0.25
+[[ball]]
+pos = [2.0, 0.0]
+vel = [-1.0, 0.0]
+radius = 0.25
+)",
+                                 "test:open-far", 0);
+  RunOptions o = steps(10);
+  use_reference(o);
+  for (const auto& [mode, x] : {std::pair{"far", 1e200}, {"far-1e150", 1e150}}) {
+    const Result r = run_engine(open, misbehaving(mode), o);
+    EXPECT_EQ(r.metrics.tunnelling_pair, 2) << mode << ": " << r.status << ": " << r.error;
+    ASSERT_TRUE(r.reference.available);
+    EXPECT_TRUE(std::isfinite(r.reference.pos_rms_max)) << mode << ": " << r.reference.pos_rms_max;
+    EXPECT_GT(r.reference.pos_rms_max, 0.5 * x) << mode;
+  }
+}
+
+// A helper the engine started, holding the engine's stdout, ends with the engine's process.
+TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
+  const std::string pid_file = (std::filesystem::temp_directory_path() / ("bb_helper." + std::to_string(::getpid()))).string();
+  {
+    const EngineEntry e = process_engine_entry(spec({"python3", kMisbehaving, "helper", pid_file}));
+    ASSERT_TRUE(e.info.unavailable.empty()) << e.info.unavailable;
+    EXPECT_EQ(run_engine(box(), e, steps(5)).status, "ok");
+  }  // the entry and its idle process are gone
+  std::ifstream in(pid_file);
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  std::filesystem::remove(pid_file);
+  // Killed (gone, or a zombie its new parent has not reaped yet): not sleeping on.
+  bool alive = false;
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
+    if (!alive) break;
+    ::usleep(20'000);
+  }
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
+}
+
+TEST(EnginesFile, RefusesAFolderAndTheNameAll) {
+  try {
+    read_engines_file(std::filesystem::temp_directory_path().string());
+    ADD_FAILURE() << "no InputError for a folder";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(has(e.what(), "it is a folder")) << e.what();
+  }
+  const std::string all = write_file("bb_engines_all.toml", "[[engine]]\nname = \"all\"\ncommand = [\"a\"]\n");
+  try {
+    read_engines_file(all);
+    ADD_FAILURE() << "no InputError for the name all";
+  } catch (const InputError& e) {
+    EXPECT_TRUE(has(e.what(), ":2: engine.name: expected a name")) << e.what();
+  }
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 // stdout, so console.log is sent to stderr, which the harness keeps for its error messages.
 console.log = console.info = console.warn = console.error;
 
-const PROTOCOL = 1;
+const PROTOCOL = 2;
 
 // A bad setting: the user's error, reported as such by the harness.
 class SettingsError extends Error {}

@@ -116,6 +116,8 @@ ChildProcess::~ChildProcess() {
       }
     }
   }
+  // What the engine started in its process group (a helper that kept its output open) ends with it.
+  if (pid_ > 0) ::kill(-pid_, SIGKILL);
   close_fd(out_), close_fd(err_);
 }
 
@@ -150,9 +152,17 @@ void ChildProcess::write(const std::string& bytes, Clock::time_point deadline) {
   if (error != 0) throw failure(fmt::format("cannot be written to ({})", std::strerror(error)));
 }
 
-void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for) {
+void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes) {
+  const auto short_by = [&] {
+    return fmt::format("a {} {} bytes short (of {})", waiting_for, block_bytes - std::min(block_bytes, inbox_.size()),
+                       block_bytes);
+  };
   for (;;) {
-    if (Clock::now() >= deadline) throw failure(fmt::format("sent no {} within the time limit", waiting_for));
+    if (Clock::now() >= deadline) {
+      if (block_bytes > 0 && !inbox_.empty())
+        throw failure(fmt::format("sent {}, and no more within the time limit", short_by()));
+      throw failure(fmt::format("sent no {} within the time limit", waiting_for));
+    }
     pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
     const int ready = ::poll(fds, 2, ms_until(deadline));
     if (ready < 0 && errno != EINTR) throw failure(fmt::format("cannot be read ({})", std::strerror(errno)));
@@ -171,6 +181,7 @@ void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for) {
         else std::this_thread::sleep_for(std::chrono::milliseconds(2));
       }
       drain_stderr();
+      if (block_bytes > 0 && !inbox_.empty()) throw failure(fmt::format("closed its output after {}", short_by()));
       throw failure(fmt::format("closed its output before sending a {}", waiting_for));
     }
     inbox_.append(buf, static_cast<size_t>(n));
@@ -191,10 +202,21 @@ std::string ChildProcess::read_line(Clock::time_point deadline, size_t max_bytes
   return line;
 }
 
-void ChildProcess::read_bytes(void* out, size_t n, Clock::time_point deadline) {
-  while (inbox_.size() < n) pump(deadline, "state");
+void ChildProcess::read_bytes(void* out, size_t n, Clock::time_point deadline, const char* what) {
+  while (inbox_.size() < n) pump(deadline, what, n);
   std::memcpy(out, inbox_.data(), n);
   inbox_.erase(0, n);
+}
+
+bool ChildProcess::has_unread_output() {
+  if (!inbox_.empty()) return true;
+  if (out_ < 0) return false;
+  pollfd p{out_, POLLIN, 0};
+  if (::poll(&p, 1, 0) <= 0 || !(p.revents & POLLIN)) return false;
+  char buf[1 << 12];
+  const ssize_t n = ::read(out_, buf, sizeof buf);
+  if (n > 0) inbox_.append(buf, static_cast<size_t>(n));
+  return n > 0;
 }
 
 void ChildProcess::drain_stderr() {

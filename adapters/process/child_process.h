@@ -37,8 +37,12 @@ class ChildProcess {
   void write(const std::string& bytes, Clock::time_point deadline);
   // One line without its '\n', at most `max_bytes` long (longer is garbage).
   std::string read_line(Clock::time_point deadline, size_t max_bytes);
-  // Exactly `n` bytes into `out`.
-  void read_bytes(void* out, size_t n, Clock::time_point deadline);
+  // Exactly `n` bytes into `out`; `what` names them in errors ("the state block"), which say how
+  // many bytes were short.
+  void read_bytes(void* out, size_t n, Clock::time_point deadline, const char* what = "state block");
+  // True if the child has written anything not yet taken (checked without waiting): before a
+  // request, a reply nobody asked for.
+  bool has_unread_output();
 
   // True if this process started it (not a fork's inherited copy) and it has not failed.
   bool usable() const;
@@ -51,7 +55,9 @@ class ChildProcess {
   ChildProcessError failure(const std::string& what);
 
  private:
-  void pump(Clock::time_point deadline, const char* waiting_for);  // reads whatever arrives next
+  // Reads whatever arrives next. `block_bytes`: a binary block of that many bytes is awaited, and
+  // an end or a silence says how many of them are missing.
+  void pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes = 0);
   void drain_stderr();
   std::string exit_description();
 

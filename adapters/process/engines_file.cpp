@@ -6,10 +6,13 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "data_file.h"
 #include "input_error.h"
 
 namespace ballbench {
 namespace {
+
+constexpr std::uintmax_t kMaxEnginesFileBytes = 1 << 20;  // a few dozen [[engine]] tables take kilobytes
 
 std::string where(const std::string& path, const toml::node& n) {
   const auto line = n.source().begin.line;
@@ -20,7 +23,8 @@ std::string where(const std::string& path, const toml::node& n) {
 
 std::vector<ProcessEngineSpec> read_engines_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(fmt::format("{}: engines file not found", path));
+  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: engines file not found", path));
+  check_readable_file(path, "the engines file", kMaxEnginesFileBytes);
   toml::table root;
   try {
     root = toml::parse_file(path);
@@ -47,9 +51,10 @@ std::vector<ProcessEngineSpec> read_engines_file(const std::string& path) {
       const std::string k(key.str()), at = where(path, value);
       if (k == "name") {
         const auto s = value.value<std::string>();
-        if (!s || s->empty() || s->find_first_of(" ,.=:/") != std::string::npos || s->rfind("process", 0) == 0)
-          throw InputError(fmt::format("{}: engine.name: expected a name without spaces or any of ',.=:/', not "
-                                       "starting 'process'", at));
+        if (!s || s->empty() || s->find_first_of(" ,.=:/") != std::string::npos || s->rfind("process", 0) == 0 ||
+            has_control_character(*s) || *s == "all")
+          throw InputError(fmt::format("{}: engine.name: expected a name without spaces, control characters or any of "
+                                       "',.=:/', not starting 'process' and not 'all'", at));
         spec.name = *s;
       } else if (k == "command") {
         const toml::array* a = value.as_array();

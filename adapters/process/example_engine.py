@@ -123,7 +123,7 @@ def main():
             msg = json.loads(line)
             op = msg.get("op")
             if op == "hello":
-                send(dict(ok=True, protocol=1, **hello()))
+                send(dict(ok=True, protocol=2, **hello()))
             elif op == "scene":
                 world, settings = load(msg)
                 send({"ok": True, "settings": settings})

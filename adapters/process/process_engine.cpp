@@ -71,7 +71,7 @@ class ProcessEngine final : public Engine {
     // How the harness reached it: the command and the protocol are part of what produced the result.
     s["process"] = {{"command", pool_->spec.command},
                     {"cwd", pool_->spec.cwd},
-                    {"protocol", kProtocolVersion},
+                    {"protocol", client_->protocol()},
                     {"reply_timeout_s", pool_->spec.timeout_s}};
     return s;
   }
@@ -127,7 +127,13 @@ EngineEntry working_entry(const ProcessEngineSpec& spec, Handshake h, std::uniqu
         throw InputError(fmt::format("settings.{}.{}: unknown setting{} (known: {})", name, key,
                                      did_you_mean(key, pool->settings_keys), fmt::join(pool->settings_keys, ", ")));
     std::unique_ptr<ProtocolClient> client = pool->take();
-    nlohmann::json effective = client->load_scene(scene, profile, settings);
+    nlohmann::json effective;
+    try {
+      effective = client->load_scene(scene, profile, settings);
+    } catch (const SceneUnsupported&) {  // a refusal in order: the process serves the next scene
+      if (client->usable()) pool->idle.push_back(std::move(client));
+      throw;
+    }
     return std::unique_ptr<Engine>(std::make_unique<ProcessEngine>(pool, std::move(client), std::move(effective)));
   };
   return e;

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -25,10 +26,13 @@ std::string excerpt(const std::string& s) {
   return s.size() > 80 ? out + "..." : out;
 }
 
+// The longest an engine may say one step took (s): more is a broken clock, not a step.
+constexpr double kMaxStepSeconds = 1e6;
+
 // Capabilities by the keys the handshake uses; an unknown key is an error (a typo would silently
 // keep a default).
-Capabilities capabilities_from(const nlohmann::json& j) {
-  Capabilities c;
+Capabilities capabilities_from(const nlohmann::json& j, int protocol) {
+  Capabilities c = default_capabilities(protocol);
   const std::pair<const char*, bool*> keys[] = {
       {"open_space", &c.open_space},         {"gravity", &c.gravity},
       {"per_ball_radius", &c.per_ball_radius}, {"per_ball_mass", &c.per_ball_mass},
@@ -44,17 +48,46 @@ Capabilities capabilities_from(const nlohmann::json& j) {
   return c;
 }
 
+// A list of names, each once (a name given twice is taken once), none empty or holding a control
+// character.
 std::vector<std::string> strings_from(const nlohmann::json& j, const char* what, bool allow_empty) {
   if (!j.is_array() || (!allow_empty && j.empty())) throw std::runtime_error(fmt::format("'{}' is not a list of names", what));
   std::vector<std::string> out;
   for (const auto& s : j) {
     if (!s.is_string() || s.get<std::string>().empty()) throw std::runtime_error(fmt::format("'{}' holds a non-name", what));
-    out.push_back(s.get<std::string>());
+    const std::string name = s.get<std::string>();
+    if (has_control_character(name))
+      throw std::runtime_error(fmt::format("'{}' holds '{}', a name with a control character", what, printable(name, 80)));
+    if (std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
   }
   return out;
 }
 
+// The string field `key` of a reply ("" if optional and left out); the field named if it is not one.
+std::string text_field(const nlohmann::json& j, const char* key, bool required) {
+  const auto it = j.find(key);
+  if (it == j.end()) {
+    if (required) throw std::runtime_error(fmt::format("'{}' is missing", key));
+    return "";
+  }
+  if (!it->is_string()) throw std::runtime_error(fmt::format("'{}' is not a string but {}", key, excerpt(it->dump())));
+  return it->get<std::string>();
+}
+
+// Free text for `list` and the report, on one line.
+std::string one_line_text(std::string s) {
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = ' ';
+  return s;
+}
+
 }  // namespace
+
+Capabilities default_capabilities(int protocol) {
+  Capabilities c;  // core/engine.h's defaults, which protocol version 1 kept
+  if (protocol >= 2) c.friction = false;  // an engine claims rotation only by saying so
+  return c;
+}
 
 ProtocolClient::ProtocolClient(const std::vector<std::string>& argv, const std::string& cwd, double timeout_s)
     : child_(argv, cwd), timeout_s_(timeout_s) {}
@@ -68,25 +101,49 @@ void ProtocolClient::send_hello() {
 Handshake ProtocolClient::hello_reply() {
   const nlohmann::json j = reply("hello");
   try {
-    if (j.value("protocol", -1) != kProtocolVersion)
-      throw std::runtime_error(fmt::format("it speaks protocol version {}, the harness {}", j.value("protocol", nlohmann::json()).dump(), kProtocolVersion));
+    const nlohmann::json version = j.value("protocol", nlohmann::json());
+    if (!version.is_number_integer() || version.get<int>() < kOldestProtocolVersion ||
+        version.get<int>() > kProtocolVersion)
+      throw std::runtime_error(fmt::format("it speaks protocol version {}, the harness {} (and {} to {})",
+                                           excerpt(version.dump()), kProtocolVersion, kOldestProtocolVersion,
+                                           kProtocolVersion));
     Handshake h;
-    h.info.name = j.at("name").get<std::string>();
-    h.info.version = j.at("version").get<std::string>();
-    h.info.summary = j.value("summary", "");
-    h.info.limits = j.value("limits", "");
-    h.info.caps = capabilities_from(j.at("capabilities"));
-    h.info.profiles = strings_from(j.at("profiles"), "profiles", false);
+    h.protocol = protocol_ = version.get<int>();
+    h.info.name = text_field(j, "name", true);
+    h.info.version = one_line_text(text_field(j, "version", true));
+    h.info.summary = one_line_text(text_field(j, "summary", false));
+    h.info.limits = one_line_text(text_field(j, "limits", false));
+    if (!j.contains("capabilities")) throw std::runtime_error("'capabilities' is missing");
+    h.info.caps = capabilities_from(j["capabilities"], protocol_);
+    if (!j.contains("profiles")) throw std::runtime_error("'profiles' is missing");
+    h.info.profiles = strings_from(j["profiles"], "profiles", false);
+    for (const std::string& p : h.info.profiles)
+      if (p == "all") throw std::runtime_error("'profiles' holds 'all', which --profile uses for every profile");
+    const std::string precision = j.contains("precision") ? text_field(j, "precision", true) : "double";
+    if (precision != "double" && precision != "float")
+      throw std::runtime_error(fmt::format("'precision' is '{}', not \"double\" or \"float\"", excerpt(precision)));
+    float_precision_ = precision == "float";
     h.info.costly_runs = true;  // every run starts the engine's process (a Node engine: 0.1 to 0.4 s)
     h.settings_keys = strings_from(j.value("settings_keys", nlohmann::json::array()), "settings_keys", true);
-    for (const auto& k : j.value("sweep_knobs", nlohmann::json::array()))
-      h.info.sweep_knobs.push_back({k.at("key").get<std::string>(), k.at("values")});
+    const nlohmann::json knobs = j.contains("sweep_knobs") ? j["sweep_knobs"] : nlohmann::json::array();
+    if (!knobs.is_array()) throw std::runtime_error("'sweep_knobs' is not a list");
+    for (const auto& k : knobs) {
+      if (!k.is_object()) throw std::runtime_error("'sweep_knobs' holds an entry that is not {\"key\": ..., \"values\": [...]}");
+      const std::string key = text_field(k, "key", true);
+      if (std::find(h.settings_keys.begin(), h.settings_keys.end(), key) == h.settings_keys.end())
+        throw std::runtime_error(fmt::format("'sweep_knobs' varies '{}', which is not in 'settings_keys'", excerpt(key)));
+      if (!k.at("values").is_array() || k.at("values").empty())
+        throw std::runtime_error(fmt::format("'sweep_knobs' entry '{}' has no list of 'values'", excerpt(key)));
+      h.info.sweep_knobs.push_back({key, k.at("values")});
+    }
     const auto fields = strings_from(j.value("state_fields", nlohmann::json::array({"id", "x", "y", "vx", "vy"})), "state_fields", false);
     for (const char* need : {"id", "x", "y", "vx", "vy"})
       if (std::find(fields.begin(), fields.end(), need) == fields.end())
         throw std::runtime_error(fmt::format("'state_fields' lacks '{}'", need));
-    if (h.info.name.empty() || h.info.name.find_first_of(" ,.=:/") != std::string::npos)
-      throw std::runtime_error(fmt::format("name '{}' is empty or holds one of ' ,.=:/'", h.info.name));
+    if (h.info.name.empty() || h.info.name.find_first_of(" ,.=:/") != std::string::npos ||
+        has_control_character(h.info.name) || h.info.name == "all")
+      throw std::runtime_error(fmt::format("name '{}' is empty, 'all', or holds a control character or one of ' ,.=:/'",
+                                           printable(h.info.name, 80)));
     return h;
   } catch (const nlohmann::json::exception& e) {
     throw child_.failure(fmt::format("sent a handshake the harness cannot read: {}", e.what()));
@@ -131,17 +188,36 @@ nlohmann::json ProtocolClient::load_scene(const Scene& scene, const std::string&
         {"container", container},
         {"balls", balls}}}};
   n_ = scene.n();
+  steps_ = 0, t_ = 0;
   const nlohmann::json j = request(message, "scene");
-  return j.value("settings", nlohmann::json::object());
+  if (j.contains("settings") && !j["settings"].is_object())
+    throw child_.failure(fmt::format("sent garbage in reply to 'scene': 'settings' is not an object but {}",
+                                     excerpt(j["settings"].dump())));
+  return j.contains("settings") ? j["settings"] : nlohmann::json::object();
 }
 
 double ProtocolClient::step(double dt, State& out) {
   const nlohmann::json j = request({{"op", "step"}, {"dt", dt}, {"read", true}}, "step");
+  ++steps_, t_ += dt;
   const auto it = j.find("step_s");
-  if (it == j.end() || !it->is_number() || !(it->get<double>() >= 0))
-    throw child_.failure(fmt::format("sent garbage in reply to 'step': no step time 'step_s' >= 0 in '{}'", excerpt(j.dump())));
+  if (it == j.end() || !it->is_number() || !(it->get<double>() >= 0 && it->get<double>() <= kMaxStepSeconds))
+    throw child_.failure(fmt::format("sent garbage in reply to 'step' {}: no step time 'step_s' from 0 to {:g} s in '{}'",
+                                     steps_, kMaxStepSeconds, excerpt(j.dump())));
   read_state(j, out, "step");
   return it->get<double>();
+}
+
+// The state's time is the steps' dts summed, to a relative 1e-9 and the round-off of summing them
+// (in float for an engine whose handshake says "precision": "float"): a state of another step (a
+// reply sent twice, a step skipped) or a clock of its own is an error, not a shifted trajectory.
+void ProtocolClient::check_time(double t, const char* op) {
+  const double eps = float_precision_ ? 0x1p-23 : 0x1p-52;
+  const double tolerance = std::abs(t_) * (1e-9 + static_cast<double>(steps_) * eps) + 1e-12;
+  if (std::isfinite(t) && std::abs(t - t_) <= tolerance) return;
+  throw child_.failure(fmt::format("sent a state at t = {} s in reply to '{}' after {} step(s), whose dts sum to {} s "
+                                   "(a reply sent twice, a step skipped, or another clock: one reply per request, t "
+                                   "the simulated time)",
+                                   t, op, steps_, t_));
 }
 
 void ProtocolClient::read(State& out) { read_state(request({{"op", "read"}}, "read"), out, "read"); }
@@ -149,6 +225,9 @@ void ProtocolClient::read(State& out) { read_state(request({{"op", "read"}}, "re
 nlohmann::json ProtocolClient::request(const nlohmann::json& message, const char* op) {
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
+  // Every reply so far was taken: anything waiting now is a reply no request asked for.
+  if (child_.has_unread_output())
+    throw child_.failure(fmt::format("sent more than one reply before '{}' was asked (one reply per request)", op));
   child_.write(message.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n", deadline);
   return reply(op);
 }
@@ -161,8 +240,16 @@ nlohmann::json ProtocolClient::reply(const char* op) {
   if (j.is_discarded() || !j.is_object() || !j.contains("ok") || !j["ok"].is_boolean())
     throw child_.failure(fmt::format("sent garbage in reply to '{}': '{}' is not a JSON object with \"ok\"", op, excerpt(line)));
   if (j["ok"].get<bool>()) return j;
-  const std::string error = j.value("error", "(no message)"), kind = j.value("kind", "engine");
+  const nlohmann::json& e = j.contains("error") ? j["error"] : nlohmann::json("(no message)");
+  const nlohmann::json& k = j.contains("kind") ? j["kind"] : nlohmann::json("engine");
+  const std::string error = e.is_string() ? e.get<std::string>() : e.dump();
+  const std::string kind = k.is_string() ? k.get<std::string>() : k.dump();
   if (kind == "settings") throw InputError(error);  // the user's settings: "settings.ENGINE.KEY: why"
+  if (kind == "unsupported" && std::string_view(op) == "scene") throw SceneUnsupported(error);
+  if (kind != "engine" && kind != "unavailable" && kind != "unsupported")
+    throw child_.failure(fmt::format("sent garbage in reply to '{}': error kind '{}' (engine, settings, unsupported or "
+                                     "unavailable) with '{}'",
+                                     op, excerpt(kind), excerpt(error)));
   throw std::runtime_error(fmt::format("engine process {} refused '{}': {}", child_.label(), op, error));
 }
 
@@ -173,6 +260,9 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
   double t = NAN;
   try {
     if (it == reply.end()) throw std::runtime_error("no 'state'");
+    if (!it->is_object()) throw std::runtime_error("'state' is not an object");
+    if (!it->at("n").is_number_integer()) throw std::runtime_error("'n' is not a whole number");
+    if (!it->at("t").is_number()) throw std::runtime_error("'t' is not a number");
     n = it->at("n").get<long>();
     t = it->at("t").get<double>();
     fields = strings_from(it->at("fields"), "fields", false);
@@ -200,6 +290,7 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
   child_.read_bytes(block_.data(), block_.size() * sizeof(double), deadline);
+  check_time(t, op);
   out.t = t;
   out.resize(static_cast<int>(n), rotation_);
   const double* ids = block_.data() + col("id") * n;

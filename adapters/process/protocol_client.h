@@ -16,13 +16,20 @@
 
 namespace ballbench {
 
-inline constexpr int kProtocolVersion = 1;
+// The version the harness speaks; it also takes engines that answer with an older one it lists
+// in PROTOCOL.md (version 1: every capability left out defaults to true, friction included).
+inline constexpr int kProtocolVersion = 2;
+inline constexpr int kOldestProtocolVersion = 1;
 
 // What the handshake says about the engine.
 struct Handshake {
   EngineInfo info;
   std::vector<std::string> settings_keys;  // every key its settings accept
+  int protocol = kProtocolVersion;         // the version the engine answered with
 };
+
+// The capabilities an engine has that its handshake leaves out, for a protocol version.
+Capabilities default_capabilities(int protocol);
 
 class ProtocolClient {
  public:
@@ -40,6 +47,7 @@ class ProtocolClient {
   void read(State& out);
 
   bool usable() const { return child_.usable(); }
+  int protocol() const { return protocol_; }
   const std::string& label() const { return child_.label(); }
 
  private:
@@ -47,8 +55,14 @@ class ProtocolClient {
   nlohmann::json reply(const char* op);
   void read_state(const nlohmann::json& header, State& out, const char* op);
 
+  void check_time(double t, const char* op);
+
   ChildProcess child_;
   double timeout_s_;
+  int protocol_ = kProtocolVersion;
+  bool float_precision_ = false;  // the handshake says the engine computes in float
+  long steps_ = 0;                // steps since the scene was loaded
+  double t_ = 0;                  // their dts summed: the simulated time its state must carry
   int n_ = 0;  // balls in the scene loaded
   bool rotation_ = false;  // the scene loaded rotates: states carry w and angle
   std::vector<double> block_;  // the last state's doubles

@@ -20,17 +20,18 @@ void list() {
       const Scene s = load_scene(name);
       fmt::print("  {:<16} {:>7} balls, dt {}, {} steps\n", name, s.n(), s.dt, s.steps());
     } catch (const InputError& e) {
-      fmt::print("  {:<16} (invalid: {})\n", name, e.what());
+      fmt::print("  {:<16} (invalid: {})\n", name, printable(e.what()));
     }
   }
   fmt::print("engines:\n");
   for (const auto& e : engine_registry()) {
     if (!e.info.unavailable.empty()) {
-      fmt::print("  {:<12} {:<14} unavailable: {}\n", e.info.name, "-", e.info.unavailable);
+      fmt::print("  {:<12} {:<14} unavailable: {}\n", printable(e.info.name), "-", printable(e.info.unavailable));
       continue;
     }
-    fmt::print("  {:<12} {:<14} {:<9} profiles: {:<14} {}\n", e.info.name, e.info.version, role_name(e.info.role),
-               fmt::format("{}", fmt::join(e.info.profiles, ",")), e.info.summary);
+    fmt::print("  {:<12} {:<14} {:<9} profiles: {:<14} {}\n", printable(e.info.name), printable(e.info.version),
+               role_name(e.info.role), printable(fmt::format("{}", fmt::join(e.info.profiles, ","))),
+               printable(e.info.summary));
   }
 }
 

@@ -34,10 +34,17 @@ void merge_matches(const MergeArgs& a) {
 }
 
 void merge_sweeps(const MergeArgs& a) {
+  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
+  {
+    std::vector<PathUse> uses = noted_input_files();
+    for (const auto& path : a.shards) uses.push_back({"SHARD", path, false});
+    uses.push_back({"--out", a.out, true});
+    uses.push_back({"--csv", csv, true});
+    check_path_clashes(uses);
+  }
   std::vector<SweepResult> shards;
   for (const auto& path : a.shards) shards.push_back(read_sweep_file(path));
   const SweepResult merged = merge_sweep_shards(shards, a.shards);
-  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
   write_sweep_files(merged, a.out, csv);
   fmt::print("merged {} shards ({} points) into {} and {}\n", shards.size(), merged.points.size(), a.out, csv);
 }
@@ -58,13 +65,19 @@ ReportShard read_report_shard(const std::string& folder) {
   s.context = parse_json_file(path, "a report's run record");
   if (!s.context.contains("shard") || !s.context.contains("parts"))
     throw InputError(fmt::format("merge: {}: not a report shard (its run.json has no shard; it is a whole report)", path));
-  s.plan = {{"suite", s.context.value("suite", "")},
-            {"seeds", s.context.value("seeds", 0)},
-            {"engine_list", s.context.value("engine_list", "all")},
-            {"parts", s.context.at("parts")},
-            {"engines", s.context.value("engines", nlohmann::json::object())}};
-  s.index = s.context.at("shard").at("index").get<int>();
-  s.count = s.context.at("shard").at("count").get<int>();
+  try {
+    s.plan = {{"suite", s.context.value("suite", "")},
+              {"seeds", s.context.value("seeds", 0)},
+              {"engine_list", s.context.value("engine_list", "all")},
+              {"parts", s.context.at("parts")},
+              {"engines", s.context.value("engines", nlohmann::json::object())}};
+    s.index = s.context.at("shard").at("index").get<int>();
+    s.count = s.context.at("shard").at("count").get<int>();
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(json_shape_error(path, "a report's run record", e));
+  }
+  if (s.count < 1 || s.count > 10000)
+    throw InputError(fmt::format("merge: {}: shard.count: {} is not a shard count", path, s.count));
   return s;
 }
 

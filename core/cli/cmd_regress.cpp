@@ -12,6 +12,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "json_value.h"
 #include "machine_info.h"
 #include "metrics/catalog.h"
@@ -140,7 +141,14 @@ void check_baseline(const nlohmann::json& baseline, const std::string& path) {
   };
   if (baseline.contains("tolerances")) {
     if (!baseline["tolerances"].is_object()) throw InputError(fmt::format("{}: tolerances: expected an object", path));
-    for (const auto& [key, v] : baseline["tolerances"].items()) check_metric(key, "tolerances");
+    for (const auto& [key, v] : baseline["tolerances"].items()) {
+      check_metric(key, "tolerances");
+      if (!v.is_object()) throw InputError(fmt::format("{}: tolerances.{}: expected {{\"rel\": R, \"abs\": A}}", path, key));
+      for (const char* part : {"rel", "abs"})
+        if (v.contains(part) && !(v[part].is_number() && v[part].get<double>() >= 0 && std::isfinite(v[part].get<double>())))
+          throw InputError(fmt::format("{}: tolerances.{}.{}: expected a finite number >= 0, got {}", path, key, part,
+                                       v[part].dump()));
+    }
   }
   std::vector<std::string> seen;
   for (const auto& run : baseline["runs"]) {
@@ -179,24 +187,43 @@ void regress(const RegressArgs& a) {
       throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
     check_baseline(baseline, a.baseline);
   } else {
+    std::vector<PathUse> uses = noted_input_files();
+    uses.push_back({"--baseline", a.baseline, true});
+    check_path_clashes(uses);
     check_writable(a.baseline, "the baseline", true);
   }
 
+  install_interrupt_handlers();
   std::vector<nlohmann::json> runs;
   for (const SuiteScene& item : suite()) {
     const Scene scene = load_scene(item.scene);
     options.steps = item.steps;
     for (const Result& r : run_all(scene, engines, "", options, true, Isolation{true, a.timeout_s}))
       runs.push_back(record(r));
+    if (interrupt_signal()) break;
     fmt::print(stderr, "regress: ran {}\n", scene.name);
   }
+  // A suite cut short is compared with nothing and written nowhere.
+  exit_if_interrupted(fmt::format("the suite was cut short after {} run(s): nothing compared{}", runs.size(),
+                                  a.update ? ", the baseline not rewritten" : ""));
 
   if (a.update) {
     nlohmann::json tolerances = default_tolerances();
     if (std::filesystem::exists(a.baseline)) {
-      const nlohmann::json old = read_baseline_file(a.baseline);
-      // The baseline's own tolerances win; a metric new since it was written gets its default.
-      if (old.contains("tolerances") && old["tolerances"].is_object()) tolerances.update(old["tolerances"]);
+      // The baseline's own tolerances win; a metric new since it was written gets its default. A
+      // baseline that cannot be read (the reason to replace it) gives none.
+      try {
+        const nlohmann::json old = read_baseline_file(a.baseline);
+        if (old.is_object() && old.contains("tolerances") && old["tolerances"].is_object()) {
+          nlohmann::json kept = old;
+          kept["runs"] = nlohmann::json::array();
+          check_baseline(kept, a.baseline);
+          tolerances.update(old["tolerances"]);
+        }
+      } catch (const InputError& e) {
+        fmt::print(stderr, "regress: the old baseline's tolerances are not kept ({}): the defaults are written\n",
+                   printable(e.what()));
+      }
     }
     const MachineInfo m = machine_info();
     write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},

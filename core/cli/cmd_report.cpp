@@ -230,7 +230,12 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
 void render_report_folder(const std::string& out) {
   ReportInputs inputs = read_report_inputs(out + "/results");
   inputs.roles = engine_roles();
-  const std::string md = render_report(inputs, draw_figures(inputs, out));
+  std::string md;
+  try {
+    md = render_report(inputs, draw_figures(inputs, out));
+  } catch (const nlohmann::json::exception& e) {  // a field of run.json of another type than a report writes
+    throw InputError(fmt::format("{}/results/run.json: not a report's run record: {}", out, e.what()));
+  }
   write_file_atomically(out + "/REPORT.md", md, "the report");
   fmt::print("wrote {}/REPORT.md\n", out);
 }

@@ -85,27 +85,18 @@ void check_settings(const Scene& scene, const nlohmann::json& overrides) {
   }
 }
 
-// The output files are checked before anything runs (a run may take hours): writable, not the
-// scene file just read, and not both the same regular file (one would overwrite the other).
+// The output files are checked before anything runs (a run may take hours): writable, and neither
+// an input (the scene file, an engines file) nor each other, however spelled.
 void check_outputs(const Scene& scene, const RunArgs& a) {
-  namespace fs = std::filesystem;
-  const auto same = [](const std::string& x, const std::string& y) {
-    std::error_code ec, ec2;
-    const fs::path cx = fs::weakly_canonical(x, ec), cy = fs::weakly_canonical(y, ec2);
-    return !ec && !ec2 && cx == cy;
-  };
-  const auto regular_or_new = [](const std::string& p) {
-    std::error_code ec;
-    return !fs::exists(p, ec) || fs::is_regular_file(p, ec);
-  };
-  if (!a.json.empty() && !a.trajectory.empty() && same(a.json, a.trajectory) && regular_or_new(a.json))
-    throw InputError(fmt::format("--json and --trajectory: both name {} (one would overwrite the other)", a.json));
+  std::vector<PathUse> uses = noted_input_files();
+  if (!scene.source.empty() && std::filesystem::exists(scene.source)) uses.push_back({"--scene", scene.source, false});
+  if (!a.json.empty()) uses.push_back({"--json", a.json, true});
+  if (!a.trajectory.empty()) uses.push_back({"--trajectory", a.trajectory, true});
+  check_path_clashes(uses);
   // The results file's folders are created (as its writer does); the trajectory's are not.
   for (const auto& [flag, path, what, parents] :
        {std::tuple{"--json", a.json, "the results", true}, {"--trajectory", a.trajectory, "the trajectory", false}}) {
     if (path.empty()) continue;
-    if (same(path, scene.source))
-      throw InputError(fmt::format("{} {}: that is the scene file being run (it would be overwritten)", flag, path));
     try {
       check_writable(path, what, parents);
     } catch (const InputError& e) {
@@ -150,12 +141,17 @@ void run(const RunArgs& a) {
   if (!a.no_reference) use_reference(options);
   options.metrics.sample_every = a.sample_every;
   options.frames = a.frames;
+  if (a.frames > 0 && scene.n() > 1000)
+    throw InputError(fmt::format("--frames {}: frames are kept for scenes of at most 1000 balls; {} has {}", a.frames,
+                                 scene.source, scene.n()));
   if (a.seeds > 1 && !scene.random_placement)
     throw InputError(fmt::format("--seeds {}: {} has no random placement ([random] or [lattice]) to draw again",
                                  a.seeds, scene.source));
   if (a.seeds > 1 && !a.trajectory.empty())
     throw InputError("--trajectory with --seeds: give one placement (a trajectory holds one run per engine and profile)");
-  std::vector<Result> results = run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory);
+  std::string trajectory_error;
+  std::vector<Result> results =
+      run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory, &trajectory_error);
   // Further placements: the same scene with its random seeds offset by 1 .. K-1.
   run_further_placements(results, scene, a.seeds,
                          [&](int k) {
@@ -170,6 +166,12 @@ void run(const RunArgs& a) {
   if (a.seeds > 1) print_ensemble(results, a.seeds, ours);
   else print_table(results);
   if (!a.json.empty()) write_results_file(a.json, results);
+  // The table and the JSON stand; the trajectory that could not be written is said in one line.
+  if (!trajectory_error.empty()) {
+    fmt::print(stderr, "ballbench: error: {} (the table{} are complete)\n", trajectory_error,
+               a.json.empty() ? "" : " and " + a.json);
+    throw CheckFailed{interrupt_signal() ? 128 + interrupt_signal() : 1};
+  }
   exit_if_interrupted(fmt::format("{} row(s) written{}, the run in progress marked interrupted", results.size(),
                                   a.json.empty() ? "" : fmt::format(" to the table and {}", a.json)));
   // Exit 1 when a row did not run to a result: failed, diverged, crashed or timed out. A row the
@@ -186,12 +188,13 @@ void add_run(CLI::App& app) {
   cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
   cmd->add_option("--dt", a->dt, "step size in seconds (overrides the scene's)")->check(kPositiveNumber);
-  auto* steps = cmd->add_option("--steps", a->steps, "number of steps")->check(kPositiveCount);
+  auto* steps = cmd->add_option("--steps", a->steps, "number of steps (at most 1e9)")->check(kStepCount);
   cmd->add_option("--duration", a->duration, "simulated seconds (overrides the scene's)")
       ->check(kPositiveNumber)
       ->excludes(steps);
-  cmd->add_option("--json", a->json, "write one JSON object per engine run (an array) to FILE");
-  cmd->add_option("--trajectory", a->trajectory, "write every ball's state at every step as CSV to FILE");
+  cmd->add_option("--json", a->json, "write one JSON object per engine run (an array) to FILE")->check(kOutputFile);
+  cmd->add_option("--trajectory", a->trajectory, "write every ball's state at every step as CSV to FILE")
+      ->check(kOutputFile);
   cmd->add_option("--trajectory-limit-gb", a->trajectory_limit_gb,
                   "refuse a --trajectory estimated larger than this many GB (default 10)")
       ->check(kPositiveNumber);

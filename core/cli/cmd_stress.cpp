@@ -1,6 +1,7 @@
 // `ballbench stress`: for each engine, raise one knob at a time (dt, initial speed, mass ratio,
 // ball count) by factors of 2 until a run fails, and print the stability frontier: the largest
 // value that still passed, and why the next one failed.
+#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
@@ -32,7 +33,13 @@ void stress(StressArgs& a) {
   if (!a.knobs.empty()) a.options.knobs = a.knobs;
   a.options.reference = reference_engine();
   a.options.isolation.enabled = !a.no_isolation;
-  if (!a.json.empty()) check_writable(a.json, "the frontiers", true);  // before the runs, which take minutes
+  if (!a.json.empty()) {  // before the runs, which take minutes
+    std::vector<PathUse> uses = noted_input_files();
+    if (std::filesystem::exists(base.source)) uses.push_back({"--scene", base.source, false});
+    uses.push_back({"--json", a.json, true});
+    check_path_clashes(uses);
+    check_writable(a.json, "the frontiers", true);
+  }
   install_interrupt_handlers();
   const FrontierResult f = run_frontier(base, engines, a.options, run_context());
   print_frontier(f);
@@ -51,13 +58,13 @@ void add_stress(CLI::App& app) {
   cmd->add_option("--profile", a->options.profile, "settings profile, or all");
   cmd->add_option("--knobs", a->knobs, "comma-separated: dt, speed, mass-ratio, count (default: all four)")
       ->delimiter(',');
-  cmd->add_option("--steps", a->options.steps, "steps per run (default 200)")->check(kPositiveCount);
+  cmd->add_option("--steps", a->options.steps, "steps per run (default 200, at most 1e9)")->check(kStepCount);
   cmd->add_option("--levels", a->options.levels, "doublings tried per knob (default 6: up to 32 x)")
       ->check(CLI::Range(1, 20));
   cmd->add_option("--energy-tolerance", a->options.energy_tolerance,
                   "a run fails when its energy is off the reference (or grew) by more than this fraction (default 0.1)")
       ->check(kPositiveNumber);
-  cmd->add_option("--json", a->json, "write the frontiers as JSON to FILE");
+  cmd->add_option("--json", a->json, "write the frontiers as JSON to FILE")->check(kOutputFile);
   auto* timeout = cmd->add_option("--timeout", a->options.isolation.timeout_s,
                                   "seconds each run may take before it is killed and fails (default 120)")
                       ->check(kPositiveNumber);

@@ -2,6 +2,8 @@
 // (the step size for every engine; solver iterations, sub-steps, CCD, profiles as each engine lists
 // them in EngineInfo::sweep_knobs), time every point (median of repeated runs) and measure its error
 // against `exact` at a fixed horizon; write JSON and CSV and print each engine's Pareto front.
+#include <algorithm>
+#include <filesystem>
 #include <memory>
 
 #include <fmt/format.h>
@@ -41,7 +43,11 @@ void sweep(SweepArgs& a) {
                                                  a.options.shard.count);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
   // Checked before the sweep (it takes minutes), as `run` checks its outputs.
-  if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
+  std::vector<PathUse> uses = noted_input_files();
+  if (std::filesystem::exists(scene.source)) uses.push_back({"--scene", scene.source, false});
+  uses.push_back({"--json", a.json, true});
+  uses.push_back({"--csv", a.csv, true});
+  check_path_clashes(uses);
   check_writable(a.json, "the sweep's results", true);
   check_writable(a.csv, "the sweep's CSV", true);
   install_interrupt_handlers();
@@ -51,6 +57,15 @@ void sweep(SweepArgs& a) {
   fmt::print("wrote {} and {}\n", a.json, a.csv);
   exit_if_interrupted(fmt::format("{} point(s) written to {} and {}, the point in progress marked interrupted",
                                   s.points.size(), a.json, a.csv));
+  // Not one point measured (every one failed, crashed or timed out): the sweep has no result.
+  const auto status_is = [&](const char* status) {
+    return [status](const SweepPoint& p) { return p.status == status; };
+  };
+  if (!s.points.empty() && std::none_of(s.points.begin(), s.points.end(), status_is("ok")) &&
+      !std::all_of(s.points.begin(), s.points.end(), status_is("unsupported"))) {
+    fmt::print(stderr, "ballbench: sweep: none of the {} point(s) ran to a result (see the lines above)\n", s.points.size());
+    throw CheckFailed{1};
+  }
 }
 
 }  // namespace
@@ -72,8 +87,8 @@ void add_sweep(CLI::App& app) {
   cmd->add_flag("--no-knobs", a->no_knobs, "vary the step size only, not the engines' own knobs");
   cmd->add_option("--repeats", a->options.repeats, "timing runs per point; the median is reported (default 3)")
       ->check(CLI::Range(1, 1000));
-  cmd->add_option("--json", a->json, "JSON output (default sweep-SCENE.json)");
-  cmd->add_option("--csv", a->csv, "CSV output (default: the JSON path with .csv)");
+  cmd->add_option("--json", a->json, "JSON output (default sweep-SCENE.json)")->check(kOutputFile);
+  cmd->add_option("--csv", a->csv, "CSV output (default: the JSON path with .csv)")->check(kOutputFile);
   cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds each run may take (default 120)")
       ->check(kPositiveNumber);
   cmd->add_option("--shard", a->shard,

@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "validators.h"
 #include "viewer_page.h"
 
 namespace ballbench::cli {
@@ -18,6 +19,14 @@ struct ViewArgs {
 };
 
 void view(const ViewArgs& a) {
+  const std::string out =
+      a.out.empty() ? std::filesystem::path(a.results).replace_extension(".html").string() : a.out;
+  {
+    std::vector<PathUse> uses = noted_input_files();
+    uses.push_back({"RESULTS", a.results, false});
+    uses.push_back({"--out", out, true});
+    check_path_clashes(uses);
+  }
   const std::vector<Result> runs = read_results_file(a.results);
   if (runs.empty()) throw InputError(fmt::format("{}: no runs in it", a.results));
   std::vector<const Result*> shown;
@@ -30,8 +39,6 @@ void view(const ViewArgs& a) {
     throw InputError(fmt::format("{}: no frames to show (run with `ballbench run --frames N --json FILE`; scenes of "
                                  "at most 1000 balls)",
                                  a.results));
-  const std::string out =
-      a.out.empty() ? std::filesystem::path(a.results).replace_extension(".html").string() : a.out;
   std::string page;
   try {
     page = viewer_page(shown);
@@ -49,7 +56,7 @@ void add_view(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
   auto* cmd = app.add_subcommand("view", "write the trajectory viewer page (HTML) for a run file of `run --frames N --json`");
   cmd->add_option("RESULTS", a->results, "a JSON file written by `ballbench run --frames N --json FILE`")->required();
-  cmd->add_option("--out", a->out, "the page to write (default: RESULTS with .html for .json)");
+  cmd->add_option("--out", a->out, "the page to write (default: RESULTS with .html for .json)")->check(kOutputFile);
   cmd->callback([a] { view(*a); });
 }
 

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "registry.h"
@@ -31,7 +32,10 @@ int main(int argc, char** argv) {
   app.add_option_function<std::vector<std::string>>(
       "--engines",
       [](const std::vector<std::string>& files) {
-        for (const auto& f : files) ballbench::use_engines_file(f);
+        for (const auto& f : files) {
+          ballbench::note_input_file("--engines", f);
+          ballbench::use_engines_file(f);
+        }
       },
       "an engines file (TOML, adapters/process/README.md) naming external engines to add to the project's "
       "engines.toml (repeatable)");
@@ -52,7 +56,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "ballbench: error: %s (see ballbench --help)\n", e.what());
+    std::fprintf(stderr, "ballbench: error: %s (see ballbench --help)\n", ballbench::printable(e.what()).c_str());
     return 2;
   } catch (const ballbench::cli::CheckFailed& e) {
     return e.status;
@@ -61,10 +65,10 @@ int main(int argc, char** argv) {
                  e.during.c_str());
     return 128 + ballbench::interrupt_signal();
   } catch (const ballbench::InputError& e) {
-    std::fprintf(stderr, "ballbench: error: %s\n", e.what());
+    std::fprintf(stderr, "ballbench: error: %s\n", ballbench::printable(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "ballbench: internal error: %s\n", e.what());
+    std::fprintf(stderr, "ballbench: internal error: %s\n", ballbench::printable(e.what()).c_str());
     return 3;
   }
   return 0;

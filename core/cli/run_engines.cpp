@@ -30,31 +30,35 @@ Result not_started(const Scene& scene, const EngineEntry& entry, const RunOption
 }
 
 // The trajectory CSV of isolated runs: each child writes its own part (a complete CSV, header
-// included, by TrajectoryCsv); the parts are joined here, in run order, under one header. The file
-// appears only when complete (written beside it, then renamed), and the parts are removed even if a
-// run throws.
+// included, by TrajectoryCsv); the parts are joined here, in run order, under one header. Every
+// temporary file is this run's own: named with this process's id and a random token and created
+// here before the child starts (O_EXCL), so a part left by a killed run, or written by another run
+// at the same time, is never taken. The file appears only when complete (written beside it, then
+// renamed), and the parts are removed even if a run throws.
 class TrajectoryParts {
  public:
-  TrajectoryParts(std::string path, bool rotation) : path_(std::move(path)), joined_(path_ + ".joining") {
+  TrajectoryParts(std::string path, bool rotation) : path_(std::move(path)) {
     try {
-      TrajectoryCsv(joined_, rotation).close();  // the header alone, from the one writer of the format
+      joined_ = create_temp_beside(temp_base(path_), "the trajectory");
+      TrajectoryCsv(joined_, rotation, joined_ + ".header").close();  // the header alone, from the one writer
     } catch (const InputError&) {
+      remove_all();
       throw InputError(fmt::format("--trajectory {}: cannot open for writing", path_));
     }
   }
-  ~TrajectoryParts() {
-    std::error_code ec;
-    for (int k = 0; k < count_; ++k) std::filesystem::remove(part(k), ec), std::filesystem::remove(part(k) + ".tmp", ec);
-    std::filesystem::remove(joined_, ec);
-  }
+  ~TrajectoryParts() { remove_all(); }
   TrajectoryParts(const TrajectoryParts&) = delete;
   TrajectoryParts& operator=(const TrajectoryParts&) = delete;
 
-  std::string next_part() { return part(count_++); }
+  // A new, empty part for the next run; its child renames its rows over it when its run is done.
+  std::string next_part() {
+    parts_.push_back(create_temp_beside(temp_base(path_) + ".part", "the trajectory"));
+    return parts_.back();
+  }
 
-  // Appends the rows of the last part, if its run wrote one.
+  // Appends the rows of the last part, if its run wrote them (a run that crashed left it empty).
   void take_last() {
-    std::ifstream in(part(count_ - 1), std::ios::binary);
+    std::ifstream in(parts_.back(), std::ios::binary);
     if (!in) return;
     std::string header;
     std::getline(in, header);
@@ -62,15 +66,23 @@ class TrajectoryParts {
     if (in.peek() == std::ifstream::traits_type::eof()) return;
     std::ofstream out(joined_, std::ios::binary | std::ios::app);
     out << in.rdbuf();
+    out.flush();
     if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
   }
 
-  void finish() { move_file_into_place(joined_, path_, "the trajectory"); }
+  void finish() {
+    move_file_into_place(joined_, path_, "the trajectory");
+    joined_.clear();
+  }
 
  private:
-  std::string part(int k) const { return fmt::format("{}.part{}", path_, k); }
+  void remove_all() {
+    std::error_code ec;
+    for (const std::string& p : parts_) std::filesystem::remove(p, ec), std::filesystem::remove(p + ".tmp", ec);
+    if (!joined_.empty()) std::filesystem::remove(joined_, ec), std::filesystem::remove(joined_ + ".header", ec);
+  }
   std::string path_, joined_;
-  int count_ = 0;
+  std::vector<std::string> parts_;
 };
 
 std::string& command_line_store() {
@@ -130,7 +142,7 @@ void print_table(const std::vector<Result>& results) {
   fmt::print(" {:>10} {:>9} {:>12} {:>10}\n", "pos.err", "horizon", "ns/ball-step", "with pipe");
   for (const auto& r : results) {
     const auto& e = r.reference;
-    fmt::print("{:<18} {:<11} {:>6} {:>8}", run_label(r), r.status, r.n, r.steps_done);
+    fmt::print("{:<18} {:<11} {:>6} {:>8}", printable(run_label(r)), r.status, r.n, r.steps_done);
     for (const MetricDef* m : shown) fmt::print(" {:>10}", metric_text(m->get(r)));
     fmt::print(" {:>10} {:>9} {:>12.1f} {:>10}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
                !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step,
@@ -141,7 +153,7 @@ void print_table(const std::vector<Result>& results) {
     fmt::print("ns/ball-step: the engine's own step time; an engine in another process times its step calls itself, "
                "and `with pipe` is the harness's time of the whole request\n");
   for (const auto& r : results) {
-    if (!r.error.empty()) fmt::print("{}: {}\n", run_label(r), r.error);
+    if (!r.error.empty()) fmt::print("{}: {}\n", printable(run_label(r)), printable(r.error));
     for (const std::string& note : r.skipped)
       if (note.rfind(kStrideNote, 0) == 0) fmt::print("{}: {}\n", run_label(r), note);
     if (r.reference.reference_failed_step >= 0)
@@ -169,7 +181,7 @@ void print_ensemble(const std::vector<Result>& results, int seeds, const std::st
     fmt::print("\n");
   }
   for (const auto& r : results)
-    if (!r.error.empty()) fmt::print("{} (seed offset {}): {}\n", run_label(r), r.seed_offset, r.error);
+    if (!r.error.empty()) fmt::print("{} (seed offset {}): {}\n", printable(run_label(r)), r.seed_offset, printable(r.error));
 }
 
 namespace {
@@ -219,7 +231,8 @@ void check_profile(const std::vector<const EngineEntry*>& engines, const std::st
 
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
                             const std::string& profile, const RunOptions& base, bool quiet,
-                            const Isolation& isolation, const std::string& trajectory_path) {
+                            const Isolation& isolation, const std::string& trajectory_path,
+                            std::string* trajectory_error) {
   std::optional<TrajectoryCsv> trajectory;  // in this process
   std::optional<TrajectoryParts> parts;     // from child processes
   if (!trajectory_path.empty()) {
@@ -227,6 +240,19 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
     if (isolation.enabled) parts.emplace(trajectory_path, rotation);
     else trajectory.emplace(trajectory_path, rotation);
   }
+  // A trajectory that cannot be written (a full disk) loses the trajectory, not the runs: the
+  // error is handed back for the command to report after its table and JSON.
+  std::string lost;
+  const auto keep_going = [&](const std::function<void()>& write) {
+    if (!lost.empty()) return;
+    try {
+      write();
+    } catch (const InputError& e) {
+      if (!trajectory_error) throw;
+      lost = e.what();
+      parts.reset();
+    }
+  };
   std::vector<Result> results;
   bool stopped = false;
   for (const EngineEntry* e : engines) {
@@ -243,18 +269,38 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
       Progress progress(fmt::format("{} ({}) on {}", e->info.name, p, scene.name));
       if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
       options.overrides = base.overrides.value(e->info.name, nlohmann::json::object());
+      // The settings were checked before the first run; an engine that refuses them only now (an
+      // engine process answering its scene with a settings error) fails its own row, not the rows
+      // already run.
+      const auto settings_refused = [&](const InputError& err) {
+        Result r = result_header(scene, *e, options);
+        r.status = "failed";
+        r.error = fmt::format("the engine refused its settings: {}", err.what());
+        return r;
+      };
       if (!isolation.enabled) {
-        if (trajectory) options.trajectory = &*trajectory;
-        results.push_back(run_engine(scene, *e, options));
+        if (trajectory && lost.empty()) options.trajectory = &*trajectory;
+        try {
+          results.push_back(run_engine(scene, *e, options));
+        } catch (const InputError& err) {
+          results.push_back(settings_refused(err));
+        }
         continue;
       }
-      IsolationOptions child{isolation.timeout_s, parts ? parts->next_part() : ""};
-      results.push_back(run_engine_isolated(scene, *e, options, child));
-      if (parts) parts->take_last();
+      std::string part;
+      if (parts) keep_going([&] { part = parts->next_part(); });
+      IsolationOptions child{isolation.timeout_s, part};
+      try {
+        results.push_back(run_engine_isolated(scene, *e, options, child));
+      } catch (const InputError& err) {
+        results.push_back(settings_refused(err));
+      }
+      if (parts && !part.empty()) keep_going([&] { parts->take_last(); });
     }
   }
-  if (trajectory) trajectory->close();
-  if (parts) parts->finish();
+  if (trajectory) keep_going([&] { trajectory->close(); });
+  if (parts) keep_going([&] { parts->finish(); });
+  if (trajectory_error) *trajectory_error = lost;
   return results;
 }
 

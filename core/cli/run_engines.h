@@ -38,11 +38,14 @@ struct Isolation {
 // Every engine x profile on `scene`; `base.overrides` holds settings per engine name. If
 // `trajectory_path` is not empty, every run's trajectory goes to that CSV (one header line, runs
 // in order; a run that crashed or timed out has no rows). `base.trajectory` must be null.
-// Interrupted (SIGINT, SIGTERM), it ends with the run in progress marked "interrupted", or, if the
-// signal came between runs, a row marked so for the run that was next.
+// Interrupted (SIGINT, SIGTERM, SIGHUP), it ends with the run in progress marked "interrupted", or, if
+// the signal came between runs, a row marked so for the run that was next. A run whose engine
+// refuses its settings (InputError) is a failed row. With `trajectory_error`, a trajectory that
+// cannot be written is not thrown: the runs go on and it gets the one-line reason ("" if none).
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
                             const std::string& profile, const RunOptions& base, bool quiet,
-                            const Isolation& isolation = {}, const std::string& trajectory_path = "");
+                            const Isolation& isolation = {}, const std::string& trajectory_path = "",
+                            std::string* trajectory_error = nullptr);
 
 // Placements 1 .. seeds - 1 of a scene (`place(k)` draws placement k) appended to `results`, which
 // holds the runs of placement 0 (`first`). An interrupt ends them with a row marked "interrupted",

@@ -14,6 +14,8 @@
 namespace ballbench::cli {
 namespace {
 
+constexpr double kMaxSweepSteps = 1e9;  // as a scene's own cap
+
 // The profile's effective settings, to skip knob values it already has; empty if the engine cannot
 // be built here (the points then all run, and their runs report why).
 nlohmann::json profile_settings(const Scene& scene, const EngineEntry& e, const std::string& profile) {
@@ -31,6 +33,9 @@ std::vector<SweepPlanItem> plan_sweep(const Scene& scene, const std::vector<cons
   if (!(o.horizon > 0)) throw InputError("--horizon: must be positive");
   std::vector<SweepPlanItem> plan;
   auto steps_for = [&](double dt) {
+    if (!(o.horizon / dt <= kMaxSweepSteps))
+      throw InputError(fmt::format("--horizon {} s at a step of {} s (dt factors {}) is more than the cap of 1e9 steps",
+                                   o.horizon, dt, fmt::join(o.dt_factors, ",")));
     const long steps = std::lround(o.horizon / dt);
     if (steps < 1 || std::abs(steps * dt - o.horizon) > 1e-9 * o.horizon)
       throw InputError(fmt::format("--horizon {} s is not a whole number of steps of {} s (dt factors {})", o.horizon,
@@ -89,8 +94,16 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
                         : fmt::format("sweep {} shard {}/{} ({} of {} points x {} runs)", scene.name, o.shard.index,
                                       o.shard.count, mine.size(), plan.size(), o.repeats + 1));
   // Runs in this process or a child, as asked.
+  // A point whose settings the engine refuses (a value of its own sweep_knobs, say) fails that point.
   auto run = [&](const Scene& s, const EngineEntry& e, const RunOptions& r) {
-    return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
+    try {
+      return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
+    } catch (const InputError& err) {
+      Result failed = result_header(s, e, r);
+      failed.status = "failed";
+      failed.error = fmt::format("the engine refused this point's settings {}: {}", r.overrides.dump(), err.what());
+      return failed;
+    }
   };
   for (size_t m = 0; m < mine.size(); ++m) {
     const size_t k = mine[m];
@@ -126,6 +139,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
     options.reference = nullptr;
     for (int rep = 0; rep < o.repeats && r.status == "ok"; ++rep) {
       const Result t = run(s, *item.engine, options);
+      if (t.status == "interrupted") p.status = t.status, p.error = t.error;  // no timing: not ok
       if (t.status != "ok") break;
       p.ns_per_ball_step.push_back(t.ns_per_ball_step);
       p.engine_s.push_back(t.engine_process_s.value_or(t.engine_s));  // the engine's own time, as ns_per_ball_step
@@ -154,8 +168,8 @@ void print_pareto(const SweepResult& s) {
   }
   for (const SweepPoint& p : s.points)
     if (p.status != "ok")
-      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, json_text(p.value), p.status,
-                 p.error.empty() ? "" : ": " + p.error);
+      fmt::print("{}/{} {} = {}: {}{}\n", printable(p.engine), printable(p.profile), p.knob, json_text(p.value), p.status,
+                 p.error.empty() ? "" : ": " + printable(p.error));
 }
 
 }  // namespace ballbench::cli

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -35,5 +36,30 @@ inline const CLI::Validator kPositiveCount(
       return {};
     },
     "COUNT", "positive count");
+
+// A step count: a whole number from 1 to the cap of 1e9 steps (the scenes' own cap, README).
+inline const CLI::Validator kStepCount(
+    [](std::string& text) -> std::string {
+      char* end = nullptr;
+      errno = 0;
+      const long long v = std::strtoll(text.c_str(), &end, 10);
+      if (end == text.c_str() || *end != '\0') return "expected a whole number, got '" + text + "'";
+      if (v < 1) return "must be >= 1, got '" + text + "'";
+      if (errno == ERANGE || v > 1000000000LL) return "must be at most 1e9 steps, got '" + text + "'";
+      return {};
+    },
+    "STEPS", "step count");
+
+// A file to write: not empty, and not a folder (an existing one, or a path ending in '/'), which
+// would pass every check before the run and fail only when the results are written after it.
+inline const CLI::Validator kOutputFile(
+    [](std::string& text) -> std::string {
+      if (text.empty()) return "expected a file to write, got an empty path";
+      std::error_code ec;
+      if (text.back() == '/' || std::filesystem::is_directory(text, ec))
+        return "'" + text + "' is a folder: name a file to write";
+      return {};
+    },
+    "FILE", "file to write");
 
 }  // namespace ballbench::cli

@@ -16,8 +16,15 @@ ReferenceErrorTracker::ReferenceErrorTracker(const Scene& scene)
 void ReferenceErrorTracker::observe(const State& s, const State& ref) {
   const double e_ref = total_energy(ref, scene_, reference_height_);
   if (first_) e0_ = e_ref, first_ = false;
-  const double pos_rms = std::sqrt((s.pos - ref.pos).rowwise().squaredNorm().mean());
-  const double vel_rms = std::sqrt((s.vel - ref.vel).rowwise().squaredNorm().mean());
+  // Squares of differences beyond ~1e154 overflow: such a state (finite, or the run would have
+  // stopped) is measured with Eigen's overflow-safe norm instead, so the error stays a number.
+  const auto rms = [](const auto& d) {
+    const double plain = std::sqrt(d.rowwise().squaredNorm().mean());
+    if (std::isfinite(plain) || !d.allFinite() || d.rows() == 0) return plain;
+    return d.stableNorm() / std::sqrt(static_cast<double>(d.rows()));
+  };
+  const double pos_rms = rms(s.pos - ref.pos);
+  const double vel_rms = rms(s.vel - ref.vel);
   m_.pos_rms_final = pos_rms, m_.vel_rms_final = vel_rms;
   m_.pos_rms_max = std::max(m_.pos_rms_max, pos_rms);
   m_.vel_rms_max = std::max(m_.vel_rms_max, vel_rms);

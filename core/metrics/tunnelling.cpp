@@ -26,14 +26,32 @@ Eigen::Vector2d wall_crossing(const Eigen::Vector2d& a, const Eigen::Vector2d& b
   return a + s * (b - a);
 }
 
-double closest_approach_fraction(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
-  const Eigen::Vector2d w = d1 - d0;
+namespace {
+
+// clamp(-d.w / |w|^2, 0, 1): how far along w from d the line comes closest to 0, without squaring
+// |w| where that overflows (a finite step beyond ~1e154).
+double fraction_from(const Eigen::Vector2d& d, const Eigen::Vector2d& w) {
   const double ww = w.squaredNorm();
-  return ww > 0 ? std::clamp(-d0.dot(w) / ww, 0.0, 1.0) : 0.0;
+  if (std::isinf(ww) && w.allFinite()) {
+    const double len = std::hypot(w.x(), w.y());
+    return std::clamp(-d.dot(w / len) / len, 0.0, 1.0);
+  }
+  return ww > 0 ? std::clamp(-d.dot(w) / ww, 0.0, 1.0) : 0.0;
+}
+
+}  // namespace
+
+double closest_approach_fraction(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
+  return fraction_from(d0, d1 - d0);
 }
 
 double closest_approach(const Eigen::Vector2d& d0, const Eigen::Vector2d& d1) {
-  return (d0 + closest_approach_fraction(d0, d1) * (d1 - d0)).norm();
+  const Eigen::Vector2d w = d1 - d0;
+  const double f = fraction_from(d0, w);
+  if (f <= 0.5) return (d0 + f * w).norm();
+  // Nearer the end: measured back from it, so that a far start (a ball sent 1e150 m away and back)
+  // whose rounding swallowed the pair's offset does not move the closest point to the end.
+  return (d1 - fraction_from(d1, -w) * w).norm();
 }
 
 bool passes_through(const State& prev, const State& cur, int i, int j, double rs, double tolerance) {
@@ -265,10 +283,18 @@ inline bool TunnellingCheck::may_pass(int i, int j, double rs) const {
   const double *p = rec + 4 * i, *q = rec + 4 * j;
   const double wx = p[2] - q[2], wy = p[3] - q[3], ww = wx * wx + wy * wy, rs2 = rs * rs;
   if (ww < chord2_ * rs2) return false;
-  const double d0x = p[0] - q[0], d0y = p[1] - q[1];
-  const double t = ww > 0 ? std::clamp(-(d0x * wx + d0y * wy) / ww, 0.0, 1.0) : 0.0;
-  const double qx = d0x + t * wx, qy = d0y + t * wy;
-  return qx * qx + qy * qy < close2_ * rs2;
+  if (std::isfinite(ww)) {
+    const double d0x = p[0] - q[0], d0y = p[1] - q[1];
+    const double t = ww > 0 ? std::clamp(-(d0x * wx + d0y * wy) / ww, 0.0, 1.0) : 0.0;
+    const double qx = d0x + t * wx, qy = d0y + t * wy;
+    if (qx * qx + qy * qy < close2_ * rs2) return true;
+    if (t <= 0.5) return false;
+  }
+  // Nearer the end of a long step, or one too long to square: measured from both ends, as
+  // closest_approach does (a far start's rounding must not hide a pass on the way back).
+  const Eigen::Vector2d d0(p[0] - q[0], p[1] - q[1]);
+  const Eigen::Vector2d d1((p[0] + p[2]) - (q[0] + q[2]), (p[1] + p[3]) - (q[1] + q[3]));
+  return closest_approach(d0, d1) < std::sqrt(close2_) * rs;
 }
 
 inline bool TunnellingCheck::judge(const State& prev, const State& cur, int i, int j, double rs) const {
@@ -325,13 +351,15 @@ int TunnellingCheck::count_escaped(const State& prev, const State& cur) {
   double dmax = 0;
   for (int e : escaped_) {
     const double* r = rec + 4 * e;
-    const double step = std::sqrt(r[2] * r[2] + r[3] * r[3]);
+    const double step = std::hypot(r[2], r[3]);  // finite for any finite step
     dmax = std::max(dmax, step);
     const double mx = r[0] + 0.5 * r[2], my = r[1] + 0.5 * r[3], re = radius_[e], slack = a_ + 0.5 * step;
     auto against = [&](int begin, int end) {
       for (int b = begin; b < end; ++b) {
-        const double dx = mx - sx[b], dy = my - sy[b], near = reach_ * (re + sr[b]) + slack;
-        if (dx * dx + dy * dy >= near * near) continue;  // the reference is too far from e's path
+        // The bound with room for rounding: at a step of 1e150 m the radii vanish in its sum.
+        const double dx = mx - sx[b], dy = my - sy[b], near = (reach_ * (re + sr[b]) + slack) * (1 + 1e-9);
+        const double d2 = dx * dx + dy * dy, near2 = near * near;
+        if (std::isfinite(near2) ? d2 >= near2 : std::hypot(dx, dy) >= near) continue;  // too far from e's path
         const int j = ball[b];
         if (!is_escaped_[j] && judge(prev, cur, e, j, re + radius_[j])) pair_hits_.push_back({e, j}), ++count;
       }

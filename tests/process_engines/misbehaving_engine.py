@@ -2,9 +2,15 @@
 """A process engine that misbehaves on purpose (tests/test_process_engine.cpp): balls stay put,
 and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
-Test-only: never in an engines file."""
+Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-escape" (a name
+with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
+stdout, its pid written to argv[2]), "float-t" and "float-t-undeclared" (the time summed in
+float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
+"unsupported" (refuses every scene as unsupported), "minimal" and "minimal-1" (a handshake of the
+required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
 import array
 import json
+import struct
 import sys
 import time
 
@@ -17,29 +23,49 @@ def send(reply, block=b""):
     out.flush()
 
 
+if mode == "helper":  # starts a helper that keeps stdout open, and says its pid in argv[2]
+    import subprocess
+    helper = subprocess.Popen(["sleep", "600"])
+    with open(sys.argv[2], "w") as f:
+        f.write(str(helper.pid))
 if mode == "no-hello":
     sys.stderr.write("misbehaving engine: refusing to start\n")
     sys.exit(4)
-n, steps, balls, rotation = 0, 0, None, False
+n, steps, balls, rotation, t = 0, 0, None, False, 0.0
 for line in sys.stdin.buffer:
     msg = json.loads(line)
     if msg["op"] == "hello":
         if mode == "unavailable":
             send({"ok": False, "kind": "unavailable", "error": "the frobnicator library is not installed"})
             continue
-        send({"ok": True, "protocol": 2 if mode == "protocol-2" else 1, "name": "misbehaving", "version": "0",
-              "capabilities": {}, "profiles": ["default"], "settings_keys": ["level"]})
+        name = {"name-escape": "mis\x1b[31mbehaving", "name-all": "all"}.get(mode, "misbehaving")
+        hello = {"ok": True, "protocol": 3 if mode == "protocol-3" else 2, "name": name, "version": "0",
+                 "capabilities": {"friction": True}, "profiles": ["default"], "settings_keys": ["level"]}
+        if mode == "float-t":
+            hello["precision"] = "float"
+        if mode == "profiles-twice":
+            hello["profiles"] = ["default", "default"]
+        if mode in ("minimal", "minimal-1"):
+            hello = {"ok": True, "protocol": 1 if mode == "minimal-1" else 2, "name": name, "version": "0",
+                     "capabilities": {}, "profiles": ["default"]}
+        send(hello)
     elif msg["op"] == "scene":
-        if msg["settings"].get("level", 0) > 3:
+        if msg["settings"].get("level", 0) > 3 or mode == "settings-at-scene":
             send({"ok": False, "kind": "settings", "error": "settings.misbehaving.level: must be at most 3"})
             continue
+        if mode == "unsupported":
+            send({"ok": False, "kind": "unsupported", "error": "misbehaving cannot run walls today"})
+            continue
         balls = msg["scene"]["balls"]
-        n = balls["n"]
+        n, t, dt = balls["n"], 0.0, msg["scene"]["dt"]
         rotation = msg["scene"].get("rotation", False)
         send({"ok": True, "settings": {"level": msg["settings"].get("level", 0), "mode": mode}})
     else:
         if msg["op"] == "step":
             steps += 1
+            t += msg["dt"]
+            if mode.startswith("float-t"):  # the time kept in float32, as a float engine keeps it
+                t = struct.unpack("f", struct.pack("f", t))[0]
         if steps == 3:
             if mode == "crash":
                 sys.stderr.write("Traceback: the misbehaving engine fell over\n")
@@ -51,15 +77,17 @@ for line in sys.stdin.buffer:
                 out.write(b"this is not json\n")
                 out.flush()
                 continue
-            if mode == "short-block":
-                send({"ok": True, "step_s": 0, "state": {"n": n, "t": 0, "fields": ["id", "x", "y", "vx", "vy"]}}, b"\0" * 8)
+            if mode in ("short-block", "short-block-alive"):
+                send({"ok": True, "step_s": 0, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, b"\0" * 8)
+                if mode == "short-block-alive":
+                    time.sleep(3600)
                 out.close()
                 sys.exit(0)
             if mode == "bad-ids":
                 block = array.array("d", [0.0] * n)  # every ball called 0
                 for c in ("x", "y", "vx", "vy"):
                     block.extend(balls[c])
-                send({"ok": True, "step_s": 0, "state": {"n": n, "t": 0, "fields": ["id", "x", "y", "vx", "vy"]}}, block.tobytes())
+                send({"ok": True, "step_s": 0, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, block.tobytes())
                 continue
             if mode == "error":
                 send({"ok": False, "error": "the solver lost track of ball 7"})
@@ -67,6 +95,10 @@ for line in sys.stdin.buffer:
         block = array.array("d", range(n))
         for c in ("x", "y"):
             block.extend(balls[c])
+        if mode in ("far", "far-1e150") and steps == 3:
+            block[n] = 1e200 if mode == "far" else 1e150  # ball 0's x, for one step (1e200: its square overflows)
+        if mode == "wrong-t" and steps == 3:
+            t = 270.0
         block.extend([0.0] * (2 * n))  # nothing moves
         fields = ["id", "x", "y", "vx", "vy"]
         if rotation:
@@ -75,7 +107,12 @@ for line in sys.stdin.buffer:
                 block.extend(balls["w"])
             fields.append("angle")
             block.extend([0.0] * n)
-        reply = {"ok": True, "state": {"n": n, "t": 0.0, "fields": fields}}
+        reply = {"ok": True, "state": {"n": n, "t": t, "fields": fields}}
         if msg["op"] == "step":
-            reply["step_s"] = 0.0
+            reply["step_s"] = 1e308 if mode == "huge-step-s" and steps == 3 else 0.0
+        if mode == "twice" and steps == 3:  # the step answered twice, in one write
+            one = json.dumps(reply).encode() + b"\n" + block.tobytes()
+            out.write(one + one)
+            out.flush()
+            continue
         send(reply, block.tobytes())
