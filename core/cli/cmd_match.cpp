@@ -38,14 +38,9 @@ void match(MatchArgs& a) {
   a.options.reference = reference_engine();
   a.options.converged_reference = converged_reference_engine();
   if (!a.shard.empty()) a.options.shard = parse_shard(a.shard);
-  if (a.json.empty())
-    a.json = a.options.shard.all() ? fmt::format("match-{}.json", scene.name)
-                                   : fmt::format("match-{}.shard{}of{}.json", scene.name, a.options.shard.index,
-                                                 a.options.shard.count);
+  if (a.json.empty()) a.json = shard_file_name("match-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
-  if (a.json == a.csv) throw InputError(fmt::format("--json and --csv: both name {}", a.json));
-  check_writable(a.json, "the match results", true);
-  check_writable(a.csv, "the match CSV", true);
+  check_json_and_csv(scene, a.json, a.csv, "the match's");
   install_interrupt_handlers();
   const MatchResult m = run_match(scene, engines, a.options, run_context());
   write_match_files(m, a.json, a.csv);

@@ -37,19 +37,9 @@ void sweep(SweepArgs& a) {
   a.options.knobs = !a.no_knobs;
   a.options.reference = reference_engine();
   if (!a.shard.empty()) a.options.shard = parse_shard(a.shard);
-  if (a.json.empty())
-    a.json = a.options.shard.all() ? fmt::format("sweep-{}.json", scene.name)
-                                   : fmt::format("sweep-{}.shard{}of{}.json", scene.name, a.options.shard.index,
-                                                 a.options.shard.count);
+  if (a.json.empty()) a.json = shard_file_name("sweep-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
-  // Checked before the sweep (it takes minutes), as `run` checks its outputs.
-  std::vector<PathUse> uses = noted_input_files();
-  if (std::filesystem::exists(scene.source)) uses.push_back({"--scene", scene.source, false});
-  uses.push_back({"--json", a.json, true});
-  uses.push_back({"--csv", a.csv, true});
-  check_path_clashes(uses);
-  check_writable(a.json, "the sweep's results", true);
-  check_writable(a.csv, "the sweep's CSV", true);
+  check_json_and_csv(scene, a.json, a.csv, "the sweep's");
   install_interrupt_handlers();
   const SweepResult s = run_sweep(scene, engines, a.options, run_context());
   write_sweep_files(s, a.json, a.csv);

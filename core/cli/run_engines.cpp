@@ -201,6 +201,16 @@ std::vector<std::string> profile_names(const std::string& list) {
 
 }  // namespace
 
+void check_json_and_csv(const Scene& scene, const std::string& json, const std::string& csv, const std::string& what) {
+  std::vector<PathUse> uses = noted_input_files();
+  if (std::filesystem::exists(scene.source)) uses.push_back({"--scene", scene.source, false});
+  uses.push_back({"--json", json, true});
+  uses.push_back({"--csv", csv, true});
+  check_path_clashes(uses);
+  check_writable(json, what + " results", true);
+  check_writable(csv, what + " CSV", true);
+}
+
 std::vector<std::string> profiles_for(const EngineEntry& e, const std::string& profile) {
   const auto& mine = e.info.profiles;
   std::vector<std::string> out;

@@ -56,6 +56,11 @@ void run_further_placements(std::vector<Result>& results, const Scene& first, in
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation);
 
+// A long command's JSON and CSV outputs, checked before it runs (it takes minutes): writable, and
+// neither the scene, an input, nor each other (data_file.h's check_path_clashes). `what` names
+// them in messages: "the sweep's".
+void check_json_and_csv(const Scene& scene, const std::string& json, const std::string& csv, const std::string& what);
+
 // The command line as typed (main stores it), for the record of what produced a result.
 void set_command_line(int argc, char** argv);
 

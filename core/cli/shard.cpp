@@ -19,4 +19,8 @@ Shard parse_shard(const std::string& text, const std::string& option) {
   return s;
 }
 
+std::string shard_file_name(const std::string& stem, const Shard& shard) {
+  return shard.all() ? stem + ".json" : fmt::format("{}.shard{}of{}.json", stem, shard.index, shard.count);
+}
+
 }  // namespace ballbench::cli

@@ -12,6 +12,9 @@ struct Shard {
   bool takes(size_t item) const { return static_cast<int>(item % static_cast<size_t>(count)) == index - 1; }
 };
 
+// A command's default output: "STEM.json", or "STEM.shardIofN.json" for a shard.
+std::string shard_file_name(const std::string& stem, const Shard& shard);
+
 // "I/N" with whole numbers 1 <= I <= N; throws InputError naming `option` otherwise.
 Shard parse_shard(const std::string& text, const std::string& option = "--shard");
 
