@@ -24,6 +24,11 @@ struct MergeArgs {
   std::string out, csv;
 };
 
+bool is_match_file(const std::string& path) {
+  const nlohmann::json j = parse_json_file(path, "a shard");
+  return j.is_object() && j.value("kind", "") == "match";
+}
+
 void merge_matches(const MergeArgs& a) {
   std::vector<MatchResult> shards;
   for (const auto& path : a.shards) shards.push_back(read_match_file(path));
@@ -137,7 +142,7 @@ void merge(const MergeArgs& a) {
   if (folders != 0 && folders != a.shards.size())
     throw InputError("merge: give either sweep shards (JSON files) or report shards (folders), not both");
   if (folders) merge_reports(a);
-  else if (parse_json_file(a.shards.front(), "a shard").value("kind", "") == "match") merge_matches(a);
+  else if (is_match_file(a.shards.front())) merge_matches(a);
   else merge_sweeps(a);
 }
 
