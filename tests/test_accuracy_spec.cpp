@@ -220,7 +220,7 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   EXPECT_TRUE(found.met);
   EXPECT_EQ(found.halvings, 0);
   EXPECT_EQ(home.cost_repeats.size(), 2u);
-  EXPECT_NE(home.command.find("--profile default --dt 0.01"), std::string::npos) << home.command;
+  EXPECT_NE(home.command.find("--profile default --dt 0.01 --no-reference"), std::string::npos) << home.command;
   Scene again = scene;
   again.dt = found.dt;
   RunOptions ro;

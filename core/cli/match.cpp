@@ -14,6 +14,7 @@
 #include "isolated_run.h"
 #include "json_value.h"
 #include "progress.h"
+#include "scene_loader.h"
 #include "spec_verdict.h"
 #include "sweep_result.h"
 
@@ -51,9 +52,15 @@ double cost_per_scene_step(double engine_s, const Scene& scene) {
   return engine_s * 1e9 / (std::max(1, scene.n()) * double(std::max(1L, scene.steps())));
 }
 
-std::string run_command(const Scene& scene, const MatchTry& t) {
-  std::string cmd = fmt::format("ballbench run --scene {} --engine {} --profile {} --dt {:.17g}",
-                                scene.source.empty() ? scene.name : scene.source, t.engine, t.profile, t.dt);
+std::string run_command(const Scene& scene, const MatchTry& t, bool reference) {
+  // A built-in scene by its name, any other by its file; the step in the fewest digits that read
+  // back as it (fmt's shortest round trip).
+  const bool builtin = scene.source == scenario_dir() + "/" + scene.name + ".toml";
+  std::string cmd = fmt::format("ballbench run --scene {} --engine {} --profile {} --dt {}",
+                                builtin || scene.source.empty() ? scene.name : scene.source, t.engine, t.profile, t.dt);
+  if (!reference) cmd += " --no-reference";
+  // Judged at the scene's step times, as the search judged it.
+  if (t.halvings > 0) cmd += fmt::format(" --sample-every {}", 1 << t.halvings);
   if (!t.knob.empty()) cmd += fmt::format(" --set {}.{}={}", t.engine, t.knob, json_text(t.value));
   return cmd;
 }
@@ -125,7 +132,7 @@ class Search {
       oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
     const int shown = oc.reached ? oc.found : oc.best;
-    if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown]);
+    if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown], o_.spec.needs_reference());
     return oc;
   }
 
