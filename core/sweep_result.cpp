@@ -10,6 +10,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "shard_roll.h"
 #include "json_value.h"
 
 namespace ballbench {
@@ -170,7 +171,7 @@ SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std
   const SweepResult& first = shards.front();
   if (first.plan.is_null())
     throw InputError(fmt::format("merge: {} has no plan (written by a ballbench without --shard)", names.front()));
-  std::vector<std::string> seen(first.shard_count + 1);
+  ShardRoll roll(first.shard_count, names);
   SweepResult out = first;
   out.points.clear();
   out.shard_index = out.shard_count = 1;
@@ -180,17 +181,11 @@ SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std
     if (s.plan != first.plan || s.shard_count != first.shard_count)
       throw InputError(fmt::format("merge: {} is a shard of another sweep than {} (its plan or shard count differs)",
                                    names[k], names.front()));
-    if (!seen[s.shard_index].empty())
-      throw InputError(fmt::format("merge: {} and {} are both shard {}/{}", seen[s.shard_index], names[k], s.shard_index,
-                                   s.shard_count));
-    if (!s.interrupted.empty())
-      throw InputError(fmt::format("merge: {} was interrupted ({}); run its shard again", names[k], s.interrupted));
-    seen[s.shard_index] = names[k];
+    roll.take(k, s.shard_index, s.interrupted);
     out.context["shards"].push_back(s.context);
     out.points.insert(out.points.end(), s.points.begin(), s.points.end());
   }
-  for (int i = 1; i <= first.shard_count; ++i)
-    if (seen[i].empty()) throw InputError(fmt::format("merge: shard {}/{} is missing", i, first.shard_count));
+  roll.check_complete();
   std::stable_sort(out.points.begin(), out.points.end(),
                    [](const SweepPoint& a, const SweepPoint& b) { return a.plan_index < b.plan_index; });
   mark_pareto(out.points);

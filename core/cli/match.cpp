@@ -15,6 +15,7 @@
 #include "json_value.h"
 #include "progress.h"
 #include "scene_loader.h"
+#include "shard_roll.h"
 #include "spec_verdict.h"
 #include "sweep_result.h"
 
@@ -401,7 +402,7 @@ MatchResult read_match_file(const std::string& path) {
 MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std::vector<std::string>& names) {
   if (shards.empty()) throw InputError("merge: no shards given");
   const MatchResult& first = shards.front();
-  std::vector<std::string> seen(first.shard_count + 1);
+  ShardRoll roll(first.shard_count, names);
   MatchResult out = first;
   out.tries.clear(), out.outcomes.clear();
   out.shard_index = out.shard_count = 1;
@@ -413,14 +414,7 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
       throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec or shard count "
                                    "differs)",
                                    names[k], names.front()));
-    if (s.shard_index < 1 || s.shard_index > s.shard_count)
-      throw InputError(fmt::format("merge: {}: shard {}/{} is not a shard", names[k], s.shard_index, s.shard_count));
-    if (!seen[s.shard_index].empty())
-      throw InputError(fmt::format("merge: {} and {} are both shard {}/{}", seen[s.shard_index], names[k], s.shard_index,
-                                   s.shard_count));
-    if (!s.interrupted.empty())
-      throw InputError(fmt::format("merge: {} was interrupted ({}); run its shard again", names[k], s.interrupted));
-    seen[s.shard_index] = names[k];
+    roll.take(k, s.shard_index, s.interrupted);
     out.context["shards"].push_back(s.context);
     const int offset = int(out.tries.size());
     out.tries.insert(out.tries.end(), s.tries.begin(), s.tries.end());
@@ -430,8 +424,7 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
       out.outcomes.push_back(std::move(o));
     }
   }
-  for (int i = 1; i <= first.shard_count; ++i)
-    if (seen[i].empty()) throw InputError(fmt::format("merge: shard {}/{} is missing", i, first.shard_count));
+  roll.check_complete();
   return out;
 }
 
