@@ -76,7 +76,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     throw InputError(fmt::format("{}: unknown profile '{}' (known: {})", entry.info.name, r.profile, fmt::join(profiles, ", ")));
 
   if (std::string why = unsupported_reason(entry.info, scene); !why.empty()) {
-    r.status = "unsupported";
+    r.status = RunStatus::unsupported;
     r.error = why;
     return r;
   }
@@ -87,12 +87,12 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   } catch (const InputError&) {
     throw;
   } catch (const SceneUnsupported& e) {  // a limit only the engine can judge: reported as a capability refusal
-    r.status = "unsupported";
+    r.status = RunStatus::unsupported;
     r.error = e.what();
     r.settings = e.settings();
     return r;
   } catch (const std::exception& e) {
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = fmt::format("building the world failed: {}", e.what());
     return r;
   }
@@ -187,12 +187,12 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   try {
     engine->read(state);
   } catch (const std::exception& e) {
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = fmt::format("reading the initial state threw: {}", e.what());
     return r;
   }
   if (spins_missing(state)) {
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = "the engine reads back no angular velocities and angles for a scene that rotates";
     return r;
   }
@@ -216,7 +216,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   long sampled = 0;  // the last step the sampled metrics saw
   for (long k = 1; k <= r.steps; ++k) {
     if (interrupt_signal()) {  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
-      r.status = "interrupted";
+      r.status = RunStatus::interrupted;
       r.error = fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done);
       break;
     }
@@ -225,7 +225,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       engine->step(scene.dt);
     } catch (const std::exception& e) {
       engine_s += seconds_since(t0);
-      r.status = "failed";
+      r.status = RunStatus::failed;
       r.error = fmt::format("step {} threw: {}", k, e.what());
       break;
     }
@@ -240,25 +240,25 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
     try {
       engine->read(next);
     } catch (const std::exception& e) {
-      r.status = "failed";
+      r.status = RunStatus::failed;
       r.error = fmt::format("step {}: reading the state threw: {}", k, e.what());
       break;
     }
     if (spins_missing(next)) {
-      r.status = "failed";
+      r.status = RunStatus::failed;
       r.error = fmt::format("step {}: the engine read back no angular velocities and angles", k);
       break;
     }
     r.out_of_plane_max = std::max(r.out_of_plane_max, engine->out_of_plane());
     if (!metrics.observe_motion(state, next)) {  // tunnelling, every step, and finiteness in one sweep
-      r.status = "diverged", r.diverged = true, r.diverged_step = k;
+      r.status = RunStatus::diverged, r.diverged_step = k;
       r.error = fmt::format("non-finite position or velocity at step {}", k);
       break;
     }
     // A ball out of the box: no figure of the run means anything from here; like a non-finite
     // state, the run ends with the state before.
     if (metrics.left_container()) {
-      r.status = "diverged", r.diverged = true, r.diverged_step = k;
+      r.status = RunStatus::diverged, r.diverged_step = k;
       r.error = fmt::format("a ball left the container (beyond a wall by more than its diameter) at step {}", k);
       break;
     }
@@ -272,7 +272,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
       record(k);
       final_sum = state_checksum(state), trajectory_sum = chain_checksum(trajectory_sum, final_sum);
       if (metrics.energy_blew_up()) {
-        r.status = "diverged", r.diverged = true, r.diverged_step = k;
+        r.status = RunStatus::diverged, r.diverged_step = k;
         r.error =
             fmt::format("energy above {} x its initial value at step {}", options.metrics.divergence_energy_factor, k);
         break;

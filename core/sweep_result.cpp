@@ -28,7 +28,7 @@ void mark_pareto(std::vector<SweepPoint>& points) {
   std::map<std::string, std::vector<SweepPoint*>> by_engine;
   for (auto& p : points) {
     p.pareto = false;
-    if (p.status == "ok" && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
+    if (p.status == RunStatus::ok && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
   }
   for (auto& [engine, ps] : by_engine) {
     // Fastest first (ties: the more accurate first); a point is on the front if it is more accurate
@@ -53,7 +53,7 @@ nlohmann::json to_json(const SweepResult& s) {
                       {"dt", p.dt},
                       {"steps", p.steps},
                       {"settings", p.settings},
-                      {"status", p.status},
+                      {"status", run_status_text(p.status)},
                       {"error", p.error},
                       {"ns_per_ball_step", p.ns_per_ball_step},
                       {"ns_per_ball_step_median", p.ns_median()},
@@ -103,7 +103,7 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
     p.dt = q.at("dt").get<double>();
     p.steps = q.at("steps").get<long>();
     p.settings = q.at("settings");
-    p.status = q.at("status").get<std::string>();
+    p.status = run_status_from_text(q.at("status").get<std::string>());
     p.error = q.at("error").get<std::string>();
     for (const auto& x : q.at("ns_per_ball_step")) p.ns_per_ball_step.push_back(json_number(x));
     for (const auto& x : q.at("engine_s")) p.engine_s.push_back(json_number(x));
@@ -130,7 +130,7 @@ std::string sweep_csv(const SweepResult& s) {
                                           *std::max_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end())};
     const std::string value = json_text(p.value);
     out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", p.engine,
-                       p.profile, p.knob, value, p.dt, p.steps, p.status, p.ns_median(), lo, hi, p.engine_s_median(),
+                       p.profile, p.knob, value, p.dt, p.steps, run_status_text(p.status), p.ns_median(), lo, hi, p.engine_s_median(),
                        p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);
   }
   return out;

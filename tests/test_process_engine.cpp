@@ -71,7 +71,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   EXPECT_EQ(e.info.version, "1.0");
   EXPECT_FALSE(e.info.caps.friction);
   const Result r = run_engine(box(), e, steps(40));
-  EXPECT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.steps_done, 40);
   EXPECT_EQ(r.settings["pair_passes"], 1);
   EXPECT_EQ(r.settings["process"]["protocol"], 1);
@@ -86,7 +86,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
 TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   const EngineEntry e = process_engine_entry(spec({"python3", kExample}));
   const Result a = run_engine(box(), e, steps(20)), b = run_engine(box(), e, steps(20));
-  EXPECT_EQ(a.status, "ok") << a.error;
+  EXPECT_EQ(a.status, RunStatus::ok) << a.error;
   // A new scene replaces the world: the same run twice gives the same trajectory.
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
@@ -111,7 +111,7 @@ TEST(ProcessEngine, AProfileAfterAnotherInTheSameProcessHasItsOwnSettings) {
 
 TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
   const Result r = run_engine(box(), misbehaving("crash"), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "step 3 threw")) << r.error;
   EXPECT_TRUE(has(r.error, "exited with status 3")) << r.error;
   EXPECT_TRUE(has(r.error, "the misbehaving engine fell over")) << r.error;  // its stderr
@@ -120,7 +120,7 @@ TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
 
 TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
   const Result r = run_engine(box(), misbehaving("hang", 0.5), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "sent no reply within the time limit")) << r.error;
 }
 
@@ -130,7 +130,7 @@ TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
                                    {"bad-ids", "ball id 0 at row 1 is not a new index"},
                                    {"error", "refused 'step': the solver lost track of ball 7"}}) {
     const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, "failed") << mode;
+    EXPECT_EQ(r.status, RunStatus::failed) << mode;
     EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
   }
 }
@@ -144,7 +144,7 @@ TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   const EngineEntry absent = process_engine_entry(named);
   EXPECT_TRUE(has(absent.info.unavailable, "is not found on PATH")) << absent.info.unavailable;
   const Result r = run_engine(box(), absent, steps(5));
-  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_EQ(r.status, RunStatus::unsupported);
   EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
   for (const auto& [mode, says] : {std::pair{"unavailable", "the frobnicator library is not installed"},
                                    {"protocol-2", "speaks protocol version 2"},
@@ -175,11 +175,11 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   // The hang outlives the run's own time limit: its row times out, as any engine's.
   const auto results = cli::run_all(box(), engines, "", steps(20), true, {true, 1.0});
   ASSERT_EQ(results.size(), 4u);
-  EXPECT_EQ(results[0].status, "ok");
-  EXPECT_EQ(results[1].status, "failed");
+  EXPECT_EQ(results[0].status, RunStatus::ok);
+  EXPECT_EQ(results[1].status, RunStatus::failed);
   EXPECT_TRUE(has(results[1].error, "the misbehaving engine fell over")) << results[1].error;
-  EXPECT_EQ(results[2].status, "timed out");
-  EXPECT_EQ(results[3].status, "ok");
+  EXPECT_EQ(results[2].status, RunStatus::timed_out);
+  EXPECT_EQ(results[3].status, RunStatus::ok);
 }
 
 // Rotation through the protocol: a scene that rotates (friction, or a ball that starts spinning)
@@ -249,7 +249,7 @@ TEST(ProcessEngine, NodeEnginesSlideToRollAtTheScenesInertia) {
         RunOptions o;
         o.profile = profile;
         const Result r = run_engine(scene, *e, o);
-        EXPECT_EQ(r.status, "ok") << label << ": " << r.error;
+        EXPECT_EQ(r.status, RunStatus::ok) << label << ": " << r.error;
         EXPECT_EQ(r.settings["derived"]["moment_of_inertia"], fmt::format("k m r^2 ({}, k = {})", inertia, k)) << label;
         // Stepped here, to read the states.
         const auto engine = e->create(scene, profile, merged_settings(scene, e->info.name, {}));
@@ -327,15 +327,15 @@ TEST(ProcessEngine, NodeEnginesKeepASpinAndTurnByIt) {
 TEST(ProcessEngine, ARotatingScenesStateWithoutWIsRefused) {
   const Scene scene = slide_to_roll("disk");
   const Result bad = run_engine(scene, misbehaving("no-w"), steps(5));  // w goes missing at step 3
-  EXPECT_EQ(bad.status, "failed");
+  EXPECT_EQ(bad.status, RunStatus::failed);
   EXPECT_TRUE(has(bad.error, "step 3 threw")) << bad.error;
   EXPECT_TRUE(has(bad.error, "sent a state without 'w' in reply to 'step'")) << bad.error;
   EXPECT_TRUE(has(bad.error, "the scene rotates")) << bad.error;
   EXPECT_EQ(bad.steps_done, 2);
   const Result good = run_engine(scene, misbehaving("none"), steps(5));
-  EXPECT_EQ(good.status, "ok") << good.error;
+  EXPECT_EQ(good.status, RunStatus::ok) << good.error;
   const Result flat = run_engine(box(), misbehaving("no-w"), steps(5));
-  EXPECT_EQ(flat.status, "ok") << flat.error;
+  EXPECT_EQ(flat.status, RunStatus::ok) << flat.error;
 }
 
 // The project's engines.toml: the Node engines appear in `ballbench list` with their pinned

@@ -124,9 +124,9 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
     p.plan_index = static_cast<long>(k);
     // The timing runs: the engine alone, the same steps.
     options.reference = nullptr;
-    for (int rep = 0; rep < o.repeats && r.status == "ok"; ++rep) {
+    for (int rep = 0; rep < o.repeats && r.status == RunStatus::ok; ++rep) {
       const Result t = run(s, *item.engine, options);
-      if (t.status != "ok") break;
+      if (t.status != RunStatus::ok) break;
       p.ns_per_ball_step.push_back(t.ns_per_ball_step);
       p.engine_s.push_back(t.engine_s);
     }
@@ -153,8 +153,8 @@ void print_pareto(const SweepResult& s) {
                p.ns_median(), p.pos_rms, p.energy_rel);
   }
   for (const SweepPoint& p : s.points)
-    if (p.status != "ok")
-      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, json_text(p.value), p.status,
+    if (p.status != RunStatus::ok)
+      fmt::print("{}/{} {} = {}: {}{}\n", p.engine, p.profile, p.knob, json_text(p.value), run_status_text(p.status),
                  p.error.empty() ? "" : ": " + p.error);
 }
 
