@@ -23,6 +23,11 @@ struct HomeShortcuts {
   bool elastic = true;       // restitution exactly 1 and no resting speed (no gravity): no contact pass
 };
 
+// How `home` treats resting contact in scenes with gravity (HomeSettings::resting).
+enum class RestingMethod { events, soft };
+
+// The user settings (every field above "Internal") are declared, bounded and documented once, in
+// home.cpp's settings table: a new one is its field here and its row there.
 struct HomeSettings {
   /// Most Gauss-Seidel sweeps of the contact pass before the drift; it stops early once every
   /// contact is within the velocity tolerance. Too few leaves resting piles to the event loop
@@ -43,7 +48,7 @@ struct HomeSettings {
   /// every contact; "events", a contact pass at the start of the step, then exact event-driven
   /// motion with resting clusters solved where they form. Scenes without gravity always run
   /// the event-driven path, exact between collisions.
-  std::string resting = "events";
+  RestingMethod resting = RestingMethod::events;
   /// The soft step's substeps, sweeps, push-out stiffness, damping and speed (resting = "soft").
   SoftStepSettings soft;
   /// The soft step fixes each contact's normal for its step, which holds while the balls move a
