@@ -142,17 +142,8 @@ SettingRow<S> setting(const char* name, Sub S::*sub, T Sub::*m, const Bound& b, 
   return settings_detail::row<S, T>(name, [sub, m](S& s) -> T& { return (s.*sub).*m; }, b, unit, doc);
 }
 
-// A word from a closed set: a string member that must be one of `words`, or an enum member whose
-// values `names` spells (the only place its words live).
-template <class S>
-SettingRow<S> choice(const char* name, std::string S::*m, std::initializer_list<const char*> words, const char* doc) {
-  const std::vector<const char*> w(words);
-  SettingRow<S> r{name, "", doc, fmt::format("one of: {}", fmt::join(w, ", ")), {}, {}, {}};
-  r.read = [name, m, w](SettingsReader& reader, S& s) { reader.get(name, s.*m, w); };
-  r.check = [](const S&) { return std::string(); };
-  r.value = [m](const S& s) { return nlohmann::json(s.*m); };
-  return r;
-}
+// A word from a closed set: an enum member whose values `names` spells (the only place its words
+// live).
 template <class S, class E>
 SettingRow<S> choice(const char* name, E S::*m, std::initializer_list<std::pair<E, const char*>> names, const char* doc) {
   const std::vector<std::pair<E, const char*>> n(names);

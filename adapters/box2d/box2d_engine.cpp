@@ -76,7 +76,8 @@ const SettingsTable<Box2dSettings>& box2d_settings_table() {
                "approach speed below which a contact does not bounce"),
        setting("bullet", &S::bullet, any_value, "", "balls are bullets: time of impact against each other too"),
        setting("allow_sleep", &S::allow_sleep, any_value, "", "bodies slow for b2_timeToSleep freeze"),
-       choice("fixed_rotation", &S::fixed_rotation, {"auto", "always", "never"},
+       choice("fixed_rotation", &S::fixed_rotation,
+              {{FixedRotation::automatic, "auto"}, {FixedRotation::always, "always"}, {FixedRotation::never, "never"}},
               "balls do not turn: auto, when the scene is frictionless"),
        setting("warm_starting", &S::warm_starting, any_value, "", "each solve starts from the last step's impulses"),
        setting("continuous_physics", &S::continuous_physics, any_value, "", "time-of-impact handling at all"),
@@ -91,7 +92,7 @@ class Box2dEngine final : public Engine {
         world_(b2Vec2(static_cast<float>(scene.gravity.x()), static_cast<float>(scene.gravity.y()))),
         dt_(scene.dt),
         rotation_(scene.features().rotation),
-        fixed_rotation_(s.fixed_rotation == "always" || (s.fixed_rotation == "auto" && !rotation_)) {
+        fixed_rotation_(s.fixed_rotation == FixedRotation::always || (s.fixed_rotation == FixedRotation::automatic && !rotation_)) {
     inertia_label_ = fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia));
     world_.SetAllowSleeping(s.allow_sleep);
     world_.SetWarmStarting(s.warm_starting);

@@ -120,7 +120,7 @@ const SettingsTable<ChipmunkSettings>& chipmunk_settings_table() {
        setting("wall_radius", &S::wall_radius,
                bound([](double r) { return std::isfinite(r); }, "", "must be a number of metres (negative: derived from the box)"),
                "m", "radius of the wall segments; negative: derived from the box"),
-       choice("spatial_index", &S::spatial_index, {"bbtree", "hash"}, "broad phase: bounding-box tree or spatial hash"),
+       choice("spatial_index", &S::spatial_index, {{SpatialIndex::bbtree, "bbtree"}, {SpatialIndex::hash, "hash"}}, "broad phase: bounding-box tree or spatial hash"),
        setting("hash_cell", &S::hash_cell, above(0, "m"), "m", "spatial hash cell edge"),
        setting("hash_count", &S::hash_count, at_least(1), "count", "spatial hash's least number of cells"),
        setting("allow_sleep", &S::allow_sleep, any_value, "", "groups idle for sleep_time_threshold freeze"),
@@ -143,7 +143,7 @@ class ChipmunkEngine final : public Engine {
     cpSpaceSetDamping(space_, 1.0);  // no damping (Chipmunk's default)
     cpSpaceSetSleepTimeThreshold(space_, s.allow_sleep ? s.sleep_time_threshold : INFINITY);
     cpSpaceSetIdleSpeedThreshold(space_, s.idle_speed_threshold);
-    if (s.spatial_index == "hash") cpSpaceUseSpatialHash(space_, s.hash_cell, s.hash_count);
+    if (s.spatial_index == SpatialIndex::hash) cpSpaceUseSpatialHash(space_, s.hash_cell, s.hash_count);
     // Chipmunk multiplies the two shapes' elasticities and frictions (cpArbiter: e = a->e * b->e,
     // u = a->u * b->u), so every shape, walls included, gets the square root: each contact then
     // uses the scene's value.
@@ -267,7 +267,7 @@ ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene
   s.collision_slop = d.collision_slop;
   s.collision_bias = d.collision_bias;
   s.collision_persistence = static_cast<int>(d.collision_persistence);
-  s.spatial_index = "bbtree";  // cpSpaceInit's index: cpBBTreeNew
+  s.spatial_index = SpatialIndex::bbtree;  // cpSpaceInit's index: cpBBTreeNew
   s.idle_speed_threshold = d.idle_speed_threshold;
   s.allow_sleep = std::isfinite(d.sleep_time_threshold);
   // The hash's size, used by tuned and by `--set chipmunk.spatial_index=hash`: cells of the largest
@@ -281,7 +281,7 @@ ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene
   if (profile == "tuned") {
     s.iterations = 30;                     // Chipmunk's stacking demos; see the README
     s.collision_slop = 0.01 * smallest;    // overlap left alone: 1% of the smallest radius
-    s.spatial_index = "hash";              // "1000s of objects that are all the same size"
+    s.spatial_index = SpatialIndex::hash;  // "1000s of objects that are all the same size"
     return s;                              // collision_bias: the default (see the README)
   }
   throw InputError(fmt::format("chipmunk: unknown profile '{}' (known: {})", profile, fmt::join(kProfiles, ", ")));

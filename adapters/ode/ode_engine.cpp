@@ -46,8 +46,8 @@ const SettingsTable<OdeSettings>& ode_settings_table() {
   using S = OdeSettings;
   static const SettingsTable<S> table(
       "ode",
-      {choice("stepper", &S::stepper, {"step", "quickstep"}, "step: exact big-matrix LCP; quickstep: iterative SOR"),
-       choice("space", &S::space, {"sap", "hash"}, "broad phase: sweep and prune, or ODE's hash space"),
+      {choice("stepper", &S::stepper, {{OdeStepper::step, "step"}, {OdeStepper::quickstep, "quickstep"}}, "step: exact big-matrix LCP; quickstep: iterative SOR"),
+       choice("space", &S::space, {{OdeSpace::sap, "sap"}, {OdeSpace::hash, "hash"}}, "broad phase: sweep and prune, or ODE's hash space"),
        setting("quickstep_iterations", &S::quickstep_iterations, at_least(1).says("must be at least 1"), "count",
                "quickstep's sweeps per step"),
        setting("quickstep_w", &S::quickstep_w, inside(0, 2).says("must be in (0, 2)"), "1", "quickstep's SOR over-relaxation"),
@@ -75,7 +75,7 @@ class OdeEngine final : public Engine {
         angle_(rotation_ ? n_ : 0, 0.0) {
     ensure_ode_ready();
     world_ = dWorldCreate();
-    space_ = s_.space == "sap" ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
+    space_ = s_.space == OdeSpace::sap ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
     contacts_ = dJointGroupCreate(0);
 
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), 0.0);
@@ -88,7 +88,7 @@ class OdeEngine final : public Engine {
     dWorldSetAutoDisableFlag(world_, 0);  // no sleeping: every ball is simulated every step
 
     // Hash cells from the smallest to the largest ball diameter (cell size 2^level, m).
-    if (n_ > 0 && s_.space == "hash") {
+    if (n_ > 0 && s_.space == OdeSpace::hash) {
       const double dmin = 2 * scene.radius.minCoeff(), dmax = 2 * scene.radius.maxCoeff();
       dHashSpaceSetLevels(space_, static_cast<int>(std::floor(std::log2(dmin))),
                           static_cast<int>(std::ceil(std::log2(dmax))));
@@ -149,7 +149,7 @@ class OdeEngine final : public Engine {
 
   void step(double dt) override {
     dSpaceCollide(space_, this, &OdeEngine::near_callback);
-    const int ok = s_.stepper == "step" ? dWorldStep(world_, dt) : dWorldQuickStep(world_, dt);
+    const int ok = s_.stepper == OdeStepper::step ? dWorldStep(world_, dt) : dWorldQuickStep(world_, dt);
     dJointGroupEmpty(contacts_);
     if (!ok) throw std::runtime_error("ode: the stepper could not allocate its working memory");
     if (s_.align_to_plane) align_to_plane();
@@ -234,8 +234,8 @@ OdeSettings ode_settings_for_profile(const std::string& profile) {
   if (profile == "tuned") return OdeSettings{};
   if (profile == "stock") {
     OdeSettings s;
-    s.stepper = "quickstep";   // what most ODE applications use; 20 iterations, ODE's default
-    s.space = "hash";          // what ODE's demos create (dHashSpaceCreate)
+    s.stepper = OdeStepper::quickstep;  // what most ODE applications use; 20 iterations, ODE's default
+    s.space = OdeSpace::hash;  // what ODE's demos create (dHashSpaceCreate)
     s.quickstep_iterations = 20;
     s.quickstep_w = 1.3;       // ODE default
     s.erp = 0.2;               // ODE default
