@@ -76,7 +76,8 @@ struct SettingRow {
 template <class S>
 class SettingsTable {
  public:
-  SettingsTable(std::string engine, std::vector<SettingRow<S>> rows) : engine_(std::move(engine)), rows_(std::move(rows)) {}
+  SettingsTable(std::string engine, std::vector<SettingRow<S>> rows)
+      : engine_(std::move(engine)), rows_(std::move(rows)) {}
 
   // `overrides` on top of `s`: every row reads its key, an unknown key is refused, then every row's
   // value (overridden or not) is checked; InputError "settings.ENGINE.KEY: why".
@@ -145,7 +146,8 @@ SettingRow<S> setting(const char* name, Sub S::*sub, T Sub::*m, const Bound& b, 
 // A word from a closed set: an enum member whose values `names` spells (the only place its words
 // live).
 template <class S, class E>
-SettingRow<S> choice(const char* name, E S::*m, std::initializer_list<std::pair<E, const char*>> names, const char* doc) {
+SettingRow<S> choice(const char* name, E S::*m, std::initializer_list<std::pair<E, const char*>> names,
+                     const char* doc) {
   const std::vector<std::pair<E, const char*>> n(names);
   std::vector<const char*> words;
   for (const auto& entry : n) words.push_back(entry.second);

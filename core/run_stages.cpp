@@ -82,7 +82,8 @@ void step_reference(RunContext& c, long k, bool read) {
 bool advance(RunContext& c, long k) {
   Result& r = c.r;
   if (interrupt_signal())  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
-    return stop(c, RunStatus::interrupted, k, fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done));
+    return stop(c, RunStatus::interrupted, k,
+                fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done));
   const auto t0 = Clock::now();
   try {
     c.engine->step(c.scene.dt);
@@ -103,7 +104,8 @@ bool advance(RunContext& c, long k) {
     return stop(c, RunStatus::failed, k, fmt::format("step {}: reading the state threw: {}", k, e.what()));
   }
   if (spins_missing(c, c.next))
-    return stop(c, RunStatus::failed, k, fmt::format("step {}: the engine read back no angular velocities and angles", k));
+    return stop(c, RunStatus::failed, k,
+                fmt::format("step {}: the engine read back no angular velocities and angles", k));
   r.out_of_plane_max = std::max(r.out_of_plane_max, c.engine->out_of_plane());
   if (!c.metrics->observe_motion(c.state, c.next))  // tunnelling, every step, and finiteness in one sweep
     return stop(c, RunStatus::diverged, k, fmt::format("non-finite position or velocity at step {}", k));
@@ -129,7 +131,11 @@ bool advance(RunContext& c, long k) {
 }  // namespace
 
 RunContext::RunContext(const Scene& scene_, const EngineEntry& entry_, const RunOptions& options_)
-    : scene(scene_), entry(entry_), options(options_), rotation(scene_.features().rotation), r(result_header(scene_, entry_, options_)) {}
+    : scene(scene_),
+      entry(entry_),
+      options(options_),
+      rotation(scene_.features().rotation),
+      r(result_header(scene_, entry_, options_)) {}
 
 bool set_up(RunContext& c) {
   Result& r = c.r;
@@ -137,9 +143,11 @@ bool set_up(RunContext& c) {
   // Every engine's profiles are checked here, once, against what it declares.
   const auto& profiles = entry.info.profiles;
   if (std::find(profiles.begin(), profiles.end(), r.profile) == profiles.end())
-    throw InputError(fmt::format("{}: unknown profile '{}' (known: {})", entry.info.name, r.profile, fmt::join(profiles, ", ")));
+    throw InputError(
+        fmt::format("{}: unknown profile '{}' (known: {})", entry.info.name, r.profile, fmt::join(profiles, ", ")));
 
-  if (std::string why = unsupported_reason(entry.info, c.scene); !why.empty()) return stop(c, RunStatus::unsupported, 0, why);
+  if (std::string why = unsupported_reason(entry.info, c.scene); !why.empty())
+    return stop(c, RunStatus::unsupported, 0, why);
 
   try {
     c.engine = entry.create(c.scene, r.profile, merged_settings(c.scene, entry.info.name, c.options.overrides));
@@ -189,7 +197,8 @@ void set_up_reference(RunContext& c) {
     c.converged_scene->dt = c.ref_dt = scene.dt / c.ref_substeps;
   }
   try {
-    c.reference = c.ref_entry->create(c.converged_scene ? *c.converged_scene : scene, c.ref_entry->info.profiles.front(),
+    const Scene& ref_scene = c.converged_scene ? *c.converged_scene : scene;
+    c.reference = c.ref_entry->create(ref_scene, c.ref_entry->info.profiles.front(),
                                       merged_settings(scene, c.ref_entry->info.name, {}));
     c.reference->read(c.ref_state);
   } catch (const std::exception& e) {
@@ -213,7 +222,9 @@ void set_up_sampling(RunContext& c) {
   constexpr int kMaxFrameBalls = 1000;
   // Every ceil(samples / frames)-th sample: at most frames + 1 of them, step 0 included.
   const int frames = c.options.frames;
-  c.frame_every = frames > 0 && scene.n() <= kMaxFrameBalls ? c.every * std::max(1L, (r.steps / c.every + frames - 1) / frames) : 0;
+  c.frame_every = frames > 0 && scene.n() <= kMaxFrameBalls
+                      ? c.every * std::max(1L, (r.steps / c.every + frames - 1) / frames)
+                      : 0;
   if (c.frame_every) r.series.radius.assign(scene.radius.data(), scene.radius.data() + scene.n());
 }
 
@@ -224,7 +235,8 @@ bool read_initial(RunContext& c) {
     return stop(c, RunStatus::failed, 0, fmt::format("reading the initial state threw: {}", e.what()));
   }
   if (spins_missing(c, c.state))
-    return stop(c, RunStatus::failed, 0, "the engine reads back no angular velocities and angles for a scene that rotates");
+    return stop(c, RunStatus::failed, 0,
+                "the engine reads back no angular velocities and angles for a scene that rotates");
   c.trajectory_sum = kChecksumSeed;
   sample(c, 0);
   if (c.options.trajectory) c.options.trajectory->write(c.r.engine, c.r.profile, 0, c.state);
@@ -241,7 +253,8 @@ void step_loop(RunContext& c) {
 }
 
 void sample_last(RunContext& c) {
-  if (c.sampled < c.r.steps_done) sample(c, c.r.steps_done);  // a run that ended between samples: its last good state counts
+  // A run that ended between samples: its last good state counts.
+  if (c.sampled < c.r.steps_done) sample(c, c.r.steps_done);
 }
 
 void final_metrics(RunContext& c) {
@@ -254,7 +267,8 @@ void final_metrics(RunContext& c) {
     r.speed_ks = rayleigh_ks_statistic(state);
     r.speed_ks_critical = rayleigh_ks_critical(scene.n());
   } else {
-    r.skipped.push_back("speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
+    r.skipped.push_back(
+        "speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
   }
   if (scene.features().gravity && scene.features().walls)
     r.jitter = std::sqrt(state.vel.rowwise().squaredNorm().mean());
@@ -282,9 +296,8 @@ void final_metrics(RunContext& c) {
     r.reference = c.error->summary();
     // Named as it ran: "exact", or "chipmunk/tuned at dt/64" for a converged run.
     const auto& name = c.ref_entry->info.name;
-    r.reference.reference = c.ref_substeps == 1
-                                ? name
-                                : fmt::format("{} at dt/{}", run_label(name, c.ref_entry->info.profiles.front()), c.ref_substeps);
+    const std::string label = run_label(name, c.ref_entry->info.profiles.front());
+    r.reference.reference = c.ref_substeps == 1 ? name : fmt::format("{} at dt/{}", label, c.ref_substeps);
     r.reference.reference_dt = c.ref_dt;
   }
   constexpr int kMaxFinalPositions = 5000;  // a picture of more balls is a grey smear anyway

@@ -140,9 +140,10 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
     gp << "set multiplot layout 1," << runs.size() << "\n";
     for (const Result* r : runs) {
       const size_t held = std::min(k * stride, r->series.frames.size() - 1);
+      const std::string stopped = held < k * stride ? fmt::format(" ({})", run_status_text(r->status)) : "";
       gp << fmt::format("set title '{} t = {:.1f} s{}'\nplot '{}-{}.dat' index {} using 1:2:3 with circles fs solid 0.6 "
                         "lc rgb '#3060c0'\n",
-                        run_label(*r), r->series.frame_t[held], held < k * stride ? " (" + std::string(run_status_text(r->status)) + ")" : "", base,
+                        run_label(*r), r->series.frame_t[held], stopped, base,
                         slug(run_label(*r)), k);
     }
     gp << "unset multiplot\n";

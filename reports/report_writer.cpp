@@ -37,7 +37,11 @@ bool compared(const Result& r) { return r.reference.available && r.engine != r.r
 // the error against the reference and the timing.
 std::vector<Column> columns() {
   std::vector<Column> out = {
-      {"status", [](const Result& r) { return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status)); }, nullptr}};
+      {"status",
+       [](const Result& r) {
+         return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
+       },
+       nullptr}};
   for (const MetricDef& m : metric_catalog()) {
     if (m.column.empty()) continue;
     Column c{m.column, [&m](const Result& r) { return metric_text(m.get(r)); }, nullptr, &m};
@@ -85,7 +89,8 @@ std::string display_path(const std::string& source) {
 std::string times(int n) { return n == 1 ? "once" : fmt::format("{} times", n); }
 
 std::string verdict(const Result& r) {
-  if (r.status == RunStatus::unsupported || r.status == RunStatus::failed || r.status == RunStatus::crashed || r.status == RunStatus::timed_out)
+  if (r.status == RunStatus::unsupported || r.status == RunStatus::failed || r.status == RunStatus::crashed ||
+      r.status == RunStatus::timed_out)
     return fmt::format("{}: {}", run_status_text(r.status), r.error);
   std::vector<std::string> parts;
   if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));

@@ -69,7 +69,8 @@ const SettingsTable<Box2dSettings>& box2d_settings_table() {
       "box2d",
       {setting("velocity_iterations", &S::velocity_iterations, at_least(1, "0 solves no contact at all"), "count",
                "sequential-impulse sweeps over all contacts per step"),
-       setting("position_iterations", &S::position_iterations, at_least(0), "count", "sweeps pushing overlaps apart per step"),
+       setting("position_iterations", &S::position_iterations, at_least(0), "count",
+               "sweeps pushing overlaps apart per step"),
        // Box2D applies restitution when the approach speed exceeds the threshold; a negative one
        // would push apart contacts that are already separating.
        setting("restitution_threshold", &S::restitution_threshold, at_least(0, "m/s"), "m/s",
@@ -81,7 +82,8 @@ const SettingsTable<Box2dSettings>& box2d_settings_table() {
               "balls do not turn: auto, when the scene is frictionless"),
        setting("warm_starting", &S::warm_starting, any_value, "", "each solve starts from the last step's impulses"),
        setting("continuous_physics", &S::continuous_physics, any_value, "", "time-of-impact handling at all"),
-       setting("sub_stepping", &S::sub_stepping, any_value, "", "at most one time-of-impact event per step (debugging)")});
+       setting("sub_stepping", &S::sub_stepping, any_value, "",
+               "at most one time-of-impact event per step (debugging)")});
   return table;
 }
 
@@ -92,7 +94,8 @@ class Box2dEngine final : public Engine {
         world_(b2Vec2(static_cast<float>(scene.gravity.x()), static_cast<float>(scene.gravity.y()))),
         dt_(scene.dt),
         rotation_(scene.features().rotation),
-        fixed_rotation_(s.fixed_rotation == FixedRotation::always || (s.fixed_rotation == FixedRotation::automatic && !rotation_)) {
+        fixed_rotation_(s.fixed_rotation == FixedRotation::always ||
+                        (s.fixed_rotation == FixedRotation::automatic && !rotation_)) {
     inertia_label_ = fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia));
     world_.SetAllowSleeping(s.allow_sleep);
     world_.SetWarmStarting(s.warm_starting);

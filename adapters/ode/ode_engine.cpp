@@ -46,12 +46,16 @@ const SettingsTable<OdeSettings>& ode_settings_table() {
   using S = OdeSettings;
   static const SettingsTable<S> table(
       "ode",
-      {choice("stepper", &S::stepper, {{OdeStepper::step, "step"}, {OdeStepper::quickstep, "quickstep"}}, "step: exact big-matrix LCP; quickstep: iterative SOR"),
-       choice("space", &S::space, {{OdeSpace::sap, "sap"}, {OdeSpace::hash, "hash"}}, "broad phase: sweep and prune, or ODE's hash space"),
+      {choice("stepper", &S::stepper, {{OdeStepper::step, "step"}, {OdeStepper::quickstep, "quickstep"}},
+              "step: exact big-matrix LCP; quickstep: iterative SOR"),
+       choice("space", &S::space, {{OdeSpace::sap, "sap"}, {OdeSpace::hash, "hash"}},
+              "broad phase: sweep and prune, or ODE's hash space"),
        setting("quickstep_iterations", &S::quickstep_iterations, at_least(1).says("must be at least 1"), "count",
                "quickstep's sweeps per step"),
-       setting("quickstep_w", &S::quickstep_w, inside(0, 2).says("must be in (0, 2)"), "1", "quickstep's SOR over-relaxation"),
-       setting("erp", &S::erp, within(0, 1).says("must be in [0, 1]"), "1", "fraction of the penetration removed per step"),
+       setting("quickstep_w", &S::quickstep_w, inside(0, 2).says("must be in (0, 2)"), "1",
+               "quickstep's SOR over-relaxation"),
+       setting("erp", &S::erp, within(0, 1).says("must be in [0, 1]"), "1",
+               "fraction of the penetration removed per step"),
        setting("cfm", &S::cfm, at_least(0).says("must not be negative (the ODE manual: negative CFM is unstable)"),
                "m/N/s", "constraint force mixing: contact softness"),
        setting("bounce_vel", &S::bounce_vel, at_least(0).says("must not be negative (ODE then never bounces)"), "m/s",
@@ -59,9 +63,10 @@ const SettingsTable<OdeSettings>& ode_settings_table() {
        setting("contact_surface_layer", &S::contact_surface_layer, at_least(0).says("must not be negative"), "m",
                "penetration tolerated before the push-out starts"),
        setting("max_correcting_vel", &S::max_correcting_vel,
-               bound([](double v) { return v > 0 || v == -1; }, "> 0 or -1", "must be positive, or -1 for no cap"), "m/s",
-               "cap on the push-out speed; -1: none"),
-       setting("align_to_plane", &S::align_to_plane, any_value, "", "after each step, turn each body back to a rotation about z")});
+               bound([](double v) { return v > 0 || v == -1; }, "> 0 or -1", "must be positive, or -1 for no cap"),
+               "m/s", "cap on the push-out speed; -1: none"),
+       setting("align_to_plane", &S::align_to_plane, any_value, "",
+               "after each step, turn each body back to a rotation about z")});
   return table;
 }
 

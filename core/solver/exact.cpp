@@ -245,11 +245,14 @@ const SettingsTable<ExactSettings>& exact_settings_table() {
   using S = ExactSettings;
   static const SettingsTable<S> table(
       "exact",
-      {setting("contact_time", &S::contact_time, any_value, "s", "flight a supported ball keeps per collision; < 0: automatic"),
+      {setting("contact_time", &S::contact_time, any_value, "s",
+               "flight a supported ball keeps per collision; < 0: automatic"),
        setting("rest_velocity", &S::rest_velocity, any_value, "m/s", "impacts slower than this settle; < 0: automatic"),
        setting("sleep", &S::sleep, any_value, "", "a settled, supported ball sleeps"),
-       setting("wake_velocity", &S::wake_velocity, any_value, "m/s", "impacts this fast wake a sleeping ball; < 0: 10 rest_velocity"),
-       setting("support_gap", &S::support_gap, any_value, "m", "gap within which a support carries a ball; < 0: automatic"),
+       setting("wake_velocity", &S::wake_velocity, any_value, "m/s",
+               "impacts this fast wake a sleeping ball; < 0: 10 rest_velocity"),
+       setting("support_gap", &S::support_gap, any_value, "m",
+               "gap within which a support carries a ball; < 0: automatic"),
        setting("cell_size", &S::cell_size, any_value, "m", "neighbour grid's cell width; < 0: automatic"),
        setting("max_events_per_ball", &S::max_events_per_ball, at_least(1), "count",
                "more events per ball in one step fail the run")});

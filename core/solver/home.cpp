@@ -67,21 +67,30 @@ const SettingsTable<HomeSettings>& home_settings_table() {
   using Soft = SoftStepSettings;
   static const SettingsTable<S> table(
       "home",
-      {setting("contact_iterations", &S::contact_iterations, at_least(0), "count", "most sweeps of the contact pass per step"),
-       setting("rest_velocity", &S::rest_velocity, any_value, "m/s", "impacts slower than this are resting contact; < 0: 2 |g| dt"),
-       setting("contact_slop", &S::contact_slop, above(0), "1", "gap that counts as touching, as a fraction of the radius sum"),
-       setting("max_events_per_ball", &S::max_events_per_ball, at_least(1), "count", "more events per ball in one step fail the run"),
+      {setting("contact_iterations", &S::contact_iterations, at_least(0), "count",
+               "most sweeps of the contact pass per step"),
+       setting("rest_velocity", &S::rest_velocity, any_value, "m/s",
+               "impacts slower than this are resting contact; < 0: 2 |g| dt"),
+       setting("contact_slop", &S::contact_slop, above(0), "1",
+               "gap that counts as touching, as a fraction of the radius sum"),
+       setting("max_events_per_ball", &S::max_events_per_ball, at_least(1), "count",
+               "more events per ball in one step fail the run"),
        choice("resting", &S::resting, {{RestingMethod::soft, "soft"}, {RestingMethod::events, "events"}},
               "resting contact under gravity: the soft step, or event-driven with cluster solves"),
        setting("substeps", &S::soft, &Soft::substeps, at_least(1), "count", "the soft step's substeps per step"),
-       setting("substep_iterations", &S::soft, &Soft::substep_iterations, at_least(1), "count", "soft step: sweeps with the push, per substep"),
-       setting("relax_iterations", &S::soft, &Soft::relax_iterations, at_least(0), "count", "soft step: sweeps without the push, per substep"),
-       setting("max_stride", &S::max_stride, above(0), "radii", "a soft step's parts move the fastest ball at most this far"),
+       setting("substep_iterations", &S::soft, &Soft::substep_iterations, at_least(1), "count",
+               "soft step: sweeps with the push, per substep"),
+       setting("relax_iterations", &S::soft, &Soft::relax_iterations, at_least(0), "count",
+               "soft step: sweeps without the push, per substep"),
+       setting("max_stride", &S::max_stride, above(0), "radii",
+               "a soft step's parts move the fastest ball at most this far"),
        setting("max_parts", &S::max_parts, at_least(1), "count", "most parts a soft step is cut into"),
        setting("contact_hertz", &S::soft, &Soft::contact_hertz, above(0), "Hz", "soft step: stiffness of the push-out"),
        setting("damping_ratio", &S::soft, &Soft::damping_ratio, at_least(0), "1", "soft step: damping of the push-out"),
-       setting("push_speed", &S::soft, &Soft::push_speed, above(0), "m/s", "soft step: fastest an overlap is pushed out"),
-       setting("sleep_speed", &S::sleep_speed, at_least(0), "m/s", "soft path: islands slower than this for sleep_time sleep; 0 never"),
+       setting("push_speed", &S::soft, &Soft::push_speed, above(0), "m/s",
+               "soft step: fastest an overlap is pushed out"),
+       setting("sleep_speed", &S::sleep_speed, at_least(0), "m/s",
+               "soft path: islands slower than this for sleep_time sleep; 0 never"),
        setting("sleep_time", &S::sleep_time, above(0), "s", "soft path: how long an island is slow before it sleeps")});
   return table;
 }
@@ -168,7 +177,8 @@ class Home final : public Engine {
   // Resting contact by the soft step in scenes with gravity when `resting` says so; else the events
   // path, on a neighbour list in elastic scenes with pairs, on the grid otherwise.
   HomePath choose_path(const Scene& scene) {
-    if (s_.resting == RestingMethod::soft && scene.features().gravity) return HomePath(std::in_place_type<SoftResting>, s_, w_.n);
+    if (s_.resting == RestingMethod::soft && scene.features().gravity)
+      return HomePath(std::in_place_type<SoftResting>, s_, w_.n);
     if (sc_.elastic && !sc_.no_pairs)
       return HomePath(std::in_place_type<EventPath<ListBroadPhase>>, w_, grid_, pool_, s_, sc_);
     return HomePath(std::in_place_type<EventPath<GridBroadPhase>>, w_, grid_, pool_, s_, sc_);
@@ -260,8 +270,8 @@ EngineEntry home_engine() {
   // impulses in the friction cone); the soft path solves it in its soft step.
   // Sweeps of the resting-contact solve (default: motion between contacts is exact at any
   // setting), and the soft step's substeps (soft).
-  info.settings = home_settings_table().describe();
   info.sweep_knobs = {{"contact_iterations", {4, 16, 200}, {"default"}}, {"substeps", {2, 8, 16}, {"soft"}}};
+  info.settings = home_settings_table().describe();
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             HomeSettings s;
             if (profile == "soft") {
