@@ -45,7 +45,7 @@ void harness_benchmark(benchmark::State& state, int n, int sample_every) {
   double engine_s = 0, harness_s = 0;
   for (auto _ : state) {
     const Result r = run_engine(scene, find_engine("home"), options);
-    if (r.status != "ok") {
+    if (r.status != RunStatus::ok) {
       state.SkipWithError(r.error.c_str());
       return;
     }

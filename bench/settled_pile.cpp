@@ -44,7 +44,7 @@ seed = 1
 )", n, width, height, kRadius, kSpacing, columns, 0.5 * kSpacing),
                             fmt::format("settled-{}", n));
   HomeSettings settings;
-  settings.resting = "soft";  // no sleeping: the state is each ball's own, not one frozen by a rule
+  settings.resting = RestingMethod::soft;  // no sleeping: the state is each ball's own, not one frozen by a rule
   const auto engine = make_home(scene, settings);
   State state;
   int steps = 0;

@@ -5,6 +5,10 @@
 
 namespace ballbench {
 
+const char* calibration_status_text(const CalibrationPoint& p) {
+  return p.tunnelled ? "tunnelled" : run_status_text(p.status);
+}
+
 nlohmann::json to_json(const CalibrationResult& c) {
   nlohmann::json points = nlohmann::json::array();
   for (const CalibrationPoint& p : c.points)
@@ -14,7 +18,7 @@ nlohmann::json to_json(const CalibrationResult& c) {
                       {"requested", p.requested},
                       {"speed", p.speed},
                       {"effective", p.effective},
-                      {"status", p.status},
+                      {"status", calibration_status_text(p)},
                       {"error", p.error}});
   return {{"requested", c.requested}, {"speeds", c.speeds}, {"context", c.context}, {"points", points}};
 }
@@ -32,7 +36,9 @@ CalibrationResult calibration_from_json(const nlohmann::json& j) {
     p.requested = json_number(q.at("requested"));
     p.speed = json_number(q.at("speed"));
     p.effective = json_number(q.at("effective"));
-    p.status = q.at("status").get<std::string>();
+    const auto status = q.at("status").get<std::string>();
+    p.tunnelled = status == "tunnelled";
+    p.status = p.tunnelled ? RunStatus::ok : run_status_from_text(status);
     p.error = q.at("error").get<std::string>();
     c.points.push_back(std::move(p));
   }

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run_status.h"
+
 namespace ballbench {
 
 struct CalibrationPoint {
@@ -16,10 +18,16 @@ struct CalibrationPoint {
   std::string contact;     // "ball-wall" or "ball-ball"
   double requested = 0;    // the scene's restitution
   double speed = 0;        // impact (approach) speed (m/s)
-  double effective = 0;    // measured; meaningful only when status is "ok"
-  std::string status = "ok";  // of the run (Result::status), or "tunnelled" when the contact was passed through
+  double effective = 0;    // measured; meaningful only when measured()
+  RunStatus status = RunStatus::ok;  // of the run (Result::status)
+  bool tunnelled = false;            // the run was ok but passed through the contact instead of bouncing
   std::string error;
+
+  bool measured() const { return status == RunStatus::ok && !tunnelled; }
 };
+
+// The point's status as JSON and the report write it: "tunnelled", or the run's status.
+const char* calibration_status_text(const CalibrationPoint& p);
 
 struct CalibrationResult {
   std::vector<double> requested, speeds;  // the grid measured

@@ -88,6 +88,16 @@ enum class EngineRole {
 // "ours", "reference", "thesis", "external".
 const char* role_name(EngineRole role);
 
+// One user setting of an engine, as `ballbench list --settings` prints it; engine_settings.h's
+// SettingsTable::describe makes them from the engine's settings table.
+struct SettingInfo {
+  std::string name;
+  nlohmann::json default_value;  // the settings struct's, before a profile changes it
+  std::string range;             // the values it takes: ">= 1", "[0, 1]", "one of: soft, events"; "" any
+  std::string unit;              // "" for a flag or a word
+  std::string doc;               // one line
+};
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
@@ -98,6 +108,7 @@ struct EngineInfo {
   Capabilities caps;
   std::vector<std::string> profiles{"default"};  // settings profiles; the first is the default
   std::vector<SweepKnob> sweep_knobs;             // what trades its run time for accuracy
+  std::vector<SettingInfo> settings;              // its user settings (`ballbench list --settings`)
   // Each run costs far more than its steps: a process to start, thousands of DEM sub-steps per
   // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
   bool costly_runs = false;

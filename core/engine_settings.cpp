@@ -58,7 +58,7 @@ void SettingsReader::get(const char* key, std::string& value) {
   }
 }
 
-void SettingsReader::get(const char* key, std::string& value, std::initializer_list<const char*> choices) {
+void SettingsReader::get(const char* key, std::string& value, const std::vector<const char*>& choices) {
   std::string s = value;
   get(key, s);
   if (std::none_of(choices.begin(), choices.end(), [&](const char* c) { return s == c; }))
@@ -70,6 +70,38 @@ void SettingsReader::finish() const {
   for (const auto& [k, v] : overrides_.items())
     if (std::find(known_.begin(), known_.end(), k) == known_.end())
       fail(k, fmt::format("unknown setting{} (known: {})", did_you_mean(k, known_), fmt::join(known_, ", ")));
+}
+
+namespace {
+
+std::string refusal(const std::string& range, const char* why) {
+  return *why ? fmt::format("must be {} ({})", range, why) : fmt::format("must be {}", range);
+}
+
+}  // namespace
+
+Bound at_least(double lo, const char* why) {
+  const std::string range = fmt::format(">= {}", lo);
+  return {[lo](double x) { return x >= lo; }, range, refusal(range, why)};
+}
+
+Bound above(double lo, const char* why) {
+  const std::string range = fmt::format("> {}", lo);
+  return {[lo](double x) { return x > lo; }, range, refusal(range, why)};
+}
+
+Bound within(double lo, double hi) {
+  const std::string range = fmt::format("[{}, {}]", lo, hi);
+  return {[lo, hi](double x) { return x >= lo && x <= hi; }, range, refusal(range, "")};
+}
+
+Bound inside(double lo, double hi) {
+  const std::string range = fmt::format("({}, {})", lo, hi);
+  return {[lo, hi](double x) { return x > lo && x < hi; }, range, refusal(range, "")};
+}
+
+Bound bound(std::function<bool(double)> holds, std::string range, std::string refusal) {
+  return {std::move(holds), std::move(range), std::move(refusal)};
 }
 
 }  // namespace ballbench

@@ -63,7 +63,7 @@ std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, 
     const std::string label = run_label(r);
     if (!by_label.contains(label)) labels.push_back(label);  // once, even if none of its runs ended ok
     auto& runs = by_label[label];
-    if (r.status == "ok") runs.push_back(&r);
+    if (r.status == RunStatus::ok) runs.push_back(&r);
   }
   std::map<int64_t, const Result*> ours_at;  // our run on each placement
   if (!ours.empty())

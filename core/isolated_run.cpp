@@ -197,18 +197,18 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
   // Interrupted: the child's own result (status "interrupted", its metrics so far) if it sent one.
   if (c.interrupted && !(c.kind == "result" && WIFEXITED(c.wait_status) && WEXITSTATUS(c.wait_status) == 0)) {
-    r.status = "interrupted";
+    r.status = RunStatus::interrupted;
     r.error = fmt::format("interrupted by {}{}; the engine's process sent no result", interrupt_name(), after);
     return r;
   }
   if (c.timed_out) {
-    r.status = "timed out";
+    r.status = RunStatus::timed_out;
     r.error = fmt::format("no result within the time limit of {} s{}: killed", timeout_s, after);
     return r;
   }
   const int st = c.wait_status;
   if (WIFSIGNALED(st)) {
-    r.status = "crashed";
+    r.status = RunStatus::crashed;
     r.error = fmt::format("killed by {}{}", signal_description(WTERMSIG(st)), after);
     return r;
   }
@@ -218,17 +218,17 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
     try {
       return result_from_json(nlohmann::json::parse(c.body));
     } catch (const nlohmann::json::exception& e) {
-      r.status = "failed";
+      r.status = RunStatus::failed;
       r.error = fmt::format("the run's result could not be read back: {}", e.what());
       return r;
     }
   }
   if (code == 0 && c.kind == "error") {
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = c.body;
     return r;
   }
-  r.status = "crashed";
+  r.status = RunStatus::crashed;
   r.error = fmt::format("the engine's process exited with status {}{} without a result", code, after);
   return r;
 }
@@ -255,7 +255,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
   Result r = result_header(scene, entry, options);
   int fds[2];
   if (::pipe(fds) != 0) {
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = fmt::format("cannot isolate the run: pipe: {}", std::strerror(errno));
     return r;
   }
@@ -265,7 +265,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
   if (pid < 0) {
     const int err = errno;
     ::close(fds[0]), ::close(fds[1]);
-    r.status = "failed";
+    r.status = RunStatus::failed;
     r.error = fmt::format("cannot isolate the run: fork: {}", std::strerror(err));
     return r;
   }

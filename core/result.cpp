@@ -62,10 +62,10 @@ nlohmann::json to_json(const Result& r) {
   j["dt"] = r.dt;
   j["steps"] = r.steps;
   j["steps_done"] = r.steps_done;
-  j["status"] = r.status;
+  j["status"] = run_status_text(r.status);
   j["error"] = r.error;
-  j["diverged"] = r.diverged;
-  j["diverged_step"] = r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr);
+  j["diverged"] = r.diverged();
+  j["diverged_step"] = r.diverged() ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr);
   j["engine_s"] = r.engine_s;
   j["ns_per_step"] = r.ns_per_step;
   j["ns_per_ball_step"] = r.ns_per_ball_step;
@@ -122,9 +122,8 @@ Result result_from_json(const nlohmann::json& j) {
   r.dt = j.at("dt");
   r.steps = j.at("steps");
   r.steps_done = j.value("steps_done", r.steps);
-  r.status = j.value("status", "ok");
+  r.status = run_status_from_text(j.value("status", "ok"));
   r.error = j.value("error", "");
-  r.diverged = j.at("diverged");
   r.diverged_step = j.at("diverged_step").is_null() ? -1 : j.at("diverged_step").get<long>();
   // Results files written before the field was named for what it holds call it "wall_s".
   r.engine_s = j.contains("engine_s") ? j.at("engine_s").get<double>() : j.at("wall_s").get<double>();

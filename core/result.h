@@ -13,6 +13,7 @@
 #include "metrics/events.h"
 #include "metrics/metrics.h"
 #include "metrics/reference_error.h"
+#include "run_status.h"
 
 namespace ballbench {
 
@@ -25,14 +26,11 @@ struct Result {
   double dt = 0;
   long steps = 0;        // asked for
   long steps_done = 0;   // completed (less when the run diverged or failed)
-  // "ok"; "diverged" (non-finite state or energy blow-up: see diverged_step); "failed" (the engine
-  // threw: see error); "unsupported" (the scene needs what the engine lacks: see error); and, for
-  // runs in a child process (core/isolated_run.h), "crashed" (the child died: error names the
-  // signal) and "timed out" (no result within the time limit: the child was killed).
-  std::string status = "ok";
+  RunStatus status = RunStatus::ok;  // how the run ended (run_status.h); JSON "status", as text
   std::string error;
-  bool diverged = false;
-  long diverged_step = -1;
+  long diverged_step = -1;  // the step a diverged run stopped at
+  // JSON "diverged", derived from the status.
+  bool diverged() const { return status == RunStatus::diverged; }
   double engine_s = 0;          // engine step time summed over the run (s); JSON "engine_s"
   // The engine's own step time per step and per ball-step: self-timed by an engine in another
   // process (engine_process_s), the harness's timing of step() for every other.

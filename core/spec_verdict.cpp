@@ -38,7 +38,8 @@ std::optional<double> spec_figure(SpecTerm t, const Result& r) {
 SpecVerdict judge(const AccuracySpec& spec, const Result& r) {
   SpecVerdict v;
   std::vector<std::string> fails;
-  if (r.status != "ok") fails.push_back(r.status + (r.error.empty() ? "" : ": " + r.error));
+  if (r.status != RunStatus::ok)
+    fails.push_back(std::string(run_status_text(r.status)) + (r.error.empty() ? "" : ": " + r.error));
   for (const SpecTermDef& d : spec_terms()) {
     const auto& bound = spec[d.term];
     if (!bound) continue;

@@ -30,7 +30,7 @@ void mark_pareto(std::vector<SweepPoint>& points) {
   std::map<std::string, std::vector<SweepPoint*>> by_engine;
   for (auto& p : points) {
     p.pareto = false;
-    if (p.status == "ok" && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
+    if (p.status == RunStatus::ok && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
   }
   for (auto& [engine, ps] : by_engine) {
     // Fastest first (ties: the more accurate first); a point is on the front if it is more accurate
@@ -55,7 +55,7 @@ nlohmann::json to_json(const SweepResult& s) {
                       {"dt", p.dt},
                       {"steps", p.steps},
                       {"settings", p.settings},
-                      {"status", p.status},
+                      {"status", run_status_text(p.status)},
                       {"error", p.error},
                       {"ns_per_ball_step", p.ns_per_ball_step},
                       {"ns_per_ball_step_median", p.ns_median()},
@@ -133,7 +133,7 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
     p.dt = field<double>(q, "dt", at);
     p.steps = field<long>(q, "steps", at);
     p.settings = q.at("settings");
-    p.status = field<std::string>(q, "status", at);
+    p.status = run_status_from_text(field<std::string>(q, "status", at));
     p.error = field<std::string>(q, "error", at);
     for (const auto& x : array_field(q, "ns_per_ball_step", at)) p.ns_per_ball_step.push_back(json_number(x));
     for (const auto& x : array_field(q, "engine_s", at)) p.engine_s.push_back(json_number(x));
@@ -160,7 +160,7 @@ std::string sweep_csv(const SweepResult& s) {
                                           *std::max_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end())};
     const std::string value = json_text(p.value);
     out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", p.engine,
-                       p.profile, p.knob, value, p.dt, p.steps, p.status, p.ns_median(), lo, hi, p.engine_s_median(),
+                       p.profile, p.knob, value, p.dt, p.steps, run_status_text(p.status), p.ns_median(), lo, hi, p.engine_s_median(),
                        p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);
   }
   return out;

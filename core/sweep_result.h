@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run_status.h"
+
 namespace ballbench {
 
 struct SweepPoint {
@@ -16,7 +18,7 @@ struct SweepPoint {
   double dt = 0;                    // (s)
   long steps = 0;                   // to the horizon
   nlohmann::json settings;          // the engine's effective settings (every knob, defaults included)
-  std::string status = "ok";        // of the run measured against the reference (Result::status)
+  RunStatus status = RunStatus::ok;  // of the run measured against the reference (Result::status)
   std::string error;
   std::vector<double> ns_per_ball_step;  // one per timing repeat (engine step time only)
   std::vector<double> engine_s;     // one per timing repeat: engine time to the horizon (s)

@@ -140,9 +140,10 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
     gp << "set multiplot layout 1," << runs.size() << "\n";
     for (const Result* r : runs) {
       const size_t held = std::min(k * stride, r->series.frames.size() - 1);
+      const std::string stopped = held < k * stride ? fmt::format(" ({})", run_status_text(r->status)) : "";
       gp << fmt::format("set title '{} t = {:.1f} s{}'\nplot '{}-{}.dat' index {} using 1:2:3 with circles fs solid 0.6 "
                         "lc rgb '#3060c0'\n",
-                        run_label(*r), r->series.frame_t[held], held < k * stride ? " (" + r->status + ")" : "", base,
+                        run_label(*r), r->series.frame_t[held], stopped, base,
                         slug(run_label(*r)), k);
     }
     gp << "unset multiplot\n";
@@ -193,7 +194,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
     std::ofstream line(dir / fmt::format("{}-{}-dt.dat", base, name)), knobs(dir / fmt::format("{}-{}-knobs.dat", base, name));
     int drawn = 0;
     for (const SweepPoint& p : sw.points) {
-      if (run_label(p.engine, p.profile) != order[k] || p.status != "ok" || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
+      if (run_label(p.engine, p.profile) != order[k] || p.status != RunStatus::ok || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
       const auto [lo, hi] = std::minmax_element(p.engine_s.begin(), p.engine_s.end());
       (p.knob == "dt" ? line : knobs) << 1e3 * p.engine_s_median() << ' ' << p.pos_rms << ' ' << 1e3 * *lo << ' '
                                       << 1e3 * *hi << '\n';
@@ -337,7 +338,7 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
       for (const Result* r : pictured)
         if (!r->series.frames.empty()) animated.push_back(r);
       for (const Result* r : by_scene[scene])
-        if (role_of(in, r->engine) == EngineRole::external && r->status == "ok" && !r->series.frames.empty()) {
+        if (role_of(in, r->engine) == EngineRole::external && r->status == RunStatus::ok && !r->series.frames.empty()) {
           animated.push_back(r);
           break;
         }

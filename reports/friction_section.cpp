@@ -32,8 +32,8 @@ std::string cell(const std::string& text) {
 // A run that made no step (refused, or failed to build) has no figures: its status and why.
 bool ran(const Result& r) { return r.steps_done > 0; }
 std::string status_text(const Result& r) {
-  if (r.status == "ok") return "ok";
-  return r.error.empty() ? r.status : fmt::format("{}: {}", r.status, cell(r.error));
+  if (r.status == RunStatus::ok) return "ok";
+  return r.error.empty() ? run_status_text(r.status) : fmt::format("{}: {}", run_status_text(r.status), cell(r.error));
 }
 
 std::string or_dash(const std::optional<double>& v, const char* format) {
@@ -106,8 +106,9 @@ void put_repose(Markdown& put, const std::vector<std::string>& scenes,
         continue;
       }
       const Result& r = **it;
-      if (!ran(r) || r.status != "ok") {
-        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", r.status, or_dash(r.angle_of_repose, "{:.1f}")) : r.status);
+      if (!ran(r) || r.status != RunStatus::ok) {
+        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_dash(r.angle_of_repose, "{:.1f}"))
+                   : std::string(run_status_text(r.status)));
         if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], cell(r.error)));
         continue;
       }

@@ -38,7 +38,11 @@ bool compared(const Result& r) { return r.reference.available && r.engine != r.r
 // the error against the reference and the timing.
 std::vector<Column> columns() {
   std::vector<Column> out = {
-      {"status", [](const Result& r) { return r.diverged ? fmt::format("diverged@{}", r.diverged_step) : r.status; }, nullptr}};
+      {"status",
+       [](const Result& r) {
+         return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
+       },
+       nullptr}};
   for (const MetricDef& m : metric_catalog()) {
     if (m.column.empty()) continue;
     Column c{m.column, [&m](const Result& r) { return metric_text(m.get(r)); }, nullptr, &m};
@@ -86,10 +90,11 @@ std::string display_path(const std::string& source) {
 std::string times(int n) { return n == 1 ? "once" : fmt::format("{} times", n); }
 
 std::string verdict(const Result& r) {
-  if (r.status == "unsupported" || r.status == "failed" || r.status == "crashed" || r.status == "timed out")
-    return fmt::format("{}: {}", r.status, r.error);
+  if (r.status == RunStatus::unsupported || r.status == RunStatus::failed || r.status == RunStatus::crashed ||
+      r.status == RunStatus::timed_out)
+    return fmt::format("{}: {}", run_status_text(r.status), r.error);
   std::vector<std::string> parts;
-  if (r.diverged) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
+  if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   const auto& m = r.metrics;
   const int tunnels = m.tunnelling_wall + m.tunnelling_pair, sticks = m.sticking_wall + m.sticking_pair;
   parts.push_back(tunnels ? fmt::format("tunnelled {} ({} through walls, {} through balls)", times(tunnels),
@@ -162,14 +167,14 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
   // An engine and profile that refused the scene at every point is named once, with its reason.
   std::set<std::string> ran;  // labels with a point the engine did not refuse
   for (const SweepPoint& p : sw.points)
-    if (p.status != "unsupported") ran.insert(run_label(p.engine, p.profile));
+    if (p.status != RunStatus::unsupported) ran.insert(run_label(p.engine, p.profile));
   std::map<std::string, std::string> refused;  // label -> reason
   for (const SweepPoint& p : sw.points)
     if (!ran.contains(run_label(p.engine, p.profile))) refused.emplace(run_label(p.engine, p.profile), p.error);
   std::vector<std::string> failed;
   for (const SweepPoint& p : sw.points)
-    if (p.status != "ok" && !refused.contains(run_label(p.engine, p.profile)))
-      failed.push_back(fmt::format("{} {}: {}{}", run_label(p.engine, p.profile), setting_text(p), p.status,
+    if (p.status != RunStatus::ok && !refused.contains(run_label(p.engine, p.profile)))
+      failed.push_back(fmt::format("{} {}: {}{}", run_label(p.engine, p.profile), setting_text(p), run_status_text(p.status),
                                    p.error.empty() ? "" : " (" + p.error + ")"));
   if (!failed.empty()) put("\nPoints that did not complete: {}.\n", fmt::join(failed, "; "));
   for (const auto& [label, why] : refused) put("\n{} refused the scene at every point: {}.\n", label, table_cell(why));
@@ -413,7 +418,7 @@ void put_calibration(MarkdownBuffer& put, const CalibrationResult& c) {
           for (const CalibrationPoint& p : c.points)
             if (run_label(p.engine, p.profile) == label && p.contact == contact && p.requested == requested &&
                 p.speed == v)
-              cell = p.status == "ok" ? fmt::format("{:.3f}", p.effective) : p.status;
+              cell = p.measured() ? fmt::format("{:.3f}", p.effective) : calibration_status_text(p);
           put(" {} |", cell);
         }
       put("\n");
@@ -422,7 +427,7 @@ void put_calibration(MarkdownBuffer& put, const CalibrationResult& c) {
   }
   std::vector<std::string> notes;
   for (const CalibrationPoint& p : c.points)
-    if (p.status != "ok" && p.status != "unsupported" && !p.error.empty())
+    if (!p.measured() && p.status != RunStatus::unsupported && !p.error.empty())
       notes.push_back(fmt::format("{} {} e {} at {} m/s: {}", run_label(p.engine, p.profile), p.contact, p.requested,
                                   p.speed, table_cell(p.error)));
   if (!notes.empty()) put("Not measured: {}.\n\n", fmt::join(notes, "; "));
@@ -553,10 +558,10 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       const bool ran = r->steps_done > 0;
       for (const auto& c : cols) {
         std::string cell = ran || &c == &cols.front() ? c.text(*r) : "-";
-        if (c.value && r->status == "ok") {
+        if (c.value && r->status == RunStatus::ok) {
           double best = HUGE_VAL;
           for (const Result* o : rows)
-            if (o->status == "ok") best = std::min(best, c.value(*o));
+            if (o->status == RunStatus::ok) best = std::min(best, c.value(*o));
           if (rows.size() > 1 && c.value(*r) == best) cell = "**" + cell + "**";
         }
         put(" {} |", cell);

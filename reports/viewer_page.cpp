@@ -48,7 +48,7 @@ nlohmann::json run_json(const Result& r) {
   return {{"label", label(r)},
           {"engine", r.engine},
           {"profile", r.profile},
-          {"status", r.status},
+          {"status", run_status_text(r.status)},
           {"error", r.error},
           {"frame_t", r.series.frame_t},
           {"frames", std::move(frames)},

@@ -119,7 +119,7 @@ TEST(SpecTexts, SetAndDropTermsAndRefuseWhatIsNotOne) {
 
 Result ok_run() {
   Result r;
-  r.status = "ok";
+  r.status = RunStatus::ok;
   r.steps_done = 10;
   r.dt = 0.01;
   return r;
@@ -153,7 +153,7 @@ TEST(Judge, MeetsOnlyWhenEveryBoundTermIsWithinIt) {
 
   r = ok_run();
   r.jitter = 0;
-  r.status = "diverged";
+  r.status = RunStatus::diverged;
   r.error = "a ball left the container";
   EXPECT_FALSE(judge(spec, r).met);
 }

@@ -279,7 +279,7 @@ mass = 5e-324
   RunOptions o;
   o.profile = "stock";
   const Result r = run_engine_isolated(s, find_engine("chipmunk"), o, IsolationOptions{60, ""});
-  EXPECT_EQ(r.status, "crashed") << r.error;
+  EXPECT_EQ(r.status, RunStatus::crashed) << r.error;
   EXPECT_NE(r.error.find("SIGABRT"), std::string::npos) << r.error;
 }
 

@@ -145,7 +145,7 @@ TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
     RunOptions o;
     o.profile = profile;
     const Result r = run_engine(s, find_engine("lammps"), o);
-    ASSERT_EQ(r.status, "ok") << r.error;
+    ASSERT_EQ(r.status, RunStatus::ok) << r.error;
     ASSERT_TRUE(r.metrics.energy.max_rel_drift);
     const double drift = std::abs(r.metrics.energy.final - r.metrics.energy.initial) / r.metrics.energy.initial;
     std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %d\n", profile,
@@ -188,7 +188,7 @@ TEST(LammpsAdapter, SceneBeyondTheSubStepCapIsUnsupported) {
   RunOptions o;
   o.profile = "hooke";
   const Result r = run_engine(s, find_engine("lammps"), o);
-  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_EQ(r.status, RunStatus::unsupported);
   EXPECT_NE(r.error.find("above max_substeps = 5000"), std::string::npos) << r.error;
   // What it would have run with is recorded, as for a run: the settings and the sub-steps it needs.
   EXPECT_EQ(r.settings.value("max_substeps", 0), 5000) << r.settings.dump();
@@ -238,8 +238,8 @@ TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
   const Result one = run_engine(s, find_engine("lammps"), o);
   o.overrides["ranks"] = 2;
   const Result two = run_engine(s, find_engine("lammps"), o);
-  ASSERT_EQ(one.status, "ok") << one.error;
-  ASSERT_EQ(two.status, "ok") << two.error;
+  ASSERT_EQ(one.status, RunStatus::ok) << one.error;
+  ASSERT_EQ(two.status, RunStatus::ok) << two.error;
   EXPECT_EQ(two.metrics.samples, 5);  // steps 0, 5, 10, 15, 20
   EXPECT_EQ(two.metrics_config.sample_every, 5);
   EXPECT_NE(std::find_if(two.skipped.begin(), two.skipped.end(),
@@ -262,7 +262,7 @@ TEST(LammpsAdapter, IsDeterministic) {
   RunOptions o;
   o.profile = "hertz";  // the one with per-contact history
   const Result a = run_engine(small_box(), find_engine("lammps"), o), b = run_engine(small_box(), find_engine("lammps"), o);
-  ASSERT_EQ(a.status, "ok") << a.error;
+  ASSERT_EQ(a.status, RunStatus::ok) << a.error;
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
 
@@ -326,7 +326,7 @@ TEST(LammpsAdapter, SlidingBallRollsOnAtTheMomentsSpeed) {
   RunOptions o;
   o.profile = "hooke";
   const Result r = run_engine(sliding_ball("disk", 0.5), find_engine("lammps"), o);
-  EXPECT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.status, RunStatus::ok) << r.error;
   // 2 ranks, the spins from the dumps every 5 steps: the same spin as one rank (measured: equal
   // bits), the angle a trapezoid over 5 steps instead of 1, off at the kink only (measured 0.0030 rad).
   const Scene s = sliding_ball("disk", 0.5);
@@ -348,7 +348,7 @@ TEST(LammpsAdapter, ElasticHookeContactsRefuseFriction) {
   RunOptions o;
   o.profile = "hooke";
   const Result refused = run_engine(s, find_engine("lammps"), o);
-  EXPECT_EQ(refused.status, "unsupported");
+  EXPECT_EQ(refused.status, RunStatus::unsupported);
   EXPECT_NE(refused.error.find("would be ignored"), std::string::npos) << refused.error;
   const State hertz = run(s, "hertz", 50);
   EXPECT_NEAR(hertz.vel(0, 0) / 2.0, 1.0, 0.01);
@@ -403,7 +403,7 @@ TEST(LammpsAdapter, AFailedMpirunIsAFailedRunWithItsStderr) {
   o.profile = "hooke";
   o.overrides = {{"ranks", 2}, {"lmp", "false"}};
   const Result r = run_engine(small_box(), find_engine("lammps"), o);
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_NE(r.error.find("mpirun -np 2"), std::string::npos) << r.error;
   EXPECT_NE(r.error.find("exited with status"), std::string::npos) << r.error;
   EXPECT_NE(r.error.find("its stderr:"), std::string::npos) << r.error;

@@ -369,7 +369,7 @@ double seed_box_escapes(const std::string& engine, const std::string& profile) {
   o.profile = profile;
   const Scene s = load_scene("seed-box");
   const Result r = run_engine(s, find_engine(engine), o);
-  if (r.status != "ok") return HUGE_VAL;
+  if (r.status != RunStatus::ok) return HUGE_VAL;
   return r.metrics.tunnelling_wall;
 }
 
@@ -386,7 +386,7 @@ RoughCase build_rough(const std::string& engine, const std::string& profile, con
   if (!entry.info.caps.friction) {
     RunOptions o;
     o.profile = profile;
-    return {nullptr, run_engine(s, entry, o).status == "unsupported" ? 0.0 : HUGE_VAL};
+    return {nullptr, run_engine(s, entry, o).status == RunStatus::unsupported ? 0.0 : HUGE_VAL};
   }
   try {
     return {build(engine, profile, s), 0.0};

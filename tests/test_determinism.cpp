@@ -41,7 +41,7 @@ TEST_P(Deterministic, TwoRunsGiveTheSameChecksums) {
   const auto [engine, scene_name, steps] = GetParam();
   const Scene scene = load_scene(scene_name);
   const Result a = run(scene, engine, steps), b = run(scene, engine, steps);
-  ASSERT_EQ(a.status, "ok") << a.error;
+  ASSERT_EQ(a.status, RunStatus::ok) << a.error;
   ASSERT_EQ(a.checksum_trajectory.size(), 16u);
   EXPECT_EQ(a.checksum_final, b.checksum_final);
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);

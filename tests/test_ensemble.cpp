@@ -41,7 +41,7 @@ TEST(Ensemble, DifferencesOnTheSamePlacementsAreJudgedPaired) {
   }
   for (int k = 0; k < 2; ++k) {  // failed on two placements: one row, with no runs
     runs.push_back(run_of("broken", k, 1));
-    runs.back().status = "failed";
+    runs.back().status = RunStatus::failed;
   }
   const auto rows = summarise_ensemble(runs, "ours");
   const auto& names = ensemble_metrics();

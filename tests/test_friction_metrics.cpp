@@ -210,7 +210,7 @@ TEST(RequestedMetrics, AreReadAndCheckedAgainstWhatTheyNeed) {
 TEST(RequestedMetrics, AreComputedOnlyWhereAsked) {
   RunOptions o;
   const Result roll = run_engine(load_scene("slide-to-roll"), find_engine("box2d"), o);
-  ASSERT_EQ(roll.status, "ok") << roll.error;
+  ASSERT_EQ(roll.status, RunStatus::ok) << roll.error;
   ASSERT_TRUE(roll.rolling.speed && roll.rolling.expected_speed && roll.rolling.expected_time_to_roll);
   EXPECT_NEAR(*roll.rolling.speed, 2.0, 0.005 * 2.0);
   EXPECT_FALSE(roll.angle_of_repose);

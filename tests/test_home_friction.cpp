@@ -191,7 +191,7 @@ TEST(HomeSoftPath, RollsAtTheClosedFormSpeed) {
 // appears, and the rotation metrics are there.
 TEST(HomeRoughBox, NeitherTunnelsNorGainsEnergy) {
   const Result r = run_engine(load_scene("rough-box"), find_engine("home"), {});
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
   EXPECT_LE(r.metrics.energy.final, r.metrics.energy.initial);

@@ -105,7 +105,7 @@ Result isolated(const EngineEntry& e, double timeout_s = 30, long n = 50) {
 
 TEST(Isolation, ASegfaultIsACrashNamingTheSignal) {
   const Result r = isolated(test_engine("segv", Misbehaviour::Segfault));
-  EXPECT_EQ(r.status, "crashed");
+  EXPECT_EQ(r.status, RunStatus::crashed);
   EXPECT_NE(r.error.find("SIGSEGV"), std::string::npos) << r.error;
   EXPECT_EQ(r.engine, "segv");
   EXPECT_EQ(r.steps, 50);
@@ -114,25 +114,25 @@ TEST(Isolation, ASegfaultIsACrashNamingTheSignal) {
 
 TEST(Isolation, AnAbortIsACrashNamingTheSignal) {
   const Result r = isolated(test_engine("abort", Misbehaviour::Abort));
-  EXPECT_EQ(r.status, "crashed");
+  EXPECT_EQ(r.status, RunStatus::crashed);
   EXPECT_NE(r.error.find("SIGABRT"), std::string::npos) << r.error;
 }
 
 TEST(Isolation, AnExitWithoutAResultIsACrash) {
   const Result r = isolated(test_engine("exit", Misbehaviour::Exit3));
-  EXPECT_EQ(r.status, "crashed");
+  EXPECT_EQ(r.status, RunStatus::crashed);
   EXPECT_NE(r.error.find("exited with status 3"), std::string::npos) << r.error;
 }
 
 TEST(Isolation, AHangTimesOutAtTheLimit) {
   const Result r = isolated(test_engine("hang", Misbehaviour::Hang), 1.0);
-  EXPECT_EQ(r.status, "timed out");
+  EXPECT_EQ(r.status, RunStatus::timed_out);
   EXPECT_NE(r.error.find("time limit of 1 s"), std::string::npos) << r.error;
 }
 
 TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {
   const Result r = isolated(test_engine("throw", Misbehaviour::Throw));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_NE(r.error.find("step 5 threw: the test engine gave up"), std::string::npos) << r.error;
   EXPECT_EQ(r.steps_done, 4);  // the metrics of the steps before are kept
   EXPECT_EQ(r.metrics.samples, 5);
@@ -169,11 +169,11 @@ TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
   const long n = 40;
   const auto results = cli::run_all(box(), engines, "", steps(n), true, {true, 1.5}, csv);
   ASSERT_EQ(results.size(), 5u);
-  EXPECT_EQ(results[0].status, "ok");
-  EXPECT_EQ(results[1].status, "crashed");
-  EXPECT_EQ(results[2].status, "timed out");
-  EXPECT_EQ(results[3].status, "crashed");
-  EXPECT_EQ(results[4].status, "ok");
+  EXPECT_EQ(results[0].status, RunStatus::ok);
+  EXPECT_EQ(results[1].status, RunStatus::crashed);
+  EXPECT_EQ(results[2].status, RunStatus::timed_out);
+  EXPECT_EQ(results[3].status, RunStatus::crashed);
+  EXPECT_EQ(results[4].status, RunStatus::ok);
   for (int i : {0, 4}) {
     EXPECT_EQ(results[i].steps_done, n);
     EXPECT_EQ(results[i].metrics.samples, n + 1);
@@ -216,8 +216,8 @@ TEST(Isolation, TrajectoryIsTheSameWithAndWithoutIsolation) {
 
 TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
   const Result r = run_engine(box(), test_engine("nan", Misbehaviour::NonFinite, 7), steps(50));
-  EXPECT_EQ(r.status, "diverged");
-  EXPECT_TRUE(r.diverged);
+  EXPECT_EQ(r.status, RunStatus::diverged);
+  EXPECT_TRUE(r.diverged());
   EXPECT_EQ(r.diverged_step, 7);
   EXPECT_EQ(r.steps_done, 6);         // the last good step
   EXPECT_EQ(r.metrics.samples, 7);    // steps 0..6: the metrics before the bad state
@@ -240,18 +240,18 @@ Scene rough_box() {
 
 TEST(DivergingRun, ANonFiniteSpinStopsTheRunAtThatStep) {
   const Result r = run_engine(rough_box(), test_engine("inf", Misbehaviour::NonFiniteSpin, 4), steps(50));
-  EXPECT_EQ(r.status, "diverged");
+  EXPECT_EQ(r.status, RunStatus::diverged);
   EXPECT_EQ(r.diverged_step, 4);
   EXPECT_EQ(r.steps_done, 3);
 }
 
 TEST(FailedRun, AnEngineThatReadsBackNoSpinForARotatingSceneFails) {
   const Result r = run_engine(rough_box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_NE(r.error.find("step 6: the engine read back no angular velocities"), std::string::npos) << r.error;
   EXPECT_EQ(r.steps_done, 5);
   // The same engine on a scene that does not rotate owes none.
-  EXPECT_EQ(run_engine(box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50)).status, "ok");
+  EXPECT_EQ(run_engine(box(), test_engine("spinless", Misbehaviour::DropsSpin, 6), steps(50)).status, RunStatus::ok);
 }
 
 TEST(Reference, AConvergedRunStandsInWhereExactRefusesTheScene) {
@@ -300,7 +300,7 @@ TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
   // 200 E0 as there is no gravity; 4^3 = 64 < 200 < 256 = 4^4, so the fourth doubling, at step
   // 13, crosses it.
   const Result r = run_engine(box(), test_engine("grow", Misbehaviour::EnergyGrowth, 10), steps(50));
-  EXPECT_EQ(r.status, "diverged");
+  EXPECT_EQ(r.status, RunStatus::diverged);
   EXPECT_EQ(r.diverged_step, 13);
   EXPECT_EQ(r.steps_done, 13);  // the step that crossed the bound is observed, then the run stops
   EXPECT_NE(r.error.find("energy above 100 x"), std::string::npos) << r.error;
@@ -313,9 +313,9 @@ TEST(DivergingRun, OneDivergingEngineLeavesTheOthersRunning) {
   for (const bool isolate : {true, false}) {
     const auto results = cli::run_all(box(), engines, "", steps(20), true, {isolate, 60});
     ASSERT_EQ(results.size(), 2u);
-    EXPECT_EQ(results[0].status, "diverged") << results[0].error << (isolate ? " (isolated)" : "");
+    EXPECT_EQ(results[0].status, RunStatus::diverged) << results[0].error << (isolate ? " (isolated)" : "");
     EXPECT_EQ(results[0].diverged_step, 3);
-    EXPECT_EQ(results[1].status, "ok");
+    EXPECT_EQ(results[1].status, RunStatus::ok);
     EXPECT_EQ(results[1].steps_done, 20);
   }
 }
@@ -336,14 +336,14 @@ TEST(Isolation, AnInterruptBetweenRunsMarksTheNextRun) {
         install_interrupt_handlers();
         std::raise(SIGINT);
         auto results = cli::run_all(scene, engines, "", steps(5), true, {false, 60});
-        bool ok = results.size() == 1 && results[0].engine == "home-seed" && results[0].status == "interrupted" &&
+        bool ok = results.size() == 1 && results[0].engine == "home-seed" && results[0].status == RunStatus::interrupted &&
                   results[0].error.find("before this run started") != std::string::npos;
         // Between placements: the next placement's first run is marked, without drawing it.
         std::vector<Result> more{results[0]};
-        more[0].status = "ok";
+        more[0].status = RunStatus::ok;
         cli::run_further_placements(more, scene, 3, [](int) -> Scene { std::abort(); }, engines, "", steps(5), true,
                                     {false, 60});
-        ok = ok && more.size() == 2 && more[1].status == "interrupted" && more[1].seed_offset == 1;
+        ok = ok && more.size() == 2 && more[1].status == RunStatus::interrupted && more[1].seed_offset == 1;
         std::exit(ok ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "");
@@ -377,7 +377,7 @@ TEST(Isolation, TheRunIsToldByTheSignalThatCame) {
           std::raise(SIGTERM);
         }).detach();
         const Result r = run_engine_isolated(box(), slow, steps(50'000'000), {60, ""});
-        std::exit(r.status == "interrupted" && r.error.rfind("interrupted by SIGTERM after step", 0) == 0 ? 0 : 1);
+        std::exit(r.status == RunStatus::interrupted && r.error.rfind("interrupted by SIGTERM after step", 0) == 0 ? 0 : 1);
       },
       ::testing::ExitedWithCode(0), "");
 }

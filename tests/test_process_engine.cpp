@@ -73,7 +73,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   EXPECT_EQ(e.info.version, "1.0");
   EXPECT_FALSE(e.info.caps.friction);
   const Result r = run_engine(box(), e, steps(40));
-  EXPECT_EQ(r.status, "ok") << r.error;
+  EXPECT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.steps_done, 40);
   EXPECT_EQ(r.settings["pair_passes"], 1);
   EXPECT_EQ(r.settings["process"]["protocol"], 2);
@@ -88,7 +88,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
 TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   const EngineEntry e = process_engine_entry(spec({"python3", kExample}));
   const Result a = run_engine(box(), e, steps(20)), b = run_engine(box(), e, steps(20));
-  EXPECT_EQ(a.status, "ok") << a.error;
+  EXPECT_EQ(a.status, RunStatus::ok) << a.error;
   // A new scene replaces the world: the same run twice gives the same trajectory.
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
@@ -113,7 +113,7 @@ TEST(ProcessEngine, AProfileAfterAnotherInTheSameProcessHasItsOwnSettings) {
 
 TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
   const Result r = run_engine(box(), misbehaving("crash"), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "step 3 threw")) << r.error;
   EXPECT_TRUE(has(r.error, "exited with status 3")) << r.error;
   EXPECT_TRUE(has(r.error, "the misbehaving engine fell over")) << r.error;  // its stderr
@@ -122,7 +122,7 @@ TEST(ProcessEngine, ACrashIsAFailedRowWithTheEnginesStderr) {
 
 TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
   const Result r = run_engine(box(), misbehaving("hang", 0.5), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "sent no reply within the time limit")) << r.error;
 }
 
@@ -132,7 +132,7 @@ TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
                                    {"bad-ids", "ball id 0 at row 1 is not a new index"},
                                    {"error", "refused 'step': the solver lost track of ball 7"}}) {
     const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, "failed") << mode;
+    EXPECT_EQ(r.status, RunStatus::failed) << mode;
     EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
   }
 }
@@ -146,7 +146,7 @@ TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   const EngineEntry absent = process_engine_entry(named);
   EXPECT_TRUE(has(absent.info.unavailable, "is not found on PATH")) << absent.info.unavailable;
   const Result r = run_engine(box(), absent, steps(5));
-  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_EQ(r.status, RunStatus::unsupported);
   EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
   for (const auto& [mode, says] : {std::pair{"unavailable", "the frobnicator library is not installed"},
                                    {"protocol-3", "speaks protocol version 3"},
@@ -177,11 +177,11 @@ TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   // The hang outlives the run's own time limit: its row times out, as any engine's.
   const auto results = cli::run_all(box(), engines, "", steps(20), true, {true, 1.0});
   ASSERT_EQ(results.size(), 4u);
-  EXPECT_EQ(results[0].status, "ok");
-  EXPECT_EQ(results[1].status, "failed");
+  EXPECT_EQ(results[0].status, RunStatus::ok);
+  EXPECT_EQ(results[1].status, RunStatus::failed);
   EXPECT_TRUE(has(results[1].error, "the misbehaving engine fell over")) << results[1].error;
-  EXPECT_EQ(results[2].status, "timed out");
-  EXPECT_EQ(results[3].status, "ok");
+  EXPECT_EQ(results[2].status, RunStatus::timed_out);
+  EXPECT_EQ(results[3].status, RunStatus::ok);
 }
 
 // Rotation through the protocol: a scene that rotates (friction, or a ball that starts spinning)
@@ -251,7 +251,7 @@ TEST(ProcessEngine, NodeEnginesSlideToRollAtTheScenesInertia) {
         RunOptions o;
         o.profile = profile;
         const Result r = run_engine(scene, *e, o);
-        EXPECT_EQ(r.status, "ok") << label << ": " << r.error;
+        EXPECT_EQ(r.status, RunStatus::ok) << label << ": " << r.error;
         EXPECT_EQ(r.settings["derived"]["moment_of_inertia"], fmt::format("k m r^2 ({}, k = {})", inertia, k)) << label;
         // Stepped here, to read the states.
         const auto engine = e->create(scene, profile, merged_settings(scene, e->info.name, {}));
@@ -329,15 +329,15 @@ TEST(ProcessEngine, NodeEnginesKeepASpinAndTurnByIt) {
 TEST(ProcessEngine, ARotatingScenesStateWithoutWIsRefused) {
   const Scene scene = slide_to_roll("disk");
   const Result bad = run_engine(scene, misbehaving("no-w"), steps(5));  // w goes missing at step 3
-  EXPECT_EQ(bad.status, "failed");
+  EXPECT_EQ(bad.status, RunStatus::failed);
   EXPECT_TRUE(has(bad.error, "step 3 threw")) << bad.error;
   EXPECT_TRUE(has(bad.error, "sent a state without 'w' in reply to 'step'")) << bad.error;
   EXPECT_TRUE(has(bad.error, "the scene rotates")) << bad.error;
   EXPECT_EQ(bad.steps_done, 2);
   const Result good = run_engine(scene, misbehaving("none"), steps(5));
-  EXPECT_EQ(good.status, "ok") << good.error;
+  EXPECT_EQ(good.status, RunStatus::ok) << good.error;
   const Result flat = run_engine(box(), misbehaving("no-w"), steps(5));
-  EXPECT_EQ(flat.status, "ok") << flat.error;
+  EXPECT_EQ(flat.status, RunStatus::ok) << flat.error;
 }
 
 // The project's engines.toml: the Node engines appear in `ballbench list` with their pinned
@@ -411,7 +411,7 @@ TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {
        {std::pair{"twice", "sent more than one reply before 'step' was asked"},
         {"wrong-t", "sent a state at t = 270 s in reply to 'step' after 3 step(s), whose dts sum to 0.03 s"}}) {
     const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, "failed") << mode;
+    EXPECT_EQ(r.status, RunStatus::failed) << mode;
     EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
     EXPECT_LE(r.steps_done, 3) << mode;
   }
@@ -421,15 +421,15 @@ TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {
 // round-off; the same time from an engine that declares none is another clock.
 TEST(ProcessEngine, AFloatEnginesTimeIsCheckedToFloatsRoundOff) {
   const Result declared = run_engine(box(), misbehaving("float-t"), steps(200));
-  EXPECT_EQ(declared.status, "ok") << declared.error;
+  EXPECT_EQ(declared.status, RunStatus::ok) << declared.error;
   const Result undeclared = run_engine(box(), misbehaving("float-t-undeclared"), steps(200));
-  EXPECT_EQ(undeclared.status, "failed");
+  EXPECT_EQ(undeclared.status, RunStatus::failed);
   EXPECT_TRUE(has(undeclared.error, "sent a state at t = ")) << undeclared.error;
 }
 
 TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
   const Result r = run_engine(box(), misbehaving("huge-step-s"), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "no step time 'step_s' from 0 to 1e+06 s")) << r.error;
   ASSERT_TRUE(r.engine_process_s.has_value());
   EXPECT_LT(*r.engine_process_s, 1.0);
@@ -438,7 +438,7 @@ TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
 // A short block says how many bytes it lacked, whether the engine then closes its output or waits.
 TEST(ProcessEngine, AShortStateBlockSaysHowManyBytesAreMissing) {
   const Result r = run_engine(box(), misbehaving("short-block-alive", 3.0), steps(10));
-  EXPECT_EQ(r.status, "failed");
+  EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more within the time limit")) << r.error;
 }
 
@@ -470,15 +470,15 @@ TEST(ProcessEngine, AMinimalHandshakeClaimsNoFriction) {
   ASSERT_TRUE(version_1.info.unavailable.empty()) << version_1.info.unavailable;
   EXPECT_TRUE(version_1.info.caps.friction);
   const Result r = run_engine(slide_to_roll("disk"), minimal, steps(5));
-  EXPECT_EQ(r.status, "unsupported") << r.error;
-  EXPECT_EQ(run_engine(box(), minimal, steps(5)).status, "ok");
+  EXPECT_EQ(r.status, RunStatus::unsupported) << r.error;
+  EXPECT_EQ(run_engine(box(), minimal, steps(5)).status, RunStatus::ok);
 }
 
 // An engine refuses one scene with the reply kind `unsupported` and its reason.
 TEST(ProcessEngine, AnEngineRefusesASceneAsUnsupportedWithItsReason) {
   const EngineEntry e = misbehaving("unsupported");
   const Result r = run_engine(box(), e, steps(5));
-  EXPECT_EQ(r.status, "unsupported");
+  EXPECT_EQ(r.status, RunStatus::unsupported);
   EXPECT_TRUE(has(r.error, "misbehaving cannot run walls today")) << r.error;
 }
 
@@ -490,10 +490,10 @@ TEST(ProcessEngine, ASettingsErrorAnsweringTheSceneFailsOnlyItsRow) {
   for (const bool isolated : {true, false}) {
     const auto results = cli::run_all(box(), engines, "", steps(5), true, {isolated, 60});
     ASSERT_EQ(results.size(), 3u);
-    EXPECT_EQ(results[0].status, "ok");
-    EXPECT_EQ(results[1].status, "failed");
+    EXPECT_EQ(results[0].status, RunStatus::ok);
+    EXPECT_EQ(results[1].status, RunStatus::failed);
     EXPECT_TRUE(has(results[1].error, "refused its settings: settings.misbehaving.level")) << results[1].error;
-    EXPECT_EQ(results[2].status, "ok");
+    EXPECT_EQ(results[2].status, RunStatus::ok);
   }
 }
 
@@ -504,7 +504,7 @@ TEST(ProcessEngine, ASettingsErrorAnsweringTheSceneFailsOnlyItsRow) {
 TEST(ProcessEngine, AFarPositionIsMeasuredNotLost) {
   const EngineEntry far = misbehaving("far");
   const Result boxed = run_engine(box(), far, steps(10));
-  EXPECT_EQ(boxed.status, "diverged");
+  EXPECT_EQ(boxed.status, RunStatus::diverged);
   EXPECT_EQ(boxed.diverged_step, 3);
   const Scene open = parse_scene(R"(
 name = "open-far"
@@ -539,7 +539,7 @@ TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
   {
     const EngineEntry e = process_engine_entry(spec({"python3", kMisbehaving, "helper", pid_file}));
     ASSERT_TRUE(e.info.unavailable.empty()) << e.info.unavailable;
-    EXPECT_EQ(run_engine(box(), e, steps(5)).status, "ok");
+    EXPECT_EQ(run_engine(box(), e, steps(5)).status, RunStatus::ok);
   }  // the entry and its idle process are gone
   std::ifstream in(pid_file);
   long pid = 0;

@@ -70,7 +70,7 @@ Result run_soft(Scene scene, nlohmann::json settings = nlohmann::json::object())
 TEST(HomeSoft, PileComesToRestWithoutTunnellingOrSticking) {
   const Scene scene = load_scene("pile");
   const Result r = run_soft(scene);
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
   EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
@@ -100,7 +100,7 @@ seed = 11
 )";
   const Scene scene = parse_scene(text, "other-pile");
   const Result r = run_soft(scene);
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
   EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
@@ -112,7 +112,7 @@ seed = 11
 // soft path keeps without it.
 TEST(HomeSoft, ASleepingPileEndsAtRestWithoutTunnellingOrSticking) {
   const Result r = run_soft(load_scene("pile"), {{"sleep_speed", 0.05}});
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
   EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
@@ -141,7 +141,7 @@ radius = 0.25
 )";
   const Scene scene = parse_scene(text, "landing");
   const Result sleeping = run_soft(scene, {{"sleep_speed", 0.05}});
-  ASSERT_EQ(sleeping.status, "ok") << sleeping.error;
+  ASSERT_EQ(sleeping.status, RunStatus::ok) << sleeping.error;
   EXPECT_EQ(sleeping.metrics.tunnelling_pair, 0);
   std::unique_ptr<Engine> e = find_engine("home").create(scene, "default", {{"resting", "soft"}, {"sleep_speed", 0.05}});
   State s;
@@ -157,7 +157,7 @@ TEST(HomeSoft, SeedBowlEndsNearExactsEnergy) {
   const Scene scene = load_scene("seed-bowl");
   const Result soft = run_soft(scene);
   const Result exact = run_engine(scene, find_engine("exact"), {});
-  ASSERT_EQ(soft.status, "ok") << soft.error;
+  ASSERT_EQ(soft.status, RunStatus::ok) << soft.error;
   EXPECT_EQ(soft.metrics.tunnelling_wall + soft.metrics.tunnelling_pair, 0);
   EXPECT_EQ(soft.metrics.sticking_wall + soft.metrics.sticking_pair, 0);
   // seed-bowl is chaotic: its final energy after 30 s moves by about 2% with any change to the
@@ -188,7 +188,7 @@ radius = 0.25
 )";
   const Scene scene = parse_scene(text, "fall-onto");
   const Result r = run_soft(scene);
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_LT(r.metrics.penetration_max, 0.01);  // measured 0.0036 of a radius: the landing at 17 m/s compresses the spring
   std::unique_ptr<Engine> e = find_engine("home").create(scene, "default", {{"resting", "soft"}});
@@ -259,16 +259,16 @@ seed = 2017
 )";
   const Scene scene = parse_scene(text, "fluid-1000");
   const Result r = run_soft(scene);
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial);
-  EXPECT_EQ(run_soft(scene, {{"max_stride", 1e9}}).status, "diverged");
+  EXPECT_EQ(run_soft(scene, {{"max_stride", 1e9}}).status, RunStatus::diverged);
 }
 
 TEST(HomeSoft, ScenesWithoutGravityKeepTheEventDrivenPath) {
   const Scene scene = load_scene("seed-box");
   const Result soft = run_soft(scene);
   const Result events = run_engine(scene, find_engine("home"), {});
-  ASSERT_EQ(soft.status, "ok") << soft.error;
+  ASSERT_EQ(soft.status, RunStatus::ok) << soft.error;
   EXPECT_EQ(soft.checksum_trajectory, events.checksum_trajectory);
 }
 

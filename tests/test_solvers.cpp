@@ -20,7 +20,7 @@ Result run(const std::string& scene, const std::string& engine) {
 
 TEST(HomeSeed, ReproducesTheThesisBowlSticking) {
   const Result r = run("seed-bowl", "home-seed");
-  EXPECT_EQ(r.status, "ok");
+  EXPECT_EQ(r.status, RunStatus::ok);
   EXPECT_GT(r.metrics.sticking_pair, 0);  // the thesis: balls "stayed on top of each other"
 }
 
@@ -33,7 +33,7 @@ class HomeOnSeedScenes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(HomeOnSeedScenes, NeitherTunnelsNorSticks) {
   const Result r = run(GetParam(), "home");
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall, 0);
   EXPECT_EQ(r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall, 0);
@@ -51,7 +51,7 @@ TEST_P(HomeOnTheBowl, NeitherTunnelsNorSticksAtOtherSteps) {
   Scene s = load_scene("seed-bowl");
   s.dt = GetParam();
   const Result r = run_engine(s, find_engine("home"), {});
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0);
   EXPECT_EQ(r.metrics.sticking_wall + r.metrics.sticking_pair, 0);
 }
@@ -77,7 +77,7 @@ TEST(HomeOnTheBowl, HoldsInAnyBallOrder) {
     for (double dt : {0.01, 0.005}) {
       s.dt = dt;
       const Result r = run_engine(s, find_engine("home"), {});
-      ASSERT_EQ(r.status, "ok") << "shuffle " << shuffle << ", dt " << dt << ": " << r.error;
+      ASSERT_EQ(r.status, RunStatus::ok) << "shuffle " << shuffle << ", dt " << dt << ": " << r.error;
       // Restitution 0.99 and resting contact only take energy out.
       EXPECT_LT(r.metrics.energy.final, r.metrics.energy.initial) << "shuffle " << shuffle << ", dt " << dt;
       EXPECT_EQ(r.metrics.tunnelling_wall + r.metrics.tunnelling_pair, 0) << "shuffle " << shuffle << ", dt " << dt;

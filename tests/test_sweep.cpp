@@ -31,7 +31,7 @@ TEST(SweepPareto, KeepsThePointsNoOtherBeatsInBothTimeAndError) {
   std::vector<SweepPoint> ps{point("a", 1, 5), point("a", 2, 3), point("a", 3, 4), point("a", 4, 1),
                              point("b", 10, 10), point("a", 0.5, 6)};
   ps.push_back(point("a", 0.1, 0.5));
-  ps.back().status = "diverged";  // a failed run is on no front, however fast
+  ps.back().status = RunStatus::diverged;  // a failed run is on no front, however fast
   mark_pareto(ps);
   const std::vector<bool> want{true, true, false, true, true, true, false};
   for (size_t k = 0; k < ps.size(); ++k) EXPECT_EQ(ps[k].pareto, want[k]) << k;
@@ -106,11 +106,11 @@ TEST_F(SweepCli, WritesJsonAndCsvAndPrintsEachEnginesFront) {
   int fronts_home = 0, fronts_box2d = 0;
   for (const SweepPoint& p : s.points) {
     if (p.engine == "home" && p.profile == "soft") {  // home's soft profile refuses a scene without gravity
-      EXPECT_EQ(p.status, "unsupported") << p.knob;
+      EXPECT_EQ(p.status, RunStatus::unsupported) << p.knob;
       EXPECT_TRUE(p.engine_s.empty()) << p.knob;  // a refused point is not timed
       continue;
     }
-    ASSERT_EQ(p.status, "ok") << p.engine << " " << p.knob;
+    ASSERT_EQ(p.status, RunStatus::ok) << p.engine << " " << p.knob;
     EXPECT_EQ(p.engine_s.size(), 2u);
     EXPECT_EQ(p.ns_per_ball_step.size(), 2u);
     EXPECT_GT(p.pos_rms, 0);  // nobody tracks a chaotic 20-ball gas to round-off for 0.2 s
@@ -158,7 +158,7 @@ TEST_F(SweepCli, ThreeShardsMergedEqualTheWholeSweepButForTiming) {
     EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
               std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
         << where;
-    EXPECT_EQ(q.engine_s.size(), q.status == "ok" ? 1u : 0u) << where;  // a refused point is not timed
+    EXPECT_EQ(q.engine_s.size(), q.status == RunStatus::ok ? 1u : 0u) << where;  // a refused point is not timed
   }
   EXPECT_TRUE(fs::exists(dir_ / "merged.csv"));
 }

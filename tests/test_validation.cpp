@@ -92,7 +92,7 @@ TEST_P(Validation, ProjectileErrorShowsTheIntegratorsOrder) {
 TEST_P(Validation, ElasticGasKeepsItsEnergyAndBecomesRayleigh) {
   const Scene s = load_scene("gas");
   const Result r = run_engine(s, find_engine(GetParam()), {});
-  ASSERT_EQ(r.status, "ok") << r.error;
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_LT(*r.metrics.energy.max_rel_drift, 1e-12);  // elastic: round-off of ~10^5 impulses
   ASSERT_TRUE(r.speed_ks.has_value());
   EXPECT_LT(*r.speed_ks, *r.speed_ks_critical);  // Rayleigh not rejected at the 1% level

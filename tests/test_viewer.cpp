@@ -177,7 +177,7 @@ TEST(ViewerPage, AReportPageOfEveryRunStaysUnderItsBound) {
   options.frames = viewer_frames(scene, runs);
   options.reference = nullptr;
   Result run = run_engine(scene, find_engine("home"), options);
-  ASSERT_EQ(run.status, "ok") << run.error;
+  ASSERT_EQ(run.status, RunStatus::ok) << run.error;
   ASSERT_GE(run.series.frames.size(), 80u);  // the GIF's frames and more
   // The longest numbers a box of [-5, 5]^2 puts on the page, in every event's place.
   for (auto& frame : run.series.frames)
@@ -197,7 +197,7 @@ TEST(ViewerPage, AReportPageOfEveryRunStaysUnderItsBound) {
 
 TEST(ViewerPage, EscapesWhatWouldEndItsScriptElement) {
   Result r;
-  r.scene = "s", r.n = 1, r.engine = "e", r.status = "failed", r.error = "</script><b>";
+  r.scene = "s", r.n = 1, r.engine = "e", r.status = RunStatus::failed, r.error = "</script><b>";
   r.series.frames = {{{0.0, 0.0}}};
   r.series.frame_t = {0.0};
   const std::string page = viewer_page({&r});

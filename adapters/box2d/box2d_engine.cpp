@@ -61,6 +61,32 @@ std::string b2_version_string() {
   return fmt::format("{}.{}.{}", b2_version.major, b2_version.minor, b2_version.revision);
 }
 
+// box2d's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings box2d` come from these rows (the compile-time constants above are not settings).
+const SettingsTable<Box2dSettings>& box2d_settings_table() {
+  using S = Box2dSettings;
+  static const SettingsTable<S> table(
+      "box2d",
+      {setting("velocity_iterations", &S::velocity_iterations, at_least(1, "0 solves no contact at all"), "count",
+               "sequential-impulse sweeps over all contacts per step"),
+       setting("position_iterations", &S::position_iterations, at_least(0), "count",
+               "sweeps pushing overlaps apart per step"),
+       // Box2D applies restitution when the approach speed exceeds the threshold; a negative one
+       // would push apart contacts that are already separating.
+       setting("restitution_threshold", &S::restitution_threshold, at_least(0, "m/s"), "m/s",
+               "approach speed below which a contact does not bounce"),
+       setting("bullet", &S::bullet, any_value, "", "balls are bullets: time of impact against each other too"),
+       setting("allow_sleep", &S::allow_sleep, any_value, "", "bodies slow for b2_timeToSleep freeze"),
+       choice("fixed_rotation", &S::fixed_rotation,
+              {{FixedRotation::automatic, "auto"}, {FixedRotation::always, "always"}, {FixedRotation::never, "never"}},
+              "balls do not turn: auto, when the scene is frictionless"),
+       setting("warm_starting", &S::warm_starting, any_value, "", "each solve starts from the last step's impulses"),
+       setting("continuous_physics", &S::continuous_physics, any_value, "", "time-of-impact handling at all"),
+       setting("sub_stepping", &S::sub_stepping, any_value, "",
+               "at most one time-of-impact event per step (debugging)")});
+  return table;
+}
+
 class Box2dEngine final : public Engine {
  public:
   Box2dEngine(const Scene& scene, const Box2dSettings& s)
@@ -68,7 +94,8 @@ class Box2dEngine final : public Engine {
         world_(b2Vec2(static_cast<float>(scene.gravity.x()), static_cast<float>(scene.gravity.y()))),
         dt_(scene.dt),
         rotation_(scene.features().rotation),
-        fixed_rotation_(s.fixed_rotation == "always" || (s.fixed_rotation == "auto" && !rotation_)) {
+        fixed_rotation_(s.fixed_rotation == FixedRotation::always ||
+                        (s.fixed_rotation == FixedRotation::automatic && !rotation_)) {
     inertia_label_ = fmt::format("{} m r^2 ({})", inertia_factor(scene.inertia), inertia_name(scene.inertia));
     world_.SetAllowSleeping(s.allow_sleep);
     world_.SetWarmStarting(s.warm_starting);
@@ -103,22 +130,14 @@ class Box2dEngine final : public Engine {
     for (const auto& c : compile_time_constants())
       constants[c.key] = c.count ? nlohmann::json(static_cast<int>(c.value)) : nlohmann::json(c.value);
     constants["real"] = "float32";
-    return {{"velocity_iterations", s_.velocity_iterations},
-            {"position_iterations", s_.position_iterations},
-            {"restitution_threshold", s_.restitution_threshold},
-            {"bullet", s_.bullet},
-            {"allow_sleep", s_.allow_sleep},
-            {"fixed_rotation", s_.fixed_rotation},
-            {"warm_starting", s_.warm_starting},
-            {"continuous_physics", s_.continuous_physics},
-            {"sub_stepping", s_.sub_stepping},
-            {"compile_time", constants},
-            // What the knobs and constants mean for this scene.
-            {"derived",
-             {{"b2_version", b2_version_string()},
-              {"fixed_rotation", fixed_rotation_},
-              {"moment_of_inertia", inertia_label_},
-              {"max_speed", b2_maxTranslation / dt_}}}};  // m/s: faster balls are slowed to it
+    nlohmann::json j = box2d_settings_table().json(s_);
+    j["compile_time"] = constants;
+    // What the knobs and constants mean for this scene.
+    j["derived"] = {{"b2_version", b2_version_string()},
+                    {"fixed_rotation", fixed_rotation_},
+                    {"moment_of_inertia", inertia_label_},
+                    {"max_speed", b2_maxTranslation / dt_}};  // m/s: faster balls are slowed to it
+    return j;
   }
 
  private:
@@ -230,6 +249,7 @@ EngineEntry box2d_engine() {
   info.profiles = {"tuned", "stock"};
   // Solver sweeps and both kinds of continuous collision (b2World::SetContinuousPhysics for
   // ball-wall, b2BodyDef::bullet for ball-ball).
+  info.settings = box2d_settings_table().describe();
   info.sweep_knobs = {{"velocity_iterations", {2, 8, 32}},
                       {"position_iterations", {1, 3, 10}},
                       {"continuous_physics", {false, true}},
@@ -248,24 +268,7 @@ EngineEntry box2d_engine() {
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             Box2dSettings s = box2d_profile(profile);
             refuse_compile_time_overrides(overrides);
-            SettingsReader r("box2d", overrides);
-            r.get("velocity_iterations", s.velocity_iterations);
-            r.get("position_iterations", s.position_iterations);
-            r.get("restitution_threshold", s.restitution_threshold);
-            r.get("bullet", s.bullet);
-            r.get("allow_sleep", s.allow_sleep);
-            r.get("fixed_rotation", s.fixed_rotation, {"auto", "always", "never"});
-            r.get("warm_starting", s.warm_starting);
-            r.get("continuous_physics", s.continuous_physics);
-            r.get("sub_stepping", s.sub_stepping);
-            r.finish();
-            if (s.velocity_iterations < 1)
-              throw InputError("settings.box2d.velocity_iterations: must be >= 1 (0 solves no contact at all)");
-            if (s.position_iterations < 0) throw InputError("settings.box2d.position_iterations: must be >= 0");
-            // Box2D applies restitution when the approach speed exceeds the threshold; a negative one
-            // would push apart contacts that are already separating.
-            if (s.restitution_threshold < 0)
-              throw InputError("settings.box2d.restitution_threshold: must be >= 0 (m/s)");
+            box2d_settings_table().read(overrides, s);
             return std::unique_ptr<Engine>(std::make_unique<Box2dEngine>(scene, s));
           }};
 }

@@ -7,6 +7,9 @@
 
 namespace ballbench {
 
+// Box2dSettings::fixed_rotation: "auto", "always", "never" in the settings.
+enum class FixedRotation { automatic, always, never };
+
 // Every run-time knob of Box2D 2.4.1 that can change a ball's trajectory. The defaults are the
 // "tuned" profile; box2d_profile() gives each profile's values.
 struct Box2dSettings {
@@ -28,7 +31,7 @@ struct Box2dSettings {
   bool allow_sleep = false;
   /// "auto": fixed rotation exactly when the scene is frictionless (a frictionless ball never
   /// spins, so its rotation is noise); "always" or "never" force it.
-  std::string fixed_rotation = "auto";
+  FixedRotation fixed_rotation = FixedRotation::automatic;
   /// Start each step's solve from the previous step's contact impulses (b2World::SetWarmStarting).
   bool warm_starting = true;
   /// Time-of-impact handling at all (b2World::SetContinuousPhysics); off, even walls can be

@@ -23,6 +23,37 @@ std::string bullet_version() {
   return fmt::format("{}.{:02d}", v / 100, v % 100);
 }
 
+// bullet's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings bullet` come from these rows.
+const SettingsTable<BulletSettings>& bullet_settings_table() {
+  using S = BulletSettings;
+  static const SettingsTable<S> table(
+      "bullet",
+      {setting("solver_iterations", &S::solver_iterations, at_least(1).says("must be at least 1"), "count",
+               "sequential-impulse sweeps per step"),
+       setting("substeps", &S::substeps, at_least(1).says("must be at least 1"), "count",
+               "Bullet's internal steps per step"),
+       setting("split_impulse", &S::split_impulse, any_value, "", "push-out by a velocity thrown away after the step"),
+       setting("split_impulse_penetration_threshold", &S::split_impulse_penetration_threshold, any_value, "m",
+               "penetration (negative) deeper than this uses split impulse"),
+       setting("erp", &S::erp, any_value, "1", "Baumgarte factor without split impulse, per step"),
+       setting("erp2", &S::erp2, any_value, "1", "Baumgarte factor of the split-impulse push, per step"),
+       setting("restitution_velocity_threshold", &S::restitution_velocity_threshold, any_value, "m/s",
+               "approach speed below which a contact does not bounce"),
+       setting("warmstarting_factor", &S::warmstarting_factor, any_value, "1",
+               "fraction of last step's impulse applied first"),
+       setting("linear_slop", &S::linear_slop, any_value, "m", "penetration the solver leaves uncorrected"),
+       setting("contact_processing_threshold", &S::contact_processing_threshold, any_value, "m",
+               "contacts farther apart than this are not solved"),
+       setting("ccd_motion_threshold", &S::ccd_motion_threshold, at_least(0), "radii",
+               "CCD clamps a ball moving more than this per step; 0: off"),
+       setting("ccd_swept_sphere_radius", &S::ccd_swept_sphere_radius, within(0, 1).says("must be in [0, 1] radii"),
+               "radii", "radius of the core CCD sweeps"),
+       setting("speculative_contact_restitution", &S::speculative_contact_restitution, any_value, "",
+               "restitution on CCD's predictive contacts")});
+  return table;
+}
+
 class BulletWorld final : public Engine {
  public:
   BulletWorld(const Scene& scene, const BulletSettings& s)
@@ -88,20 +119,9 @@ class BulletWorld final : public Engine {
   }
 
   nlohmann::json settings() const override {
-    return {{"solver_iterations", s_.solver_iterations},
-            {"substeps", s_.substeps},
-            {"split_impulse", s_.split_impulse},
-            {"split_impulse_penetration_threshold", s_.split_impulse_penetration_threshold},
-            {"erp", s_.erp},
-            {"erp2", s_.erp2},
-            {"restitution_velocity_threshold", s_.restitution_velocity_threshold},
-            {"warmstarting_factor", s_.warmstarting_factor},
-            {"linear_slop", s_.linear_slop},
-            {"contact_processing_threshold", s_.contact_processing_threshold},
-            {"ccd_motion_threshold", s_.ccd_motion_threshold},
-            {"ccd_swept_sphere_radius", s_.ccd_swept_sphere_radius},
-            {"speculative_contact_restitution", s_.speculative_contact_restitution},
-            {"derived", {{"moment_of_inertia", inertia_label_}}}};
+    nlohmann::json j = bullet_settings_table().json(s_);
+    j["derived"] = {{"moment_of_inertia", inertia_label_}};
+    return j;
   }
 
   double out_of_plane() const override {
@@ -197,26 +217,7 @@ class BulletWorld final : public Engine {
 // Reads the overrides on top of a profile's settings.
 BulletSettings read_settings(const std::string& profile, const nlohmann::json& overrides) {
   BulletSettings s = bullet_profile(profile);
-  SettingsReader r("bullet", overrides);
-  r.get("solver_iterations", s.solver_iterations);
-  r.get("substeps", s.substeps);
-  r.get("split_impulse", s.split_impulse);
-  r.get("split_impulse_penetration_threshold", s.split_impulse_penetration_threshold);
-  r.get("erp", s.erp);
-  r.get("erp2", s.erp2);
-  r.get("restitution_velocity_threshold", s.restitution_velocity_threshold);
-  r.get("warmstarting_factor", s.warmstarting_factor);
-  r.get("linear_slop", s.linear_slop);
-  r.get("contact_processing_threshold", s.contact_processing_threshold);
-  r.get("ccd_motion_threshold", s.ccd_motion_threshold);
-  r.get("ccd_swept_sphere_radius", s.ccd_swept_sphere_radius);
-  r.get("speculative_contact_restitution", s.speculative_contact_restitution);
-  r.finish();
-  if (s.solver_iterations < 1) throw InputError("settings.bullet.solver_iterations: must be at least 1");
-  if (s.substeps < 1) throw InputError("settings.bullet.substeps: must be at least 1");
-  if (s.ccd_motion_threshold < 0) throw InputError("settings.bullet.ccd_motion_threshold: must be >= 0");
-  if (s.ccd_swept_sphere_radius < 0 || s.ccd_swept_sphere_radius > 1)
-    throw InputError("settings.bullet.ccd_swept_sphere_radius: must be in [0, 1] radii");
+  bullet_settings_table().read(overrides, s);
   return s;
 }
 
@@ -252,6 +253,7 @@ EngineEntry bullet_engine() {
   info.summary = "Bullet Physics (float), 3D spheres held to the plane; sequential impulses";
   info.profiles = {"tuned", "stock"};
   // Solver sweeps, Bullet's own sub-stepping and CCD off / on (threshold in radii, 0 = off).
+  info.settings = bullet_settings_table().describe();
   info.sweep_knobs = {{"solver_iterations", {4, 10, 50}}, {"substeps", {1, 2, 4}}, {"ccd_motion_threshold", {0.0, 1.0}}};
   // As in the default profile, "tuned" (README.md says what "stock" lacks).
   info.caps.any_restitution = true;        // restitution_velocity_threshold = 0

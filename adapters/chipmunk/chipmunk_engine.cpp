@@ -102,6 +102,37 @@ std::string version_string() {
 #endif
 }
 
+// chipmunk's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings chipmunk` come from these rows.
+const SettingsTable<ChipmunkSettings>& chipmunk_settings_table() {
+  using S = ChipmunkSettings;
+  static const SettingsTable<S> table(
+      "chipmunk",
+      {// cpSpaceSetIterations asserts iterations > 0 (an abort, not an error), so it is refused here.
+       setting("iterations", &S::iterations, at_least(1), "count",
+               "sequential-impulse sweeps over all contacts per step"),
+       setting("collision_slop", &S::collision_slop, at_least(0, "m"), "m", "overlap the solver leaves alone"),
+       // The manual: "Valid values are in the range from 0 to 1, but using 0 is not recommended".
+       setting("collision_bias", &S::collision_bias,
+               within(0, 1).says("must be from 0 to 1 (the fraction of overlap left after 1 s)"), "1",
+               "fraction of the overlap beyond the slop left after 1 s"),
+       setting("collision_persistence", &S::collision_persistence, at_least(1, "steps a contact is remembered"),
+               "count", "steps a contact's impulse is kept after it ends"),
+       setting("wall_radius", &S::wall_radius,
+               bound([](double r) { return std::isfinite(r); }, "",
+                     "must be a number of metres (negative: derived from the box)"),
+               "m", "radius of the wall segments; negative: derived from the box"),
+       choice("spatial_index", &S::spatial_index, {{SpatialIndex::bbtree, "bbtree"}, {SpatialIndex::hash, "hash"}},
+              "broad phase: bounding-box tree or spatial hash"),
+       setting("hash_cell", &S::hash_cell, above(0, "m"), "m", "spatial hash cell edge"),
+       setting("hash_count", &S::hash_count, at_least(1), "count", "spatial hash's least number of cells"),
+       setting("allow_sleep", &S::allow_sleep, any_value, "", "groups idle for sleep_time_threshold freeze"),
+       setting("sleep_time_threshold", &S::sleep_time_threshold, above(0, "s"), "s", "idle time before a group sleeps"),
+       setting("idle_speed_threshold", &S::idle_speed_threshold, at_least(0, "m/s; 0 lets Chipmunk derive it"), "m/s",
+               "speed below which a body is idle; 0: |g| dt")});
+  return table;
+}
+
 class ChipmunkEngine final : public Engine {
  public:
   ChipmunkEngine(const Scene& scene, const ChipmunkSettings& s)
@@ -115,7 +146,7 @@ class ChipmunkEngine final : public Engine {
     cpSpaceSetDamping(space_, 1.0);  // no damping (Chipmunk's default)
     cpSpaceSetSleepTimeThreshold(space_, s.allow_sleep ? s.sleep_time_threshold : INFINITY);
     cpSpaceSetIdleSpeedThreshold(space_, s.idle_speed_threshold);
-    if (s.spatial_index == "hash") cpSpaceUseSpatialHash(space_, s.hash_cell, s.hash_count);
+    if (s.spatial_index == SpatialIndex::hash) cpSpaceUseSpatialHash(space_, s.hash_cell, s.hash_count);
     // Chipmunk multiplies the two shapes' elasticities and frictions (cpArbiter: e = a->e * b->e,
     // u = a->u * b->u), so every shape, walls included, gets the square root: each contact then
     // uses the scene's value.
@@ -160,31 +191,27 @@ class ChipmunkEngine final : public Engine {
   nlohmann::json settings() const override {
     // The solver's values as the space holds them, so the record is what is in force.
     const double bias = cpSpaceGetCollisionBias(space_);
-    return {{"iterations", cpSpaceGetIterations(space_)},
-            {"collision_slop", cpSpaceGetCollisionSlop(space_)},
-            {"collision_bias", bias},
-            {"collision_persistence", cpSpaceGetCollisionPersistence(space_)},
-            {"wall_radius", wall_radius_},
-            {"spatial_index", s_.spatial_index},
-            {"hash_cell", s_.hash_cell},
-            {"hash_count", s_.hash_count},
-            {"allow_sleep", s_.allow_sleep},
-            {"sleep_time_threshold", s_.sleep_time_threshold},
-            {"idle_speed_threshold", cpSpaceGetIdleSpeedThreshold(space_)},
-            {"compile_time",
-             {{"real", "float64"},
-              {"version_string", cpVersionString},
-              // The library announced itself as a debug build: assertions are compiled in, and a
-              // failed one aborts the process.
-              {"debug_build", debug_banner().find("Debug Enabled") != std::string::npos}}},
-            // What the knobs mean for this scene.
-            {"derived",
-             {{"sleeping", std::isfinite(cpSpaceGetSleepTimeThreshold(space_))},
-              {"damping", cpSpaceGetDamping(space_)},                 // 1: none
-              {"overlap_removed_per_step", 1.0 - std::pow(bias, dt_)},  // of the depth beyond the slop
-              {"shape_elasticity", elasticity_},
-              {"shape_friction", friction_},
-              {"moment_of_inertia", inertia_label_}}}};
+    nlohmann::json j = chipmunk_settings_table().json(s_);
+    // The solver's values as the space holds them, so the record is what is in force.
+    j["iterations"] = cpSpaceGetIterations(space_);
+    j["collision_slop"] = cpSpaceGetCollisionSlop(space_);
+    j["collision_bias"] = bias;
+    j["collision_persistence"] = cpSpaceGetCollisionPersistence(space_);
+    j["wall_radius"] = wall_radius_;
+    j["idle_speed_threshold"] = cpSpaceGetIdleSpeedThreshold(space_);
+    j["compile_time"] = {{"real", "float64"},
+                         {"version_string", cpVersionString},
+                         // The library announced itself as a debug build: assertions are compiled
+                         // in, and a failed one aborts the process.
+                         {"debug_build", debug_banner().find("Debug Enabled") != std::string::npos}};
+    // What the knobs mean for this scene.
+    j["derived"] = {{"sleeping", std::isfinite(cpSpaceGetSleepTimeThreshold(space_))},
+                    {"damping", cpSpaceGetDamping(space_)},                   // 1: none
+                    {"overlap_removed_per_step", 1.0 - std::pow(bias, dt_)},  // of the depth beyond the slop
+                    {"shape_elasticity", elasticity_},
+                    {"shape_friction", friction_},
+                    {"moment_of_inertia", inertia_label_}};
+    return j;
   }
 
  private:
@@ -234,24 +261,6 @@ class ChipmunkEngine final : public Engine {
   double t_ = 0;
 };
 
-void validate(const ChipmunkSettings& s) {
-  // cpSpaceSetIterations asserts iterations > 0 (an abort, not an error), so it is refused here.
-  if (s.iterations < 1) throw InputError("settings.chipmunk.iterations: must be >= 1");
-  if (!(s.collision_slop >= 0)) throw InputError("settings.chipmunk.collision_slop: must be >= 0 (m)");
-  // The manual: "Valid values are in the range from 0 to 1, but using 0 is not recommended".
-  if (!(s.collision_bias >= 0 && s.collision_bias <= 1))
-    throw InputError("settings.chipmunk.collision_bias: must be from 0 to 1 (the fraction of overlap left after 1 s)");
-  if (s.collision_persistence < 1)
-    throw InputError("settings.chipmunk.collision_persistence: must be >= 1 (steps a contact is remembered)");
-  if (!std::isfinite(s.wall_radius))
-    throw InputError("settings.chipmunk.wall_radius: must be a number of metres (negative: derived from the box)");
-  if (!(s.hash_cell > 0)) throw InputError("settings.chipmunk.hash_cell: must be > 0 (m)");
-  if (s.hash_count < 1) throw InputError("settings.chipmunk.hash_count: must be >= 1");
-  if (!(s.sleep_time_threshold > 0)) throw InputError("settings.chipmunk.sleep_time_threshold: must be > 0 (s)");
-  if (!(s.idle_speed_threshold >= 0))
-    throw InputError("settings.chipmunk.idle_speed_threshold: must be >= 0 (m/s; 0 lets Chipmunk derive it)");
-}
-
 }  // namespace
 
 ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene) {
@@ -261,7 +270,7 @@ ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene
   s.collision_slop = d.collision_slop;
   s.collision_bias = d.collision_bias;
   s.collision_persistence = static_cast<int>(d.collision_persistence);
-  s.spatial_index = "bbtree";  // cpSpaceInit's index: cpBBTreeNew
+  s.spatial_index = SpatialIndex::bbtree;  // cpSpaceInit's index: cpBBTreeNew
   s.idle_speed_threshold = d.idle_speed_threshold;
   s.allow_sleep = std::isfinite(d.sleep_time_threshold);
   // The hash's size, used by tuned and by `--set chipmunk.spatial_index=hash`: cells of the largest
@@ -275,7 +284,7 @@ ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene
   if (profile == "tuned") {
     s.iterations = 30;                     // Chipmunk's stacking demos; see the README
     s.collision_slop = 0.01 * smallest;    // overlap left alone: 1% of the smallest radius
-    s.spatial_index = "hash";              // "1000s of objects that are all the same size"
+    s.spatial_index = SpatialIndex::hash;  // "1000s of objects that are all the same size"
     return s;                              // collision_bias: the default (see the README)
   }
   throw InputError(fmt::format("chipmunk: unknown profile '{}' (known: {})", profile, fmt::join(kProfiles, ", ")));
@@ -293,6 +302,7 @@ EngineEntry chipmunk_engine() {
       "ones (iterative solver)";
   info.summary = "Chipmunk2D (double sequential impulses, no CCD); tuned: spatial hash, 30 iterations, small slop";
   info.profiles = {kProfiles[0], kProfiles[1]};
+  info.settings = chipmunk_settings_table().describe();
   info.sweep_knobs = {{"iterations", {5, 10, 30}}, {"spatial_index", {"bbtree", "hash"}}};
   info.caps.open_space = true;
   info.caps.gravity = true;
@@ -307,20 +317,7 @@ EngineEntry chipmunk_engine() {
   info.caps.deterministic = true;          // cpSpace (not cpHastySpace) steps on one thread
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             ChipmunkSettings s = chipmunk_profile(profile, scene);
-            SettingsReader r("chipmunk", overrides);
-            r.get("iterations", s.iterations);
-            r.get("collision_slop", s.collision_slop);
-            r.get("collision_bias", s.collision_bias);
-            r.get("collision_persistence", s.collision_persistence);
-            r.get("wall_radius", s.wall_radius);
-            r.get("spatial_index", s.spatial_index, {"bbtree", "hash"});
-            r.get("hash_cell", s.hash_cell);
-            r.get("hash_count", s.hash_count);
-            r.get("allow_sleep", s.allow_sleep);
-            r.get("sleep_time_threshold", s.sleep_time_threshold);
-            r.get("idle_speed_threshold", s.idle_speed_threshold);
-            r.finish();
-            validate(s);
+            chipmunk_settings_table().read(overrides, s);
             return std::unique_ptr<Engine>(std::make_unique<ChipmunkEngine>(scene, s));
           }};
 }

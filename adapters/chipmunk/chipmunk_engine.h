@@ -11,6 +11,9 @@ namespace ballbench {
 
 // Every run-time knob of a cpSpace that can change a ball's trajectory. Some of the profiles'
 // values depend on the scene (the hash cell, the slop), so chipmunk_profile() takes it.
+// ChipmunkSettings::spatial_index: "bbtree", "hash" in the settings.
+enum class SpatialIndex { bbtree, hash };
+
 struct ChipmunkSettings {
   /// Sequential-impulse sweeps over all contacts per step (cpSpaceSetIterations). (count)
   int iterations = 10;
@@ -32,7 +35,7 @@ struct ChipmunkSettings {
   double wall_radius = -1.0;
   /// Broad phase: "bbtree" (Chipmunk's default axis-aligned bounding box tree) or "hash"
   /// (cpSpaceUseSpatialHash with hash_cell and hash_count).
-  std::string spatial_index = "bbtree";
+  SpatialIndex spatial_index = SpatialIndex::bbtree;
   /// Spatial hash cell edge (m); used only with spatial_index = "hash".
   double hash_cell = 0.5;
   /// Suggested minimum number of hash cells (Chipmunk rounds it up to a prime); used only with

@@ -25,13 +25,35 @@ std::string version_string() {
   return fmt::format("{} {} {}", v % 100, months[month - 1], v / 10000);
 }
 
+// lammps's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings lammps` come from these rows; the contact law is the profile's, not a setting.
+const SettingsTable<LammpsSettings>& lammps_settings_table() {
+  using S = LammpsSettings;
+  static const SettingsTable<S> table(
+      "lammps",
+      {setting("overlap_target", &S::overlap_target,
+               bound([](double f) { return f > 0 && f <= 0.5; }, "(0, 0.5]",
+                     "must be above 0 and at most 0.5 (a fraction of the radius)"),
+               "1", "largest overlap of the worst-case contact, a fraction of the smallest radius"),
+       setting("impact_speed", &S::impact_speed, any_value, "m/s",
+               "largest ball speed the stiffness is designed for; <= 0: from the scene"),
+       setting("contact_steps", &S::contact_steps, at_least(1, "DEM steps per contact"), "count",
+               "DEM steps per contact time"),
+       setting("max_substeps", &S::max_substeps, at_least(1), "count", "most DEM sub-steps per step; more is refused"),
+       setting("skin", &S::skin, any_value, "m", "neighbour skin; negative: half the smallest radius"),
+       setting("ranks", &S::ranks, at_least(1, "1: in this process"), "count",
+               "MPI ranks; 1 runs LAMMPS in this process"),
+       setting("sample_every", &S::sample_every, at_least(1, "steps"), "steps",
+               "states are provided every this many steps"),
+       setting("hostfile", &S::hostfile, any_value, "", "Open MPI hostfile for ranks > 1; \"\": this machine"),
+       setting("mpirun", &S::mpirun, any_value, "", "the mpirun command, for ranks > 1"),
+       setting("lmp", &S::lmp, any_value, "", "the LAMMPS command, for ranks > 1"),
+       setting("workdir", &S::workdir, any_value, "", "folder for the files of ranks > 1; \"\": a temporary one")});
+  return table;
+}
+
+// What the rows cannot say alone: the settings that go together.
 void validate(const LammpsSettings& s) {
-  if (!(s.overlap_target > 0 && s.overlap_target <= 0.5))
-    throw InputError("settings.lammps.overlap_target: must be above 0 and at most 0.5 (a fraction of the radius)");
-  if (!(s.contact_steps >= 1)) throw InputError("settings.lammps.contact_steps: must be >= 1 (DEM steps per contact)");
-  if (s.max_substeps < 1) throw InputError("settings.lammps.max_substeps: must be >= 1");
-  if (s.ranks < 1) throw InputError("settings.lammps.ranks: must be >= 1 (1: in this process)");
-  if (s.sample_every < 1) throw InputError("settings.lammps.sample_every: must be >= 1 (steps)");
   if (!s.hostfile.empty()) {
     if (s.ranks == 1) throw InputError("settings.lammps.hostfile: used only with ranks > 1 (mpirun)");
     std::error_code ec;
@@ -42,6 +64,8 @@ void validate(const LammpsSettings& s) {
 }
 
 }  // namespace
+
+nlohmann::json lammps_settings_json(const LammpsSettings& s) { return lammps_settings_table().json(s); }
 
 LammpsSettings lammps_profile(const std::string& profile) {
   LammpsSettings s;
@@ -64,23 +88,12 @@ EngineEntry lammps_engine() {
   info.caps.deterministic = true;
   info.costly_runs = true;
   info.profiles = {"hooke", "hertz"};
+  info.settings = lammps_settings_table().describe();
   info.sweep_knobs = {{"contact_steps", nlohmann::json::array({20, 50, 100})},
                       {"overlap_target", nlohmann::json::array({0.02, 0.005, 0.001})}};
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             LammpsSettings s = lammps_profile(profile);
-            SettingsReader r("lammps", overrides);
-            r.get("overlap_target", s.overlap_target);
-            r.get("impact_speed", s.impact_speed);
-            r.get("contact_steps", s.contact_steps);
-            r.get("max_substeps", s.max_substeps);
-            r.get("skin", s.skin);
-            r.get("ranks", s.ranks);
-            r.get("sample_every", s.sample_every);
-            r.get("hostfile", s.hostfile);
-            r.get("mpirun", s.mpirun);
-            r.get("lmp", s.lmp);
-            r.get("workdir", s.workdir);
-            r.finish();
+            lammps_settings_table().read(overrides, s);
             validate(s);
             const lammps::Plan plan = lammps::make_plan(scene, s);
             if (s.ranks > 1) return lammps::make_mpi_engine(scene, s, plan);

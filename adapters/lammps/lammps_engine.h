@@ -40,6 +40,9 @@ struct LammpsSettings {
   std::string workdir;
 };
 
+// Every user setting's key and value (the settings table's, lammps_engine.cpp), for settings().
+nlohmann::json lammps_settings_json(const LammpsSettings& s);
+
 // The settings of a named profile ("hooke" or "hertz"); InputError for any other name.
 LammpsSettings lammps_profile(const std::string& profile);
 

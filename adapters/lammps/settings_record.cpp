@@ -39,19 +39,10 @@ nlohmann::json settings_record(const Scene& scene, const LammpsSettings& s, cons
     derived["hertz_damping"] = m.hertz_damping;            // g = gamma_n d*^(3/2) sqrt(R) / v
     derived["hertz_restitution"] = m.hertz_restitution;    // of one contact at the design speed
   }
-  return {{"law", law_name(s.law)},
-          {"overlap_target", s.overlap_target},
-          {"impact_speed", s.impact_speed},
-          {"contact_steps", s.contact_steps},
-          {"max_substeps", s.max_substeps},
-          {"skin", s.skin},
-          {"ranks", s.ranks},
-          {"hostfile", s.hostfile},
-          {"sample_every", s.sample_every},
-          {"mpirun", s.mpirun},
-          {"lmp", s.lmp},
-          {"workdir", s.workdir},
-          {"derived", derived}};
+  nlohmann::json record = lammps_settings_json(s);
+  record["law"] = law_name(s.law);
+  record["derived"] = derived;
+  return record;
 }
 
 }  // namespace ballbench::lammps

@@ -40,6 +40,36 @@ void ensure_ode_ready() {
 
 constexpr const char* kProfiles[] = {"tuned", "stock"};
 
+// ode's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings ode` come from these rows.
+const SettingsTable<OdeSettings>& ode_settings_table() {
+  using S = OdeSettings;
+  static const SettingsTable<S> table(
+      "ode",
+      {choice("stepper", &S::stepper, {{OdeStepper::step, "step"}, {OdeStepper::quickstep, "quickstep"}},
+              "step: exact big-matrix LCP; quickstep: iterative SOR"),
+       choice("space", &S::space, {{OdeSpace::sap, "sap"}, {OdeSpace::hash, "hash"}},
+              "broad phase: sweep and prune, or ODE's hash space"),
+       setting("quickstep_iterations", &S::quickstep_iterations, at_least(1).says("must be at least 1"), "count",
+               "quickstep's sweeps per step"),
+       setting("quickstep_w", &S::quickstep_w, inside(0, 2).says("must be in (0, 2)"), "1",
+               "quickstep's SOR over-relaxation"),
+       setting("erp", &S::erp, within(0, 1).says("must be in [0, 1]"), "1",
+               "fraction of the penetration removed per step"),
+       setting("cfm", &S::cfm, at_least(0).says("must not be negative (the ODE manual: negative CFM is unstable)"),
+               "m/N/s", "constraint force mixing: contact softness"),
+       setting("bounce_vel", &S::bounce_vel, at_least(0).says("must not be negative (ODE then never bounces)"), "m/s",
+               "approach speed below which a contact does not bounce"),
+       setting("contact_surface_layer", &S::contact_surface_layer, at_least(0).says("must not be negative"), "m",
+               "penetration tolerated before the push-out starts"),
+       setting("max_correcting_vel", &S::max_correcting_vel,
+               bound([](double v) { return v > 0 || v == -1; }, "> 0 or -1", "must be positive, or -1 for no cap"),
+               "m/s", "cap on the push-out speed; -1: none"),
+       setting("align_to_plane", &S::align_to_plane, any_value, "",
+               "after each step, turn each body back to a rotation about z")});
+  return table;
+}
+
 class OdeEngine final : public Engine {
  public:
   OdeEngine(const Scene& scene, OdeSettings settings)
@@ -50,7 +80,7 @@ class OdeEngine final : public Engine {
         angle_(rotation_ ? n_ : 0, 0.0) {
     ensure_ode_ready();
     world_ = dWorldCreate();
-    space_ = s_.space == "sap" ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
+    space_ = s_.space == OdeSpace::sap ? dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ) : dHashSpaceCreate(nullptr);
     contacts_ = dJointGroupCreate(0);
 
     dWorldSetGravity(world_, scene.gravity.x(), scene.gravity.y(), 0.0);
@@ -63,7 +93,7 @@ class OdeEngine final : public Engine {
     dWorldSetAutoDisableFlag(world_, 0);  // no sleeping: every ball is simulated every step
 
     // Hash cells from the smallest to the largest ball diameter (cell size 2^level, m).
-    if (n_ > 0 && s_.space == "hash") {
+    if (n_ > 0 && s_.space == OdeSpace::hash) {
       const double dmin = 2 * scene.radius.minCoeff(), dmax = 2 * scene.radius.maxCoeff();
       dHashSpaceSetLevels(space_, static_cast<int>(std::floor(std::log2(dmin))),
                           static_cast<int>(std::ceil(std::log2(dmax))));
@@ -124,7 +154,7 @@ class OdeEngine final : public Engine {
 
   void step(double dt) override {
     dSpaceCollide(space_, this, &OdeEngine::near_callback);
-    const int ok = s_.stepper == "step" ? dWorldStep(world_, dt) : dWorldQuickStep(world_, dt);
+    const int ok = s_.stepper == OdeStepper::step ? dWorldStep(world_, dt) : dWorldQuickStep(world_, dt);
     dJointGroupEmpty(contacts_);
     if (!ok) throw std::runtime_error("ode: the stepper could not allocate its working memory");
     if (s_.align_to_plane) align_to_plane();
@@ -147,17 +177,9 @@ class OdeEngine final : public Engine {
   }
 
   nlohmann::json settings() const override {
-    return {{"stepper", s_.stepper},
-            {"space", s_.space},
-            {"quickstep_iterations", s_.quickstep_iterations},
-            {"quickstep_w", s_.quickstep_w},
-            {"erp", s_.erp},
-            {"cfm", s_.cfm},
-            {"bounce_vel", s_.bounce_vel},
-            {"contact_surface_layer", s_.contact_surface_layer},
-            {"max_correcting_vel", s_.max_correcting_vel},
-            {"align_to_plane", s_.align_to_plane},
-            {"derived", {{"moment_of_inertia", inertia_label_}}}};
+    nlohmann::json j = ode_settings_table().json(s_);
+    j["derived"] = {{"moment_of_inertia", inertia_label_}};
+    return j;
   }
 
   double out_of_plane() const override {
@@ -211,29 +233,14 @@ class OdeEngine final : public Engine {
   double t_ = 0;
 };
 
-[[noreturn]] void bad_setting(const char* key, const std::string& why) {
-  throw InputError(fmt::format("settings.ode.{}: {}", key, why));
-}
-
-void validate(const OdeSettings& s) {
-  if (s.quickstep_iterations < 1) bad_setting("quickstep_iterations", "must be at least 1");
-  if (!(s.quickstep_w > 0 && s.quickstep_w < 2)) bad_setting("quickstep_w", "must be in (0, 2)");
-  if (!(s.erp >= 0 && s.erp <= 1)) bad_setting("erp", "must be in [0, 1]");
-  if (s.cfm < 0) bad_setting("cfm", "must not be negative (the ODE manual: negative CFM is unstable)");
-  if (s.bounce_vel < 0) bad_setting("bounce_vel", "must not be negative (ODE then never bounces)");
-  if (s.contact_surface_layer < 0) bad_setting("contact_surface_layer", "must not be negative");
-  if (!(s.max_correcting_vel > 0 || s.max_correcting_vel == -1))
-    bad_setting("max_correcting_vel", "must be positive, or -1 for no cap");
-}
-
 }  // namespace
 
 OdeSettings ode_settings_for_profile(const std::string& profile) {
   if (profile == "tuned") return OdeSettings{};
   if (profile == "stock") {
     OdeSettings s;
-    s.stepper = "quickstep";   // what most ODE applications use; 20 iterations, ODE's default
-    s.space = "hash";          // what ODE's demos create (dHashSpaceCreate)
+    s.stepper = OdeStepper::quickstep;  // what most ODE applications use; 20 iterations, ODE's default
+    s.space = OdeSpace::hash;  // what ODE's demos create (dHashSpaceCreate)
     s.quickstep_iterations = 20;
     s.quickstep_w = 1.3;       // ODE default
     s.erp = 0.2;               // ODE default
@@ -263,22 +270,11 @@ EngineEntry ode_engine() {
   info.caps.deterministic = true;          // single-threaded stepping, fixed insertion order
   info.profiles = {kProfiles[0], kProfiles[1]};
   // The iterative stepper's sweeps, and the exact (big-matrix) stepper against it. ODE has no CCD.
+  info.settings = ode_settings_table().describe();
   info.sweep_knobs = {{"quickstep_iterations", {5, 20, 80}}, {"stepper", {"step", "quickstep"}}};
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             OdeSettings s = ode_settings_for_profile(profile);
-            SettingsReader r("ode", overrides);
-            r.get("stepper", s.stepper, {"step", "quickstep"});
-            r.get("space", s.space, {"sap", "hash"});
-            r.get("quickstep_iterations", s.quickstep_iterations);
-            r.get("quickstep_w", s.quickstep_w);
-            r.get("erp", s.erp);
-            r.get("cfm", s.cfm);
-            r.get("bounce_vel", s.bounce_vel);
-            r.get("contact_surface_layer", s.contact_surface_layer);
-            r.get("max_correcting_vel", s.max_correcting_vel);
-            r.get("align_to_plane", s.align_to_plane);
-            r.finish();
-            validate(s);
+            ode_settings_table().read(overrides, s);
             return std::unique_ptr<Engine>(std::make_unique<OdeEngine>(scene, s));
           }};
 }

@@ -9,16 +9,20 @@
 namespace ballbench {
 
 // Every knob of the adapter. Defaults here are the "tuned" profile; see ode_settings_for_profile.
+// OdeSettings::stepper and space: "step", "quickstep" and "sap", "hash" in the settings.
+enum class OdeStepper { step, quickstep };
+enum class OdeSpace { sap, hash };
+
 struct OdeSettings {
   // "step": dWorldStep, the exact ("big matrix", Dantzig LCP) solver, O(m^3) in constraint rows m;
   // "quickstep": dWorldQuickStep, iterative SOR/PGS, O(m N), less accurate.
-  std::string stepper = "step";
+  OdeStepper stepper = OdeStepper::step;
   // Broad phase. "sap": dSweepAndPruneSpace, sorted along x, then y, z last (the plane's normal):
   // O(n log n). "hash": dHashSpace, whose cell hash (level*1000 + 100 x + 10 y + z, ODE 0.16's
   // collision_space.cpp) sends many cells of a plane larger than ~10 cells to one bucket and which
   // clears an n x n bit table every step, so its cost per ball grows with n (measured 49 us per
   // ball-step at 10^4 balls against 3.7 at 10^3).
-  std::string space = "sap";
+  OdeSpace space = OdeSpace::sap;
   int quickstep_iterations = 20;  // dWorldSetQuickStepNumIterations (ODE default 20); quickstep only
   double quickstep_w = 1.3;       // SOR over-relaxation, dWorldSetQuickStepW (ODE default 1.3)
   // Error reduction parameter: fraction of the penetration removed per step (dimensionless). The

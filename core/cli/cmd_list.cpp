@@ -1,5 +1,6 @@
 // `ballbench list`: the built-in scenes and the engines with their versions and profiles;
-// `ballbench list --metrics`: every metric of a run's JSON (core/metrics/catalog.h).
+// `ballbench list --metrics`: every metric of a run's JSON (core/metrics/catalog.h);
+// `ballbench list --settings ENGINE`: the engine's user settings (EngineInfo::settings).
 #include <memory>
 
 #include <fmt/format.h>
@@ -48,13 +49,33 @@ void list_metrics() {
   }
 }
 
+// One line per user setting of the engine: its key, its default (before a profile), the values it
+// takes, its unit and what it does. An engine without a settings table lists none.
+void list_settings(const std::string& name) {
+  const EngineEntry& e = find_engine(name);
+  if (e.info.settings.empty()) {
+    fmt::print("{}: no settings table (its settings: adapters' README)\n", e.info.name);
+    return;
+  }
+  fmt::print("{} settings (--set {}.KEY=VALUE; default: before a profile changes it):\n", e.info.name, e.info.name);
+  for (const SettingInfo& s : e.info.settings)
+    fmt::print("  {:<36} {:<10} {:<22} {:<6} {}\n", s.name, s.default_value.dump(), s.range.empty() ? "-" : s.range,
+               s.unit.empty() ? "-" : s.unit, s.doc);
+}
+
 }  // namespace
 
 void add_list(CLI::App& app) {
   auto* cmd = app.add_subcommand("list", "print the built-in scenes and the engines with their versions");
   auto metrics = std::make_shared<bool>(false);
   cmd->add_flag("--metrics", *metrics, "print every metric of a run's JSON instead: key, unit, regression tolerance, definition");
-  cmd->callback([metrics] { *metrics ? list_metrics() : list(); });
+  auto settings = std::make_shared<std::string>();
+  cmd->add_option("--settings", *settings, "print ENGINE's settings instead: key, default, values, unit, what it does")
+      ->type_name("ENGINE");
+  cmd->callback([metrics, settings] {
+    if (!settings->empty()) return list_settings(*settings);
+    *metrics ? list_metrics() : list();
+  });
 }
 
 }  // namespace ballbench::cli

@@ -73,14 +73,14 @@ const char* kAbout =
 // the initial energy is zero, diverged_step of a run that did not diverge).
 nlohmann::json record(const Result& r) {
   nlohmann::json metrics = {{"steps_done", r.steps_done},
-                            {"diverged_step", r.diverged ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr)}};
+                            {"diverged_step", r.diverged() ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr)}};
   for (const MetricDef& m : metric_catalog())
     if (m.regress) metrics[m.key] = m.get(r);
   return {{"scene", r.scene},
           {"engine", r.engine},
           {"engine_version", r.engine_version},
           {"steps", r.steps},
-          {"status", r.status},
+          {"status", run_status_text(r.status)},
           {"error", r.error},
           {"checksum", {{"final", r.checksum_final}, {"trajectory", r.checksum_trajectory}}},
           {"metrics", metrics},

@@ -141,7 +141,7 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
     for (const auto* e : engines)
       for (const auto& p : profiles_for(*e, "all")) want.push_back(fmt::format("{}/{}/{}", e->info.name, p, k));
   for (const auto& r : found) {
-    if (r.status == "interrupted") return false;  // a report stopped in this part
+    if (r.status == RunStatus::interrupted) return false;  // a report stopped in this part
     if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n()) return false;
     have.push_back(fmt::format("{}/{}/{}", r.engine, r.profile, r.seed_offset));
   }

@@ -176,7 +176,8 @@ void run(const RunArgs& a) {
                                   a.json.empty() ? "" : fmt::format(" to the table and {}", a.json)));
   // Exit 1 when a row did not run to a result: failed, diverged, crashed or timed out. A row the
   // engine cannot run (unsupported) says so with its reason and is not a failure of the command.
-  if (std::any_of(results.begin(), results.end(), [](const Result& r) { return r.status != "ok" && r.status != "unsupported"; }))
+  if (std::any_of(results.begin(), results.end(),
+                  [](const Result& r) { return r.status != RunStatus::ok && r.status != RunStatus::unsupported; }))
     throw CheckFailed{1};
 }
 

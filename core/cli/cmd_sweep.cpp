@@ -48,11 +48,11 @@ void sweep(SweepArgs& a) {
   exit_if_interrupted(fmt::format("{} point(s) written to {} and {}, the point in progress marked interrupted",
                                   s.points.size(), a.json, a.csv));
   // Not one point measured (every one failed, crashed or timed out): the sweep has no result.
-  const auto status_is = [&](const char* status) {
+  const auto status_is = [&](RunStatus status) {
     return [status](const SweepPoint& p) { return p.status == status; };
   };
-  if (!s.points.empty() && std::none_of(s.points.begin(), s.points.end(), status_is("ok")) &&
-      !std::all_of(s.points.begin(), s.points.end(), status_is("unsupported"))) {
+  if (!s.points.empty() && std::none_of(s.points.begin(), s.points.end(), status_is(RunStatus::ok)) &&
+      !std::all_of(s.points.begin(), s.points.end(), status_is(RunStatus::unsupported))) {
     fmt::print(stderr, "ballbench: sweep: none of the {} point(s) ran to a result (see the lines above)\n", s.points.size());
     throw CheckFailed{1};
   }

@@ -70,7 +70,7 @@ std::string run_command(const Scene& scene, const MatchTry& t, bool reference) {
 // for a term that must be at least; 1 + the figure for a bound of 0); infinite for a run that did
 // not end ok or a term it did not measure.
 double miss(const MatchTry& t, const AccuracySpec& spec) {
-  if (t.status != "ok") return std::numeric_limits<double>::infinity();
+  if (t.status != RunStatus::ok) return std::numeric_limits<double>::infinity();
   double worst = 0;
   for (const SpecTermDef& d : spec_terms()) {
     const auto& bound = spec[d.term];
@@ -114,14 +114,14 @@ class Search {
         ++oc.tries;
         oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
         if (interrupt_signal()) oc.stopped = "an interrupt";
-        if (tr.status == "ok") cost = tr.cost_ns, cost_at = k;
+        if (tr.status == RunStatus::ok) cost = tr.cost_ns, cost_at = k;
         if (tr.met) {
           if (tr.cost_ns < best_cost_) best_cost_ = tr.cost_ns, oc.found = t;
           if (c == 0) met_at = k;
           break;  // finer costs more
         }
         if (oc.best < 0 || miss(tr, o_.spec) < miss(out_.tries[oc.best], o_.spec)) oc.best = t;
-        if (tr.status == "unsupported" || tr.status == "timed out") break;  // finer will not do better
+        if (tr.status == RunStatus::unsupported || tr.status == RunStatus::timed_out) break;  // finer will not do better
       }
       if (!o_.quiet) progress.update(double(c + 1) / configs.size());
     }
@@ -184,7 +184,7 @@ class Search {
       RunOptions r = options(c, f.halvings);
       r.reference = nullptr;
       const Result t = run_at(c, f.halvings, o_.isolation.timeout_s, r);
-      if (t.status != "ok") break;
+      if (t.status != RunStatus::ok) break;
       oc.cost_repeats.push_back(cost_per_scene_step(t.engine_process_s.value_or(t.engine_s), scene_));
       if (t.engine_process_s) pipe.push_back(cost_per_scene_step(t.engine_s, scene_));
     }
@@ -302,7 +302,7 @@ nlohmann::json to_json(const MatchResult& m) {
   for (const MatchTry& t : m.tries)
     tries.push_back({{"engine", t.engine},       {"profile", t.profile}, {"knob", t.knob},
                      {"value", t.value},         {"halvings", t.halvings}, {"dt", t.dt},
-                     {"status", t.status},       {"error", t.error},   {"met", t.met},
+                     {"status", run_status_text(t.status)},       {"error", t.error},   {"met", t.met},
                      {"why_not", t.why_not},     {"figures", t.figures}, {"cost_ns", t.cost_ns},
                      {"cost_pipe_ns", t.cost_pipe_ns ? nlohmann::json(*t.cost_pipe_ns) : nlohmann::json()},
                      {"wall_s", t.wall_s},       {"settings", t.settings}});
@@ -342,7 +342,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
     t.engine = q.at("engine").get<std::string>(), t.profile = q.at("profile").get<std::string>();
     t.knob = q.at("knob").get<std::string>(), t.value = q.at("value");
     t.halvings = q.at("halvings").get<int>(), t.dt = q.at("dt").get<double>();
-    t.status = q.at("status").get<std::string>(), t.error = q.at("error").get<std::string>();
+    t.status = run_status_from_text(q.at("status").get<std::string>()), t.error = q.at("error").get<std::string>();
     t.met = q.at("met").get<bool>(), t.why_not = q.at("why_not").get<std::string>(), t.figures = q.at("figures");
     t.cost_ns = q.at("cost_ns").get<double>(), t.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
     t.wall_s = q.at("wall_s").get<double>(), t.settings = q.at("settings");
@@ -377,7 +377,7 @@ std::string match_csv(const MatchResult& m) {
   };
   for (const MatchTry& t : m.tries) {
     out += fmt::format("{},{},{},{},{},{:.17g},{},{},{:.6g},{},{:.3f}", t.engine, t.profile, t.knob,
-                       csv_text(t.value.is_null() ? "" : json_text(t.value)), t.halvings, t.dt, csv_text(t.status),
+                       csv_text(t.value.is_null() ? "" : json_text(t.value)), t.halvings, t.dt, csv_text(run_status_text(t.status)),
                        t.met ? 1 : 0, t.cost_ns, t.cost_pipe_ns ? fmt::format("{:.6g}", *t.cost_pipe_ns) : "", t.wall_s);
     for (const SpecTermDef& d : spec_terms()) {
       const auto v = t.figures.value(d.key, nlohmann::json());

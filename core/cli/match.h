@@ -14,6 +14,7 @@
 #include "accuracy_spec.h"
 #include "engine.h"
 #include "run_engines.h"
+#include "run_status.h"
 #include "scene.h"
 #include "shard.h"
 
@@ -45,7 +46,8 @@ struct MatchTry {
   nlohmann::json value;          // the knob's value
   int halvings = 0;              // dt = scene dt / 2^halvings
   double dt = 0;
-  std::string status, error;     // the run's
+  RunStatus status = RunStatus::ok;  // the run's
+  std::string error;
   bool met = false;
   std::string why_not;           // the failing terms, or the run's status
   nlohmann::json figures;        // every spec term's figure

@@ -63,12 +63,12 @@ CalibrationResult run_calibration(const std::vector<const EngineEntry*>& engines
             options.profile = profile;
             const Result r = o.isolation.enabled ? run_engine_isolated(scene, *e, options, child)
                                                  : run_engine(scene, *e, options);
-            CalibrationPoint p{e->info.name, profile, contact, requested, speed, std::nan(""), r.status, r.error};
+            CalibrationPoint p{e->info.name, profile, contact, requested, speed, std::nan(""), r.status, false, r.error};
             // Both scenes start with zero momentum along the contact (the wall's frame for one
             // ball), so the kinetic energy is the energy of the approach.
-            if (r.status == "ok") p.effective = std::sqrt(std::max(r.metrics.energy.final, 0.0) / r.metrics.energy.initial);
-            if (r.status == "ok" && r.metrics.tunnelling_wall + r.metrics.tunnelling_pair > 0)
-              p.status = "tunnelled", p.error = "passed through the contact instead of bouncing";
+            if (r.status == RunStatus::ok) p.effective = std::sqrt(std::max(r.metrics.energy.final, 0.0) / r.metrics.energy.initial);
+            if (r.status == RunStatus::ok && r.metrics.tunnelling_wall + r.metrics.tunnelling_pair > 0)
+              p.tunnelled = true, p.error = "passed through the contact instead of bouncing";
             out.points.push_back(std::move(p));
           }
   return out;

@@ -24,7 +24,7 @@ namespace {
 // The row of a run an interrupt kept from starting.
 Result not_started(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   Result r = result_header(scene, entry, options);
-  r.status = "interrupted";
+  r.status = RunStatus::interrupted;
   r.error = fmt::format("interrupted by {} before this run started", interrupt_name());
   return r;
 }
@@ -142,7 +142,7 @@ void print_table(const std::vector<Result>& results) {
   fmt::print(" {:>10} {:>9} {:>12} {:>10}\n", "pos.err", "horizon", "ns/ball-step", "with pipe");
   for (const auto& r : results) {
     const auto& e = r.reference;
-    fmt::print("{:<18} {:<11} {:>6} {:>8}", printable(run_label(r)), r.status, r.n, r.steps_done);
+    fmt::print("{:<18} {:<11} {:>6} {:>8}", printable(run_label(r)), run_status_text(r.status), r.n, r.steps_done);
     for (const MetricDef* m : shown) fmt::print(" {:>10}", metric_text(m->get(r)));
     fmt::print(" {:>10} {:>9} {:>12.1f} {:>10}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
                !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step,
@@ -272,7 +272,7 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
       options.profile = p;
       if (interrupt_signal()) {  // asked to stop: the rows so far are the result
         // A signal between runs marks the run that was next; one during a run marked that run.
-        if (results.empty() || results.back().status != "interrupted") results.push_back(not_started(scene, *e, options));
+        if (results.empty() || results.back().status != RunStatus::interrupted) results.push_back(not_started(scene, *e, options));
         stopped = true;
         break;
       }
@@ -284,7 +284,7 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
       // already run.
       const auto settings_refused = [&](const InputError& err) {
         Result r = result_header(scene, *e, options);
-        r.status = "failed";
+        r.status = RunStatus::failed;
         r.error = fmt::format("the engine refused its settings: {}", err.what());
         return r;
       };
@@ -319,7 +319,7 @@ void run_further_placements(std::vector<Result>& results, const Scene& first, in
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation) {
   for (int k = 1; k < seeds && !engines.empty(); ++k) {
-    if (!results.empty() && results.back().status == "interrupted") return;  // run_all stopped
+    if (!results.empty() && results.back().status == RunStatus::interrupted) return;  // run_all stopped
     if (interrupt_signal()) {  // placement k's first run is the one that was next
       RunOptions options = base;
       options.profile = profiles_for(*engines.front(), profile).front();

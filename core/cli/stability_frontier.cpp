@@ -37,7 +37,7 @@ Scene stressed(const Scene& base, const std::string& knob, double factor) {
 }
 
 std::string stress_failure(const Result& r, double energy_tolerance) {
-  if (r.status != "ok") return r.status + (r.error.empty() ? "" : ": " + r.error);
+  if (r.status != RunStatus::ok) return run_status_text(r.status) + (r.error.empty() ? "" : ": " + r.error);
   auto count = [](int k, const char* what) { return fmt::format("{} {}{}", k, what, k == 1 ? "" : "s"); };
   if (r.metrics.tunnelling_wall) return count(r.metrics.tunnelling_wall, "wall escape");
   if (r.metrics.tunnelling_pair) return count(r.metrics.tunnelling_pair, "pair pass-through");

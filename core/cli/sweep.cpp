@@ -100,7 +100,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
     } catch (const InputError& err) {
       Result failed = result_header(s, e, r);
-      failed.status = "failed";
+      failed.status = RunStatus::failed;
       failed.error = fmt::format("the engine refused this point's settings {}: {}", r.overrides.dump(), err.what());
       return failed;
     }
@@ -137,10 +137,10 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
     p.plan_index = static_cast<long>(k);
     // The timing runs: the engine alone, the same steps.
     options.reference = nullptr;
-    for (int rep = 0; rep < o.repeats && r.status == "ok"; ++rep) {
+    for (int rep = 0; rep < o.repeats && r.status == RunStatus::ok; ++rep) {
       const Result t = run(s, *item.engine, options);
-      if (t.status == "interrupted") p.status = t.status, p.error = t.error;  // no timing: not ok
-      if (t.status != "ok") break;
+      if (t.status == RunStatus::interrupted) p.status = t.status, p.error = t.error;  // no timing: not ok
+      if (t.status != RunStatus::ok) break;
       p.ns_per_ball_step.push_back(t.ns_per_ball_step);
       p.engine_s.push_back(t.engine_process_s.value_or(t.engine_s));  // the engine's own time, as ns_per_ball_step
     }
@@ -167,9 +167,9 @@ void print_pareto(const SweepResult& s) {
                p.ns_median(), p.pos_rms, p.energy_rel);
   }
   for (const SweepPoint& p : s.points)
-    if (p.status != "ok")
-      fmt::print("{}/{} {} = {}: {}{}\n", printable(p.engine), printable(p.profile), p.knob, json_text(p.value), p.status,
-                 p.error.empty() ? "" : ": " + printable(p.error));
+    if (p.status != RunStatus::ok)
+      fmt::print("{}/{} {} = {}: {}{}\n", printable(p.engine), printable(p.profile), p.knob, json_text(p.value),
+                 run_status_text(p.status), p.error.empty() ? "" : ": " + printable(p.error));
 }
 
 }  // namespace ballbench::cli

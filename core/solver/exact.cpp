@@ -239,6 +239,26 @@ std::string exact_refusal(const Scene& scene) {
   return "";
 }
 
+// exact's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings exact` come from these rows. The scene-dependent checks stay in the factory.
+const SettingsTable<ExactSettings>& exact_settings_table() {
+  using S = ExactSettings;
+  static const SettingsTable<S> table(
+      "exact",
+      {setting("contact_time", &S::contact_time, any_value, "s",
+               "flight a supported ball keeps per collision; < 0: automatic"),
+       setting("rest_velocity", &S::rest_velocity, any_value, "m/s", "impacts slower than this settle; < 0: automatic"),
+       setting("sleep", &S::sleep, any_value, "", "a settled, supported ball sleeps"),
+       setting("wake_velocity", &S::wake_velocity, any_value, "m/s",
+               "impacts this fast wake a sleeping ball; < 0: 10 rest_velocity"),
+       setting("support_gap", &S::support_gap, any_value, "m",
+               "gap within which a support carries a ball; < 0: automatic"),
+       setting("cell_size", &S::cell_size, any_value, "m", "neighbour grid's cell width; < 0: automatic"),
+       setting("max_events_per_ball", &S::max_events_per_ball, at_least(1), "count",
+               "more events per ball in one step fail the run")});
+  return table;
+}
+
 class Exact final : public Engine {
  public:
   Exact(const Scene& scene, const ExactSettings& s)
@@ -335,12 +355,7 @@ class Exact final : public Engine {
       for (int i = 0; i < n_; ++i) out.w(i) = w_[i], out.angle(i) = angle_[i];
   }
 
-  nlohmann::json settings() const override {
-    return {{"contact_time", s_.contact_time},   {"rest_velocity", s_.rest_velocity},
-            {"sleep", s_.sleep},                 {"wake_velocity", s_.wake_velocity},
-            {"support_gap", s_.support_gap},     {"cell_size", s_.cell_size},
-            {"max_events_per_ball", s_.max_events_per_ball}};
-  }
+  nlohmann::json settings() const override { return exact_settings_table().json(s_); }
 
  private:
   // ---- the neighbour grid: cells at least one diameter wide, crossed by cell-face events ----
@@ -1281,18 +1296,10 @@ EngineEntry exact_engine() {
   info.caps.any_restitution = true;
   info.caps.friction = true;  // closed-form cases only: `refuses` names the rest
   info.refuses = exact_refusal;
+  info.settings = exact_settings_table().describe();
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             ExactSettings s;
-            SettingsReader r("exact", overrides);
-            r.get("contact_time", s.contact_time);
-            r.get("rest_velocity", s.rest_velocity);
-            r.get("sleep", s.sleep);
-            r.get("wake_velocity", s.wake_velocity);
-            r.get("support_gap", s.support_gap);
-            r.get("cell_size", s.cell_size);
-            r.get("max_events_per_ball", s.max_events_per_ball);
-            r.finish();
-            if (s.max_events_per_ball < 1) throw InputError("settings.exact.max_events_per_ball: must be >= 1");
+            exact_settings_table().read(overrides, s);
             if (const std::string why = exact_refusal(scene); !why.empty()) throw SceneUnsupported("exact: " + why);
             const double rmin = scene.n() > 0 ? scene.radius.minCoeff() : 1.0;
             const double rmax = scene.n() > 0 ? scene.radius.maxCoeff() : 1.0;

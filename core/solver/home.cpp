@@ -62,6 +62,46 @@ HomeShortcuts shortcuts(const Scene& scene, const HomeShortcuts& allow, double r
 // elastic scenes, on the neighbour list.
 using HomePath = std::variant<SoftResting, EventPath<GridBroadPhase>, EventPath<ListBroadPhase>>;
 
+// home's user settings, each declared once: reading, bounds, settings() and `ballbench list
+// --settings home` come from these rows. HomeSettings' internal fields are not here.
+const SettingsTable<HomeSettings>& home_settings_table() {
+  using S = HomeSettings;
+  using Soft = SoftStepSettings;
+  static const SettingsTable<S> table(
+      "home",
+      {setting("contact_iterations", &S::contact_iterations, at_least(0), "count",
+               "most sweeps of the contact pass per step"),
+       setting("rest_velocity", &S::rest_velocity, any_value, "m/s",
+               "impacts slower than this are resting contact; < 0: 2 |g| dt"),
+       setting("contact_slop", &S::contact_slop, above(0), "1",
+               "gap that counts as touching, as a fraction of the radius sum"),
+       setting("max_events_per_ball", &S::max_events_per_ball, at_least(1), "count",
+               "more events per ball in one step fail the run"),
+       choice("resting", &S::resting,
+              {{RestingMethod::automatic, "auto"}, {RestingMethod::soft, "soft"}, {RestingMethod::events, "events"}},
+              "resting contact under gravity: chosen from the scene and its spec, the soft step, or event-driven "
+              "with cluster solves"),
+       setting("overlap", &S::overlap,
+               bound([](double x) { return x >= 0 && x < 1; }, "[0, 1)", "must be in [0, 1)"), "radii",
+               "resting = auto: the largest overlap the soft step is built for; 0: the scene's spec's"),
+       setting("substeps", &S::soft, &Soft::substeps, at_least(1), "count", "the soft step's substeps per step"),
+       setting("substep_iterations", &S::soft, &Soft::substep_iterations, at_least(1), "count",
+               "soft step: sweeps with the push, per substep"),
+       setting("relax_iterations", &S::soft, &Soft::relax_iterations, at_least(0), "count",
+               "soft step: sweeps without the push, per substep"),
+       setting("max_stride", &S::max_stride, above(0), "radii",
+               "a soft step's parts move the fastest ball at most this far"),
+       setting("max_parts", &S::max_parts, at_least(1), "count", "most parts a soft step is cut into"),
+       setting("contact_hertz", &S::soft, &Soft::contact_hertz, above(0), "Hz", "soft step: stiffness of the push-out"),
+       setting("damping_ratio", &S::soft, &Soft::damping_ratio, at_least(0), "1", "soft step: damping of the push-out"),
+       setting("push_speed", &S::soft, &Soft::push_speed, above(0), "m/s",
+               "soft step: fastest an overlap is pushed out"),
+       setting("sleep_speed", &S::sleep_speed, at_least(0), "m/s",
+               "soft path: islands slower than this for sleep_time sleep; 0 never"),
+       setting("sleep_time", &S::sleep_time, above(0), "s", "soft path: how long an island is slow before it sleeps")});
+  return table;
+}
+
 class Home final : public Engine {
  public:
   Home(const Scene& scene, HomeSettings s)
@@ -137,29 +177,15 @@ class Home final : public Engine {
   }
 
   nlohmann::json settings() const override {
-    return {{"contact_iterations", s_.contact_iterations},
-            {"rest_velocity", s_.rest_velocity},
-            {"contact_slop", s_.contact_slop},
-            {"max_events_per_ball", s_.max_events_per_ball},
-            {"resting", s_.resting},
-            {"overlap", s_.overlap},
-            {"substeps", s_.soft.substeps},
-            {"substep_iterations", s_.soft.substep_iterations},
-            {"relax_iterations", s_.soft.relax_iterations},
-            {"max_stride", s_.max_stride},
-            {"max_parts", s_.max_parts},
-            {"contact_hertz", s_.soft.contact_hertz},
-            {"damping_ratio", s_.soft.damping_ratio},
-            {"push_speed", s_.soft.push_speed},
-            {"sleep_speed", s_.sleep_speed},
-            {"sleep_time", s_.sleep_time}};
+    return home_settings_table().json(s_);
   }
 
  private:
   // Resting contact by the soft step in scenes with gravity when `resting` says so; else the events
   // path, on a neighbour list in elastic scenes with pairs, on the grid otherwise.
   HomePath choose_path(const Scene& scene) {
-    if (s_.resting == "soft" && scene.features().gravity) return HomePath(std::in_place_type<SoftResting>, s_, w_.n);
+    if (s_.resting == RestingMethod::soft && scene.features().gravity)
+      return HomePath(std::in_place_type<SoftResting>, s_, w_.n);
     if (sc_.elastic && !sc_.no_pairs)
       return HomePath(std::in_place_type<EventPath<ListBroadPhase>>, w_, grid_, pool_, s_, sc_);
     return HomePath(std::in_place_type<EventPath<GridBroadPhase>>, w_, grid_, pool_, s_, sc_);
@@ -238,7 +264,7 @@ class Home final : public Engine {
 void resolve_auto(const Scene& scene, const nlohmann::json& overrides, HomeSettings& s) {
   if (s.overlap == 0) s.overlap = scene_spec(scene)[SpecTerm::overlap].value_or(0.01);
   const HomeMethod m = choose_home_method(scene, scene.dt, s.overlap);
-  s.resting = m.soft ? "soft" : "events";
+  s.resting = m.soft ? RestingMethod::soft : RestingMethod::events;
   if (!m.soft) return;
   if (!overrides.contains("substeps")) s.soft.substeps = m.substeps;
   if (!overrides.contains("contact_hertz")) s.soft.contact_hertz = m.contact_hertz;
@@ -266,49 +292,19 @@ EngineEntry home_engine() {
   info.sweep_knobs = {{"overlap", {0.005, 0.0025, 0.001}, {"default"}},
                       {"contact_iterations", {4, 16, 200}, {"events"}},
                       {"substeps", {2, 8, 16}, {"soft"}}};
+  info.settings = home_settings_table().describe();
   return {info, [](const Scene& scene, const std::string& profile, const nlohmann::json& overrides) {
             HomeSettings s;
-            if (profile == "default") s.resting = "auto";
+            if (profile == "default") s.resting = RestingMethod::automatic;
             if (profile == "soft") {
               // Without gravity nothing rests on anything: the default profile runs such a scene.
               if (!scene.features().gravity)
                 throw SceneUnsupported("home (soft): the soft step is for scenes with gravity; without it home runs "
                                        "event-driven, as its default profile");
-              s.resting = "soft";
+              s.resting = RestingMethod::soft;
             }
-            SettingsReader r("home", overrides);
-            r.get("contact_iterations", s.contact_iterations);
-            r.get("rest_velocity", s.rest_velocity);
-            r.get("contact_slop", s.contact_slop);
-            r.get("max_events_per_ball", s.max_events_per_ball);
-            r.get("resting", s.resting, {"auto", "soft", "events"});
-            r.get("overlap", s.overlap);
-            r.get("substeps", s.soft.substeps);
-            r.get("substep_iterations", s.soft.substep_iterations);
-            r.get("relax_iterations", s.soft.relax_iterations);
-            r.get("max_stride", s.max_stride);
-            r.get("max_parts", s.max_parts);
-            r.get("contact_hertz", s.soft.contact_hertz);
-            r.get("damping_ratio", s.soft.damping_ratio);
-            r.get("push_speed", s.soft.push_speed);
-            r.get("sleep_speed", s.sleep_speed);
-            r.get("sleep_time", s.sleep_time);
-            r.finish();
-            if (s.soft.substeps < 1) throw InputError("settings.home.substeps: must be >= 1");
-            if (s.soft.substep_iterations < 1) throw InputError("settings.home.substep_iterations: must be >= 1");
-            if (s.soft.relax_iterations < 0) throw InputError("settings.home.relax_iterations: must be >= 0");
-            if (!(s.max_stride > 0)) throw InputError("settings.home.max_stride: must be > 0");
-            if (s.max_parts < 1) throw InputError("settings.home.max_parts: must be >= 1");
-            if (!(s.soft.contact_hertz > 0)) throw InputError("settings.home.contact_hertz: must be > 0");
-            if (!(s.soft.damping_ratio >= 0)) throw InputError("settings.home.damping_ratio: must be >= 0");
-            if (!(s.soft.push_speed > 0)) throw InputError("settings.home.push_speed: must be > 0");
-            if (!(s.sleep_speed >= 0)) throw InputError("settings.home.sleep_speed: must be >= 0");
-            if (!(s.sleep_time > 0)) throw InputError("settings.home.sleep_time: must be > 0");
-            if (s.contact_iterations < 0) throw InputError("settings.home.contact_iterations: must be >= 0");
-            if (!(s.contact_slop > 0)) throw InputError("settings.home.contact_slop: must be > 0");
-            if (s.max_events_per_ball < 1) throw InputError("settings.home.max_events_per_ball: must be >= 1");
-            if (!(s.overlap >= 0 && s.overlap < 1)) throw InputError("settings.home.overlap: must be in [0, 1)");
-            if (s.resting == "auto") resolve_auto(scene, overrides, s);
+            home_settings_table().read(overrides, s);
+            if (s.resting == RestingMethod::automatic) resolve_auto(scene, overrides, s);
             return make_home(scene, s);
           }};
 }

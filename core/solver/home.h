@@ -23,6 +23,12 @@ struct HomeShortcuts {
   bool elastic = true;       // restitution exactly 1 and no resting speed (no gravity): no contact pass
 };
 
+// How `home` treats resting contact in scenes with gravity (HomeSettings::resting): `automatic`
+// ("auto", the default profile's) is resolved to one of the others when the engine is built.
+enum class RestingMethod { automatic, events, soft };
+
+// The user settings (every field above "Internal") are declared, bounded and documented once, in
+// home.cpp's settings table: a new one is its field here and its row there.
 struct HomeSettings {
   /// Most Gauss-Seidel sweeps of the contact pass before the drift; it stops early once every
   /// contact is within the velocity tolerance. Too few leaves resting piles to the event loop
@@ -42,10 +48,10 @@ struct HomeSettings {
   /// How balls that rest on each other are solved: "soft", the soft step (core/solver/soft_step.h)
   /// over every contact, in scenes with gravity; "events", a contact pass at the start of the step,
   /// then exact event-driven motion with resting clusters solved where they form; "auto", the
-  /// default profile's, soft where balls pile up (gravity and a box) with substeps and stiffness
-  /// derived from `overlap` (core/solver/home_method.h), events elsewhere. Scenes without gravity
-  /// always run the event-driven path, exact between collisions.
-  std::string resting = "events";
+  /// default profile's, soft where balls pile up (gravity, a box and two balls or more) with
+  /// substeps and stiffness derived from `overlap` (core/solver/home_method.h), events elsewhere.
+  /// Scenes without gravity always run the event-driven path, exact between collisions.
+  RestingMethod resting = RestingMethod::events;
   /// resting = "auto": the largest overlap the soft step is built for, as a fraction of the
   /// smallest radius; 0 takes the scene's accuracy spec's (scenarios/README.md, "Accuracy").
   /// Substeps or contact_hertz given as settings win over what it derives. (fraction of the radius)

@@ -12,6 +12,18 @@
 namespace ballbench {
 namespace {
 
+// home-seed's settings, each declared once: reading, settings() and `ballbench list --settings
+// home-seed` come from these rows.
+const SettingsTable<HomeSeedSettings>& home_seed_settings_table() {
+  using S = HomeSeedSettings;
+  static const SettingsTable<S> table(
+      "home-seed",
+      {choice("flags", &S::flags, {{SeedFlags::per_ball, "per-ball"}, {SeedFlags::per_pair, "per-pair"}},
+              "in-ball flags per ball (appendix 1) or per pair (appendix 2)"),
+       setting("clamp", &S::clamp, any_value, "", "put a ball that ends outside the box back inside (appendix 2)")});
+  return table;
+}
+
 class HomeSeed final : public Engine {
  public:
   HomeSeed(const Scene& scene, HomeSeedSettings settings)
@@ -26,7 +38,7 @@ class HomeSeed final : public Engine {
         v_(scene.initial.vel),
         in_wall_(n_, 0),
         in_ball_(n_, 0) {
-    if (s_.flags == "per-ball") {
+    if (s_.flags == SeedFlags::per_ball) {
       // Appendix 1, lines 65-74: balls spawned overlapping are flagged and cannot collide.
       for (int i = 0; i < n_; ++i)
         for (int j = i + 1; j < n_; ++j)
@@ -41,7 +53,7 @@ class HomeSeed final : public Engine {
     v_.rowwise() += (g_ * dt).transpose();
     p_ += v_ * dt;
     if (box_.kind == ContainerKind::Box) walls();
-    s_.flags == "per-ball" ? pairs_per_ball_flags() : pairs_per_pair_flags();
+    s_.flags == SeedFlags::per_ball ? pairs_per_ball_flags() : pairs_per_pair_flags();
   }
 
   void read(State& out) const override {
@@ -50,7 +62,7 @@ class HomeSeed final : public Engine {
     out.vel = v_;
   }
 
-  nlohmann::json settings() const override { return {{"flags", s_.flags}, {"clamp", s_.clamp}}; }
+  nlohmann::json settings() const override { return home_seed_settings_table().json(s_); }
 
  private:
   // Distance from the centre to the nearer of the two walls on `axis`: the thesis's `5 - abs(p)`
@@ -162,12 +174,10 @@ EngineEntry home_seed_engine() {
   info.caps.any_restitution = true;
   info.caps.friction = false;  // frictionless disks: no rotation
   info.caps.continuous_collision = false;
+  info.settings = home_seed_settings_table().describe();
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSeedSettings s;
-            SettingsReader r("home-seed", overrides);
-            r.get("flags", s.flags, {"per-ball", "per-pair"});
-            r.get("clamp", s.clamp);
-            r.finish();
+            home_seed_settings_table().read(overrides, s);
             return std::unique_ptr<Engine>(std::make_unique<HomeSeed>(scene, s));
           }};
 }

@@ -11,10 +11,13 @@
 
 namespace ballbench {
 
+// "per-ball": one in-ball flag per ball (appendix 1, and its initial-overlap check);
+// "per-pair": one flag per pair (appendix 2).
+enum class SeedFlags { per_ball, per_pair };
+
+// Declared as settings in home_seed.cpp's settings table.
 struct HomeSeedSettings {
-  // "per-ball": one in-ball flag per ball (appendix 1, and its initial-overlap check);
-  // "per-pair": one flag per pair (appendix 2).
-  std::string flags = "per-ball";
+  SeedFlags flags = SeedFlags::per_ball;
   // Put a ball that ends up outside the box back inside it (appendix 2, lines 105-116).
   bool clamp = false;
 };

@@ -1,0 +1,321 @@
+#include "run_stages.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "input_error.h"
+#include "interrupt.h"
+#include "metrics/angle_of_repose.h"
+#include "metrics/rolling.h"
+#include "metrics/speed_distribution.h"
+#include "trajectory_csv.h"
+
+namespace ballbench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Ends the run as `status` with `message`; a diverged run records the step it diverged at. Always
+// false, so a stage returns stop(...) to end the run.
+bool stop(RunContext& c, RunStatus status, long step, std::string message) {
+  c.r.status = status;
+  c.r.error = std::move(message);
+  if (status == RunStatus::diverged) c.r.diverged_step = step;
+  return false;
+}
+
+// A scene that rotates is judged on its spins too: an engine that reads none back fails the run.
+bool spins_missing(const RunContext& c, const State& s) {
+  return c.rotation && (s.w.size() != c.scene.n() || s.angle.size() != c.scene.n());
+}
+
+// The state at step k for the figures: the reference error, a frame, and every series_every steps
+// (and at the last step) a point of each series.
+void record(RunContext& c, long k) {
+  const Scene& scene = c.scene;
+  const State& state = c.state;
+  Result::Series& series = c.r.series;
+  if (c.reference) c.error->observe(state, c.ref_state);
+  if (c.frame_every && k % c.frame_every == 0) {
+    auto& frame = series.frames.emplace_back(scene.n());
+    for (int b = 0; b < scene.n(); ++b)
+      frame[b] = {std::round(state.pos(b, 0) * 1e4) / 1e4, std::round(state.pos(b, 1) * 1e4) / 1e4};
+    series.frame_t.push_back(state.t);
+  }
+  if (k % c.series_every != 0 && k != c.r.steps) return;
+  series.t.push_back(state.t);
+  series.energy.push_back(c.metrics->summary().energy.final);
+  const Eigen::Vector2d com = state.pos.transpose() * scene.mass / scene.mass.sum();
+  series.com_x.push_back(com.x()), series.com_y.push_back(com.y());
+  if (c.reference) series.pos_err.push_back(c.error->summary().pos_rms_final);
+  for (size_t b = 0; b < series.tracks.size(); ++b) series.tracks[b].push_back({state.pos(b, 0), state.pos(b, 1)});
+}
+
+// The sampled metrics, the figures and the checksums see the state of step k.
+void sample(RunContext& c, long k) {
+  c.sampled = k;
+  c.metrics->observe(c.state);
+  record(c, k);
+  c.final_sum = state_checksum(c.state), c.trajectory_sum = chain_checksum(c.trajectory_sum, c.final_sum);
+}
+
+// The reference steps with the engine, every step; it is read only where the engine is. Its
+// failure ends the comparison only.
+void step_reference(RunContext& c, long k, bool read) {
+  if (!c.reference) return;
+  try {
+    for (int sub = 0; sub < c.ref_substeps; ++sub) c.reference->step(c.ref_dt);
+    if (read) c.reference->read(c.ref_state);
+  } catch (const std::exception& e) {
+    c.error->reference_failed(k, e.what());
+    c.reference.reset();
+  }
+}
+
+// Step k of the loop: the engine's step (timed), then, where the engine provides a state, its
+// reading, the per-step checks, the reference and the samples. False: the run stops here.
+bool advance(RunContext& c, long k) {
+  Result& r = c.r;
+  if (interrupt_signal())  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
+    return stop(c, RunStatus::interrupted, k,
+                fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done));
+  const auto t0 = Clock::now();
+  try {
+    c.engine->step(c.scene.dt);
+  } catch (const std::exception& e) {
+    c.engine_s += seconds_since(t0);
+    return stop(c, RunStatus::failed, k, fmt::format("step {} threw: {}", k, e.what()));
+  }
+  c.engine_s += seconds_since(t0);
+  if (k % c.stride != 0 && k != r.steps) {  // no state to read before the engine's next sample
+    step_reference(c, k, false);
+    return true;
+  }
+  // Read into a scratch state and keep it only if finite: a run that blew up ends with its last
+  // good state, from which the final figures (positions, jitter, speed distribution) come.
+  try {
+    c.engine->read(c.next);
+  } catch (const std::exception& e) {
+    return stop(c, RunStatus::failed, k, fmt::format("step {}: reading the state threw: {}", k, e.what()));
+  }
+  if (spins_missing(c, c.next))
+    return stop(c, RunStatus::failed, k,
+                fmt::format("step {}: the engine read back no angular velocities and angles", k));
+  r.out_of_plane_max = std::max(r.out_of_plane_max, c.engine->out_of_plane());
+  if (!c.metrics->observe_motion(c.state, c.next))  // tunnelling, every step, and finiteness in one sweep
+    return stop(c, RunStatus::diverged, k, fmt::format("non-finite position or velocity at step {}", k));
+  // A ball out of the box: no figure of the run means anything from here; like a non-finite
+  // state, the run ends with the state before.
+  if (c.metrics->left_container())
+    return stop(c, RunStatus::diverged, k,
+                fmt::format("a ball left the container (beyond a wall by more than its diameter) at step {}", k));
+  std::swap(c.state, c.next);
+  step_reference(c, k, true);
+  if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
+  r.steps_done = k;
+  if (k % c.every == 0 || k == r.steps) {
+    sample(c, k);
+    if (c.metrics->energy_blew_up())
+      return stop(c, RunStatus::diverged, k,
+                  fmt::format("energy above {} x its initial value at step {}",
+                              c.options.metrics.divergence_energy_factor, k));
+  }
+  return true;
+}
+
+}  // namespace
+
+RunContext::RunContext(const Scene& scene_, const EngineEntry& entry_, const RunOptions& options_)
+    : scene(scene_),
+      entry(entry_),
+      options(options_),
+      rotation(scene_.features().rotation),
+      r(result_header(scene_, entry_, options_)) {}
+
+bool set_up(RunContext& c) {
+  Result& r = c.r;
+  const EngineEntry& entry = c.entry;
+  // Every engine's profiles are checked here, once, against what it declares.
+  const auto& profiles = entry.info.profiles;
+  if (std::find(profiles.begin(), profiles.end(), r.profile) == profiles.end())
+    throw InputError(
+        fmt::format("{}: unknown profile '{}' (known: {})", entry.info.name, r.profile, fmt::join(profiles, ", ")));
+
+  if (std::string why = unsupported_reason(entry.info, c.scene); !why.empty())
+    return stop(c, RunStatus::unsupported, 0, why);
+
+  try {
+    c.engine = entry.create(c.scene, r.profile, merged_settings(c.scene, entry.info.name, c.options.overrides));
+  } catch (const InputError&) {
+    throw;
+  } catch (const SceneUnsupported& e) {  // a limit only the engine can judge: reported as a capability refusal
+    r.settings = e.settings();
+    return stop(c, RunStatus::unsupported, 0, e.what());
+  } catch (const std::exception& e) {
+    return stop(c, RunStatus::failed, 0, fmt::format("building the world failed: {}", e.what()));
+  }
+  r.settings = c.engine->settings();
+  // An engine that provides a state only every `stride` steps is read at those steps alone: every
+  // per-step metric (tunnelling, finiteness, leaving the box) is judged on those samples, and the
+  // sampled metrics see a multiple of the stride.
+  const long stride = c.stride = std::max(1, c.engine->state_stride());
+  if (stride > 1) {
+    r.metrics_config.sample_every = static_cast<int>((r.metrics_config.sample_every + stride - 1) / stride * stride);
+    r.skipped.push_back(fmt::format("{} every {} steps: {} provides states only every {} steps, so tunnelling and the "
+                                    "finiteness check see those samples, not every step",
+                                    kStrideNote, stride, entry.info.name, stride));
+  }
+  return true;
+}
+
+// A reference that cannot run the scene faithfully is never compared against: a converged run of
+// another engine stands in, or there is none.
+void set_up_reference(RunContext& c) {
+  const Scene& scene = c.scene;
+  c.ref_entry = c.options.reference;
+  c.ref_dt = scene.dt;
+  if (c.ref_entry) {
+    if (const std::string why = unsupported_reason(c.ref_entry->info, scene); !why.empty()) {
+      const EngineEntry* stand_in = c.options.converged_reference;
+      if (stand_in && unsupported_reason(stand_in->info, scene).empty()) {
+        c.ref_entry = stand_in, c.ref_substeps = kConvergedSubsteps;
+      } else {
+        c.r.skipped.push_back(fmt::format("error against the reference: {}, and no converged run stands in", why));
+        c.ref_entry = nullptr;
+      }
+    }
+  }
+  if (!c.ref_entry) return;
+  c.error.emplace(scene);
+  if (c.ref_substeps > 1) {
+    c.converged_scene = scene;
+    c.converged_scene->dt = c.ref_dt = scene.dt / c.ref_substeps;
+  }
+  try {
+    const Scene& ref_scene = c.converged_scene ? *c.converged_scene : scene;
+    c.reference = c.ref_entry->create(ref_scene, c.ref_entry->info.profiles.front(),
+                                      merged_settings(scene, c.ref_entry->info.name, {}));
+    c.reference->read(c.ref_state);
+  } catch (const std::exception& e) {
+    c.error->reference_failed(0, e.what());
+    c.reference.reset();
+  }
+}
+
+void set_up_sampling(RunContext& c) {
+  const Scene& scene = c.scene;
+  Result& r = c.r;
+  c.metrics.emplace(scene, r.metrics_config);
+  r.series.radius_mean = scene.radius.mean();
+  if (scene.container.kind == ContainerKind::Box)
+    r.series.box = {scene.container.min.x(), scene.container.min.y(), scene.container.max.x(), scene.container.max.y()};
+  c.every = r.metrics_config.sample_every;  // a multiple of the stride
+  // Figures take every sampled state they can, up to series_points of them.
+  c.series_every = c.every * std::max(1L, r.steps / c.every / std::max(1, c.options.series_points));
+  constexpr int kTracks = 4;
+  r.series.tracks.resize(std::min(kTracks, scene.n()));
+  constexpr int kMaxFrameBalls = 1000;
+  // Every ceil(samples / frames)-th sample: at most frames + 1 of them, step 0 included.
+  const int frames = c.options.frames;
+  c.frame_every = frames > 0 && scene.n() <= kMaxFrameBalls
+                      ? c.every * std::max(1L, (r.steps / c.every + frames - 1) / frames)
+                      : 0;
+  if (c.frame_every) r.series.radius.assign(scene.radius.data(), scene.radius.data() + scene.n());
+}
+
+bool read_initial(RunContext& c) {
+  try {
+    c.engine->read(c.state);
+  } catch (const std::exception& e) {
+    return stop(c, RunStatus::failed, 0, fmt::format("reading the initial state threw: {}", e.what()));
+  }
+  if (spins_missing(c, c.state))
+    return stop(c, RunStatus::failed, 0,
+                "the engine reads back no angular velocities and angles for a scene that rotates");
+  c.trajectory_sum = kChecksumSeed;
+  sample(c, 0);
+  if (c.options.trajectory) c.options.trajectory->write(c.r.engine, c.r.profile, 0, c.state);
+  return true;
+}
+
+void step_loop(RunContext& c) {
+  const long steps = c.r.steps;
+  const long report_every = std::max(1L, steps / 100);
+  for (long k = 1; k <= steps; ++k) {
+    if (!advance(c, k)) break;
+    if (c.options.progress && k % report_every == 0) c.options.progress(k, steps);
+  }
+}
+
+void sample_last(RunContext& c) {
+  // A run that ended between samples: its last good state counts.
+  if (c.sampled < c.r.steps_done) sample(c, c.r.steps_done);
+}
+
+void final_metrics(RunContext& c) {
+  const Scene& scene = c.scene;
+  const State& state = c.state;
+  Result& r = c.r;
+  r.metrics = c.metrics->summary();
+  r.events = c.metrics->events();
+  if (speed_distribution_applies(scene)) {
+    r.speed_ks = rayleigh_ks_statistic(state);
+    r.speed_ks_critical = rayleigh_ks_critical(scene.n());
+  } else {
+    r.skipped.push_back(
+        "speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
+  }
+  if (scene.features().gravity && scene.features().walls)
+    r.jitter = std::sqrt(state.vel.rowwise().squaredNorm().mean());
+  else
+    r.skipped.push_back("jitter (final RMS speed): only for scenes with gravity and walls, where balls come to rest");
+  if (scene.metrics.rolling) {
+    const RollingClosedForm closed = rolling_closed_form(scene);
+    r.rolling.speed = state.vel(0, 0);
+    r.rolling.expected_speed = closed.speed;
+    r.rolling.expected_time_to_roll = closed.time_to_roll;
+  }
+  if (scene.metrics.angle_of_repose) {
+    r.angle_of_repose = angle_of_repose(state, scene);
+    if (!r.angle_of_repose)
+      r.skipped.push_back(fmt::format("{}: no flank of the final heap had {} columns within [{:g} H, {:g} H] of its "
+                                      "height H (a layer spread flat, or a column standing)",
+                                      kReposeUnmeasuredNote, kReposeMinColumns, kReposeBandLow, kReposeBandHigh));
+  }
+  if (scene.features().gravity || scene.features().walls)
+    r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
+  if (!r.metrics.slip.measured)
+    r.skipped.push_back("slip and time to roll: only for scenes that rotate and have walls");
+  if (!c.options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");
+  if (c.error) {
+    r.reference = c.error->summary();
+    // Named as it ran: "exact", or "chipmunk/tuned at dt/64" for a converged run.
+    const auto& name = c.ref_entry->info.name;
+    const std::string label = run_label(name, c.ref_entry->info.profiles.front());
+    r.reference.reference = c.ref_substeps == 1 ? name : fmt::format("{} at dt/{}", label, c.ref_substeps);
+    r.reference.reference_dt = c.ref_dt;
+  }
+  constexpr int kMaxFinalPositions = 5000;  // a picture of more balls is a grey smear anyway
+  if (scene.n() <= kMaxFinalPositions)
+    for (int b = 0; b < scene.n(); ++b) r.series.final_pos.push_back({state.pos(b, 0), state.pos(b, 1)});
+  r.checksum_final = checksum_hex(c.final_sum), r.checksum_trajectory = checksum_hex(c.trajectory_sum);
+}
+
+void timing(RunContext& c) {
+  Result& r = c.r;
+  r.engine_s = c.engine_s;
+  r.engine_process_s = c.engine->own_step_seconds();
+  r.harness_s = std::max(0.0, seconds_since(c.harness_start) - c.engine_s);
+  const long stepped = std::max(1L, r.steps_done);
+  // The headline is the engine's own step time: an engine in another process times its step calls
+  // itself, and the harness's time, which adds the pipe, stands beside it (engine_s).
+  r.ns_per_step = r.engine_process_s.value_or(c.engine_s) * 1e9 / stepped;
+  r.ns_per_ball_step = r.ns_per_step / std::max(1, r.n);
+}
+
+}  // namespace ballbench
