@@ -93,7 +93,7 @@ TEST(SettingsTable, ListSettingsPrintsAnEnginesRows) {
   const auto o = testing::run_cli("list --settings home");
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("substeps"), std::string::npos) << o.out;
-  EXPECT_NE(o.out.find("one of: soft, events"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("one of: auto, soft, events"), std::string::npos) << o.out;
 }
 
 // An engine's settings() holds its rows' keys, and beside them only what is not a setting.
