@@ -24,31 +24,27 @@ inline const CLI::Validator kPositiveNumber(
     },
     "POSITIVE", "positive number");
 
+// A whole number from 1 to `most`; `too_many` names the cap in the refusal.
+inline CLI::Validator whole_number_validator(long long most, std::string too_many, std::string name,
+                                             std::string description) {
+  return CLI::Validator(
+      [most, too_many](std::string& text) -> std::string {
+        char* end = nullptr;
+        errno = 0;
+        const long long v = std::strtoll(text.c_str(), &end, 10);
+        if (end == text.c_str() || *end != '\0') return "expected a whole number, got '" + text + "'";
+        if (v < 1) return "must be >= 1, got '" + text + "'";
+        if (errno == ERANGE || v > most) return "must be at most " + too_many + ", got '" + text + "'";
+        return {};
+      },
+      std::move(name), std::move(description));
+}
+
 // A whole number >= 1 that fits the option's int.
-inline const CLI::Validator kPositiveCount(
-    [](std::string& text) -> std::string {
-      char* end = nullptr;
-      errno = 0;
-      const long long v = std::strtoll(text.c_str(), &end, 10);
-      if (end == text.c_str() || *end != '\0') return "expected a whole number, got '" + text + "'";
-      if (v < 1) return "must be >= 1, got '" + text + "'";
-      if (errno == ERANGE || v > 2147483647LL) return "must be at most 2147483647, got '" + text + "'";
-      return {};
-    },
-    "COUNT", "positive count");
+inline const CLI::Validator kPositiveCount = whole_number_validator(2147483647LL, "2147483647", "COUNT", "positive count");
 
 // A step count: a whole number from 1 to the cap of 1e9 steps (the scenes' own cap, README).
-inline const CLI::Validator kStepCount(
-    [](std::string& text) -> std::string {
-      char* end = nullptr;
-      errno = 0;
-      const long long v = std::strtoll(text.c_str(), &end, 10);
-      if (end == text.c_str() || *end != '\0') return "expected a whole number, got '" + text + "'";
-      if (v < 1) return "must be >= 1, got '" + text + "'";
-      if (errno == ERANGE || v > 1000000000LL) return "must be at most 1e9 steps, got '" + text + "'";
-      return {};
-    },
-    "STEPS", "step count");
+inline const CLI::Validator kStepCount = whole_number_validator(1000000000LL, "1e9 steps", "STEPS", "step count");
 
 // A file to write: not empty, and not a folder (an existing one, or a path ending in '/'), which
 // would pass every check before the run and fail only when the results are written after it.
