@@ -166,4 +166,11 @@ void apply_spec_texts(AccuracySpec& spec, const std::vector<std::string>& texts,
   }
 }
 
+std::optional<SpecTerm> principal_term(const AccuracySpec& spec) {
+  for (SpecTerm t : {SpecTerm::rolling, SpecTerm::energy_error, SpecTerm::energy_drift, SpecTerm::overlap,
+                     SpecTerm::rest_speed})
+    if (spec[t]) return t;
+  return std::nullopt;
+}
+
 }  // namespace ballbench

@@ -57,6 +57,12 @@ struct AccuracySpec {
   nlohmann::json to_json() const;  // {"overlap": 0.01, ...}: the bound terms only
 };
 
+// The term a work-precision front plots error along: the first the spec bounds of the rolling
+// error (a scene asks for it), the energy error against the reference, the energy drift, the
+// overlap, the rest speed (terms with a continuous figure, smaller better); none when the spec
+// bounds only counts and the horizon.
+std::optional<SpecTerm> principal_term(const AccuracySpec& spec);
+
 // A scene file's [accuracy] table: the terms it sets (a bound, or none where it drops the class's).
 struct SceneAccuracy {
   std::array<bool, kSpecTermCount> set{};

@@ -22,6 +22,7 @@
 #include "interrupt.h"
 #include "progress.h"
 #include "overlap.h"
+#include "toml_table_reader.h"
 
 namespace ballbench {
 namespace {
@@ -44,103 +45,6 @@ constexpr double kMaxMagnitude = 1e12;
 // about a radius with 64-bit integers multiplied by hash primes (core/overlap.h); 1e9 cells keeps
 // that product far from overflow, and a scene this spread out is a unit typo.
 constexpr double kMaxRadiiFromOrigin = 1e9;
-
-// "an integer", "an array of 3": what a node is, for messages.
-std::string node_type_name(const toml::node& n) {
-  switch (n.type()) {
-    case toml::node_type::string: return "a string";
-    case toml::node_type::integer: return "an integer";
-    case toml::node_type::floating_point: return "a number";
-    case toml::node_type::boolean: return "a boolean";
-    case toml::node_type::array: return fmt::format("an array of {}", n.as_array()->size());
-    case toml::node_type::table: return "a table";
-    default: return "a date or time";
-  }
-}
-
-// Reads one TOML table, naming every problem by file, line and dotted field path.
-class TableReader {
- public:
-  TableReader(const toml::table& t, std::string source, std::string prefix)
-      : t_(t), source_(std::move(source)), prefix_(std::move(prefix)) {}
-
-  [[noreturn]] void fail(const toml::node* at, const std::string& field, const std::string& why) const {
-    const auto line = at ? at->source().begin.line : t_.source().begin.line;
-    throw InputError(fmt::format("{}:{}: {}: {}", source_, line, path(field), why));
-  }
-  std::string path(const std::string& field) const { return prefix_.empty() ? field : prefix_ + "." + field; }
-
-  // Every key must be one of `allowed`.
-  void check_keys(std::initializer_list<const char*> allowed) const {
-    for (const auto& [k, v] : t_) {
-      const std::string key(k.str());
-      if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {
-        std::vector<std::string> names(allowed.begin(), allowed.end());
-        fail(&v, key, "unknown key" + did_you_mean(key, names));
-      }
-    }
-  }
-
-  bool has(const char* key) const { return t_.contains(key); }
-  const toml::node* node(const char* key) const { return t_.get(key); }
-
-  double number(const char* key) const {
-    const toml::node* n = t_.get(key);
-    if (!n) fail(nullptr, key, "missing (a number is required)");
-    return as_number(n, key);
-  }
-  double number_or(const char* key, double fallback) const { return has(key) ? number(key) : fallback; }
-
-  int64_t integer(const char* key, int64_t fallback) const {
-    const toml::node* n = t_.get(key);
-    if (!n) return fallback;
-    if (!n->is_integer()) fail(n, key, fmt::format("expected an integer, got {}", type_name(*n)));
-    return n->as_integer()->get();
-  }
-
-  bool boolean(const char* key, bool fallback) const {
-    const toml::node* n = t_.get(key);
-    if (!n) return fallback;
-    if (!n->is_boolean()) fail(n, key, fmt::format("expected true or false, got {}", type_name(*n)));
-    return n->as_boolean()->get();
-  }
-
-  std::string string(const char* key, const std::string& fallback) const {
-    const toml::node* n = t_.get(key);
-    if (!n) return fallback;
-    if (!n->is_string()) fail(n, key, fmt::format("expected a string, got {}", type_name(*n)));
-    return n->as_string()->get();
-  }
-
-  Eigen::Vector2d vec2(const char* key) const {
-    const toml::node* n = t_.get(key);
-    if (!n) fail(nullptr, key, "missing (an array of two numbers is required)");
-    const toml::array* a = n->as_array();
-    if (!a || a->size() != 2)
-      fail(n, key, fmt::format("expected an array of two numbers [x, y], got {}", type_name(*n)));
-    Eigen::Vector2d v{as_number(a->get(0), std::string(key) + "[0]"), as_number(a->get(1), std::string(key) + "[1]")};
-    for (int i = 0; i < 2; ++i)
-      if (std::abs(v[i]) > kMaxMagnitude)
-        fail(a->get(i), fmt::format("{}[{}]", key, i), fmt::format("must be within +-{:g}, got {}", kMaxMagnitude, v[i]));
-    return v;
-  }
-  Eigen::Vector2d vec2_or(const char* key, Eigen::Vector2d fallback) const { return has(key) ? vec2(key) : fallback; }
-
- private:
-  static std::string type_name(const toml::node& n) { return node_type_name(n); }
-  double as_number(const toml::node* n, const std::string& field) const {
-    double v;
-    if (n->is_floating_point()) v = n->as_floating_point()->get();
-    else if (n->is_integer()) v = static_cast<double>(n->as_integer()->get());
-    else fail(n, field, fmt::format("expected a number, got {}", type_name(*n)));
-    if (!std::isfinite(v)) fail(n, field, fmt::format("must be finite, got {}", v));
-    return v;
-  }
-
-  const toml::table& t_;
-  std::string source_;
-  std::string prefix_;
-};
 
 // Uniform double in [lo, hi) from 53 random bits: the mapping is ours, so a seed gives the same
 // scene with every standard library (std::uniform_real_distribution's is implementation-defined).
@@ -227,7 +131,7 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
     const toml::table& t = *arr->get(i)->as_table();
     TableReader r(t, source, fmt::format("ball[{}]", i));
     r.check_keys({"pos", "vel", "radius", "mass", "spin"});
-    const Eigen::Vector2d p = r.vec2("pos");
+    const Eigen::Vector2d p = r.vec2("pos", kMaxMagnitude);
     const double radius = r.number("radius");
     const double mass = r.number_or("mass", 1.0);
     check_size(r, "radius", radius);
@@ -238,7 +142,7 @@ void read_explicit_balls(const toml::node& node, const std::string& source, cons
              fmt::format("ball at ({}, {}) with radius {} is not inside the container", p.x(), p.y(), radius));
     const double spin = r.number_or("spin", 0.0);
     check_spin(r, "spin", spin);
-    balls.add(p, r.vec2_or("vel", {0, 0}), radius, mass, spin, static_cast<int>(t.source().begin.line));
+    balls.add(p, r.vec2_or("vel", kMaxMagnitude, {0, 0}), radius, mass, spin, static_cast<int>(t.source().begin.line));
   }
 }
 
@@ -261,7 +165,7 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
   if (container.kind != ContainerKind::Box && (!r.has("origin") || !r.has("columns")))
     r.fail(nullptr, "origin", "origin and columns are required in open space");
   const Eigen::Vector2d origin =
-      r.vec2_or("origin", container.min.array() + 0.5 * spacing);
+      r.vec2_or("origin", kMaxMagnitude, container.min.array() + 0.5 * spacing);
   int64_t columns = 0;
   if (r.has("columns")) {
     columns = r.integer("columns", 0);
@@ -270,7 +174,7 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
     columns = static_cast<int64_t>(std::floor((container.max.x() - radius - origin.x()) / spacing)) + 1;
   }
   if (columns <= 0) r.fail(r.node("origin"), "origin", "no column fits in the container");
-  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
+  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", kMaxMagnitude, {0, 0}), vel_max = r.vec2_or("vel_max", kMaxMagnitude, {0, 0});
   const SpinRange spin = read_spin_range(r);
   std::mt19937_64 rng(static_cast<uint64_t>(r.integer("seed", 1)));
   const int line = static_cast<int>(t.source().begin.line);
@@ -307,8 +211,8 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
   } else if (!r.has("pos_min") || !r.has("pos_max")) {
     r.fail(nullptr, "pos_min", "pos_min and pos_max are required in open space");
   }
-  const Eigen::Vector2d pos_min = r.vec2_or("pos_min", lo_default), pos_max = r.vec2_or("pos_max", hi_default);
-  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", {0, 0}), vel_max = r.vec2_or("vel_max", {0, 0});
+  const Eigen::Vector2d pos_min = r.vec2_or("pos_min", kMaxMagnitude, lo_default), pos_max = r.vec2_or("pos_max", kMaxMagnitude, hi_default);
+  const Eigen::Vector2d vel_min = r.vec2_or("vel_min", kMaxMagnitude, {0, 0}), vel_max = r.vec2_or("vel_max", kMaxMagnitude, {0, 0});
   if ((pos_min.array() > pos_max.array()).any()) r.fail(r.node("pos_min"), "pos_min", "must not exceed pos_max");
   if ((vel_min.array() > vel_max.array()).any()) r.fail(r.node("vel_min"), "vel_min", "must not exceed vel_max");
   const SpinRange spin = read_spin_range(r);
@@ -475,7 +379,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   check_positive(top, "duration", s.duration);
   if (s.duration / s.dt > kMaxSteps)
     top.fail(top.node("duration"), "duration", fmt::format("duration / dt is more than {:.0e} steps", kMaxSteps));
-  s.gravity = top.vec2_or("gravity", {0, 0});
+  s.gravity = top.vec2_or("gravity", kMaxMagnitude, {0, 0});
   s.restitution = top.number_or("restitution", 1.0);
   if (s.restitution < 0 || s.restitution > 1)
     top.fail(top.node("restitution"), "restitution", fmt::format("must be in [0, 1], got {}", s.restitution));
@@ -498,8 +402,8 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     const std::string kind = cr.string("kind", "box");
     if (kind == "box") {
       s.container.kind = ContainerKind::Box;
-      s.container.min = cr.vec2("min");
-      s.container.max = cr.vec2("max");
+      s.container.min = cr.vec2("min", kMaxMagnitude);
+      s.container.max = cr.vec2("max", kMaxMagnitude);
       if ((s.container.min.array() >= s.container.max.array()).any())
         cr.fail(cr.node("max"), "max", "must be greater than min in both x and y");
     } else if (kind == "none") {

@@ -11,6 +11,8 @@
 #include <fmt/format.h>
 
 #include "data_file.h"
+#include "front_figures.h"
+#include "gnuplot.h"
 #include "ordered_set.h"
 #include "viewer_page.h"
 
@@ -18,20 +20,6 @@ namespace ballbench {
 namespace {
 
 namespace fs = std::filesystem;
-
-void run_gnuplot(const fs::path& script) {
-  const std::string cmd = fmt::format("gnuplot '{}' 2>'{}.log'", script.string(), script.string());
-  if (std::system(cmd.c_str()) != 0)
-    throw std::runtime_error(fmt::format("gnuplot failed on {} (see {}.log)", script.string(), script.string()));
-  fs::remove(script.string() + ".log");  // kept only when it has something to say
-}
-
-// A name safe for files: "box2d/tuned" -> "box2d-tuned".
-std::string slug(std::string s) {
-  for (char& c : s)
-    if (c == '/' || c == ' ') c = '-';
-  return s;
-}
 
 // None when no run of the scene has an energy to plot (every engine refused it, say).
 std::optional<Figure> energy_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
@@ -347,6 +335,7 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
         figures.push_back(viewer_figure(scene, by_scene[scene], "."));
     }
     for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));
+    for (Figure& f : front_figures(in)) figures.push_back(std::move(f));
     for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f, "."));
     if (in.bench && !in.bench->rows.empty()) figures.push_back(scaling_figure(*in.bench, "."));
   } catch (...) {

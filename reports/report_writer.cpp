@@ -15,6 +15,8 @@
 #include "metrics/catalog.h"
 #include "ensemble.h"
 #include "friction_section.h"
+#include "accuracy_section.h"
+#include "summary_section.h"
 #include "ordered_set.h"
 #include "runner.h"
 
@@ -496,6 +498,8 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.harness = read_bench_file(f.string());
     } else if (name == "calibration.json") {
       in.calibration = read_calibration_file(f.string());
+    } else if (name.starts_with("match-")) {
+      in.matches.push_back(read_match_file(f.string()));
     } else if (name.starts_with("sweep-")) {
       in.sweeps.push_back(read_sweep_file(f.string()));
     } else if (name.starts_with("stress-")) {
@@ -505,6 +509,13 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
         (r.seed_offset == 0 ? in.results : in.placements).push_back(std::move(r));
     }
   }
+  // The equal-accuracy scenes in the suite's order (run.json's parts), then any others by name.
+  const auto parts = in.run.is_object() ? in.run.value("parts", std::vector<std::string>{}) : std::vector<std::string>{};
+  const auto rank = [&](const MatchResult& m) {
+    return std::find(parts.begin(), parts.end(), "match:" + m.scene) - parts.begin();
+  };
+  std::stable_sort(in.matches.begin(), in.matches.end(),
+                   [&](const MatchResult& a, const MatchResult& b) { return rank(a) < rank(b); });
   if (in.run.is_null())
     throw InputError(fmt::format("{}: no run.json, so no report's results to render (run `ballbench report` "
                                  "without --render-only first)",
@@ -523,6 +534,8 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       "suite, {}.\n\n",
       run.value("command", "?"), run.value("suite", "quick"), run.value("date", "?"));
 
+  put("{}", summary_section(in, figures));
+  put("{}", accuracy_section(in, figures));
   put("## Machine and build\n\n| | |\n|---|---|\n");
   for (const char* k : {"cpu", "cores", "os", "compiler", "build_type", "flags"})
     if (run.contains(k)) put("| {} | {} |\n", k, json_text(run[k]));

@@ -12,6 +12,7 @@
 #include "calibration_result.h"
 #include "engine.h"
 #include "frontier_result.h"
+#include "match_result.h"
 #include "result.h"
 #include "sweep_result.h"
 
@@ -21,6 +22,7 @@ struct ReportInputs {
   nlohmann::json run;                // results/run.json: machine, compiler, command, date
   std::vector<Result> results;       // every other results/*.json, in file order: the scene's own placement
   std::vector<Result> placements;    // the same files' runs of further placements (seed_offset > 0)
+  std::vector<MatchResult> matches;  // results/match-*.json (`ballbench match`), in the suite's order
   std::vector<SweepResult> sweeps;   // results/sweep-*.json (`ballbench sweep`)
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
@@ -35,8 +37,8 @@ EngineRole role_of(const ReportInputs& in, const std::string& engine);
 
 // A figure drawn for the report (figures.h).
 struct Figure {
-  std::string kind;     // "energy", "picture", "animation", "viewer" (per scene), "work-precision", "frontier" (per
-                        // scene), "scaling"
+  std::string kind;     // "energy", "picture", "animation", "viewer" (per scene), "work-precision", "frontier", "front" (per
+                        // scene), "fronts" (every scene's front), "scaling"
   std::string scene;    // "" for scaling
   std::string file;     // relative to the report's folder: figures/NAME.png (an animation: NAME.gif; the viewer:
                         // SCENE-viewer.html)

@@ -128,6 +128,35 @@ count = 3
 radius = 0.1
 spin_max = 5.0
 )";
+    // The suites over the stand-ins: the shipped file's parts (test_report_suite.cpp reads that
+    // one), with the equal-accuracy searches on the two seed scenes.
+    fs::create_directories(root_ / "scenarios" / "suites");
+    std::ofstream(root_ / "scenarios" / "suites" / "report.toml") << R"([quick]
+scenes = ["seed-box", "seed-bowl", "slide-to-roll", "spin-drop", "rough-box", "rough-pile", "smooth-pile"]
+viewer_scenes = ["seed-box", "seed-bowl"]
+unreferenced = ["rough-pile", "smooth-pile"]
+seeds = 3
+match_scenes = ["seed-box", "seed-bowl"]
+match_budget_s = 60
+sweep_scenes = ["seed-box"]
+stress_scenes = ["seed-box"]
+stress_levels = 5
+timeout_s = 120
+
+[full]
+scenes = ["seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile", "slide-to-roll",
+          "spin-drop", "rough-box", "rough-pile", "smooth-pile"]
+viewer_scenes = ["seed-box", "seed-bowl"]
+unreferenced = ["rough-pile", "smooth-pile"]
+seeds = 10
+match_scenes = ["seed-box", "pile"]
+match_budget_s = 60
+sweep_scenes = ["seed-box", "seed-bowl"]
+stress_scenes = ["seed-box", "seed-bowl"]
+stress_levels = 6
+timeout_s = 600
+costly_engines = true
+)";
   }
   void TearDown() override { fs::remove_all(root_); }
 
@@ -176,6 +205,14 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            "| engine | `rough-pile` (deg) | `smooth-pile` (deg) |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
+  // Equal accuracy first: the summary, each match scene's section with its front, and every try's CSV.
+  for (const char* want : {"## Summary", "| [`seed-box`](#equal-accuracy-seed-box) (gas) |",
+                           "## Equal accuracy: `seed-box`", "## Equal accuracy: `seed-bowl`",
+                           "figures/seed-bowl-front.png", "figures/fronts.png"})
+    EXPECT_NE(md.find(want), std::string::npos) << want;
+  EXPECT_LT(md.find("## Summary"), md.find("## Scene `seed-box`"));
+  for (const char* file : {"figures/seed-box-front.png", "figures/fronts.png", "results/match-seed-bowl.csv"})
+    EXPECT_TRUE(fs::exists(out() / file)) << file;
   // The seed scenes in motion: an animated GIF each (one graphic control block per frame), under 2 MB.
   for (const char* scene : {"seed-box", "seed-bowl"}) {
     const std::string gif = slurp(out() / "figures" / (std::string(scene) + "-animation.gif"));

@@ -21,6 +21,8 @@
 #include "bench_results.h"
 #include "input_error.h"
 #include "interrupt.h"
+#include "match.h"
+#include "report_suite.h"
 #include "registry.h"
 #include "restitution_calibration.h"
 #include "report_writer.h"
@@ -37,66 +39,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// What a report runs. `quick` is what scripts/report runs (about 13 minutes on 2 cores, 9 of them
-// the benchmarks); `full` is the complete evidence (tens of minutes).
-struct Suite {
-  std::vector<std::string> scenes;        // a comparison table each, every engine and profile
-  std::vector<std::string> sweep_scenes;  // work against precision
-  std::vector<std::string> stress_scenes; // stability frontier
-  int stress_levels = 5;
-  std::vector<std::string> bench_filters;  // Google Benchmark --benchmark_filter, one process each
-  double bench_min_time = 0.05;           // s per benchmark
-  double bench_budget_s = 10;             // s a benchmark may run before it stops as failed, with its figure
-  std::string harness_filter;             // of bench/ballbench_harness_benchmark (its own minimum times)
-  double timeout_s = 600;                 // per engine run
-  int seeds = 1;                          // placements of each scene with random placement (ensemble.h)
-  // Scenes whose tables run without a reference: heaps, chaotic from the first contacts (every
-  // engine parts from any reference within half a second), measured by their final angle of
-  // repose; their reference runs (exact, or Chipmunk at dt / 64) cost more than every engine's.
-  std::vector<std::string> unreferenced = {"rough-pile", "smooth-pile"};
-};
-
-Suite quick_suite() {
-  Suite s;
-  // The seed scenes, and friction: a ball sliding to roll, a spinning ball dropped, rough spinning
-  // balls in a box, and a heap with friction beside its frictionless twin (the report's friction
-  // section).
-  s.scenes = {"seed-box", "seed-bowl", "slide-to-roll", "spin-drop", "rough-box", "rough-pile", "smooth-pile"};
-  s.seeds = 3;
-  s.sweep_scenes = {"seed-box"};
-  s.stress_scenes = {"seed-box"};
-  s.stress_levels = 5;
-  // Every engine up to 10^4 balls, ours to 10^6 as well; the 10^6 bowl alone in its own process,
-  // for its peak memory, with the pour's first second (the same scene, built once).
-  // The settled pile and the fluid to 10^4 balls.
-  s.bench_filters = {
-      "^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000)(/|$)|^step/home/default/(gas/(100000|1000000)|bowl/100000)(/|$)",
-      "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/(100|1000|10000)(/|$)",
-      "^pipe/"};
-  s.bench_min_time = 0.05;
-  // Issue 6's measure: 10^5 balls, every step and every 10th, and the floor beside it.
-  s.harness_filter = "^(harness|floor)/home/gas/100000/";
-  s.timeout_s = 120;
-  return s;
-}
-
-Suite full_suite() {
-  Suite s;
-  s.scenes = {"seed-box", "seed-bowl", "bullet", "newtons-cradle", "mass-ratio", "crowd", "gas", "pile", "slide-to-roll",
-              "spin-drop", "rough-box", "rough-pile", "smooth-pile"};
-  s.seeds = 10;
-  s.sweep_scenes = {"seed-box", "seed-bowl"};
-  s.stress_scenes = {"seed-box", "seed-bowl"};
-  s.stress_levels = 6;
-  // Everything registered: 10 .. 10^5 balls, 10^6 for ours (the 10^6 bowl in its own process);
-  // the settled pile to 10^6 (settling 10^6 balls before timing takes a while) and the fluid to 10^5.
-  s.bench_filters = {"^step/[^/]+/[^/]+/(gas|bowl)/(10|100|1000|10000|100000)(/|$)|^step/home/default/gas/1000000(/|$)",
-                     "^(step|pour)/home/default/bowl/1000000(/|$)", "^step/[^/]+/[^/]+/(settled|fluid)/", "^pipe/"};
-  s.bench_min_time = 0.2;
-  s.bench_budget_s = 60;
-  s.harness_filter = "^(harness|floor)/";
-  s.timeout_s = 600;
-  return s;
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 struct ReportArgs {
@@ -110,13 +54,15 @@ struct ReportArgs {
   std::string shard;         // "I/N": run only that share of the parts, render nothing
   int seeds = 0;             // placements of each seed scene; 0: the suite's
   std::string engines = "all";  // the engines compared (parse_engine_list)
+  std::string suites;           // the suites file (default: report_suites_file())
 };
 
 // The report's parts in run order, each a results file (or, for "bench", the step and harness
 // benchmarks together, so their ratios come from one machine). A shard runs the parts it takes.
-std::vector<std::string> report_parts(const Suite& suite, bool bench) {
+std::vector<std::string> report_parts(const ReportSuite& suite, bool bench) {
   std::vector<std::string> parts;
   for (const auto& name : suite.scenes) parts.push_back("table:" + name);
+  for (const auto& name : suite.match_scenes) parts.push_back("match:" + name);
   for (const auto& name : suite.sweep_scenes) parts.push_back("sweep:" + name);
   for (const auto& name : suite.stress_scenes) parts.push_back("stress:" + name);
   parts.push_back("calibration");
@@ -250,7 +196,7 @@ void report(const ReportArgs& a) {
   // --out that cannot hold them is one line, not an error from deep inside after the runs.
   for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
-  Suite suite = a.full ? full_suite() : quick_suite();
+  ReportSuite suite = load_report_suite(a.full ? "full" : "quick", a.suites);
   const auto engines = parse_engine_list(a.engines);  // a bad name is an error before anything runs
   if (a.seeds > 0) suite.seeds = a.seeds;
   const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);
@@ -275,12 +221,12 @@ void report(const ReportArgs& a) {
   };
   if (!a.render_only) {
     fs::create_directories(results_dir);
-    // The quick suite's sweeps and frontiers leave out engines whose runs are costly: each of their
+    // Sweeps, frontiers and matches may leave out engines whose runs are costly: each of their
     // points is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s) or
-    // Open MPI and thousands of DEM sub-steps (LAMMPS), hundreds of times over; --full includes
-    // them. Their scene tables, calibration and benchmarks are in both.
+    // Open MPI and thousands of DEM sub-steps (LAMMPS), hundreds of times over. Their scene
+    // tables, calibration and benchmarks have every engine.
     std::vector<const EngineEntry*> swept = engines;
-    if (!a.full) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
+    if (!suite.costly_engines) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
     Isolation isolation;
     isolation.timeout_s = suite.timeout_s;
     // A part whose complete results are already there is reused (a report that stopped resumes).
@@ -297,10 +243,10 @@ void report(const ReportArgs& a) {
       if (reuse(path, complete_results(path, scene, engines, seeds))) continue;
       RunOptions options;
       // The error against `exact` (or a converged run) in every row, but for the heaps.
-      if (std::find(suite.unreferenced.begin(), suite.unreferenced.end(), name) == suite.unreferenced.end())
+      if (!contains(suite.unreferenced, name))
         use_reference(options);
-      // The thesis's scenes, animated and in the viewer: as many frames as a page of every run holds.
-      if (name.starts_with("seed-"))
+      // Animated and in the viewer: as many frames as a page of every run holds.
+      if (contains(suite.viewer_scenes, name))
         options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
       std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of
@@ -311,6 +257,22 @@ void report(const ReportArgs& a) {
       write_results_file(path, runs);
       stop_if_interrupted();
       fmt::print(stderr, "ran {}\n", name);
+    }
+    for (const std::string& name : suite.match_scenes) {
+      if (!mine("match:" + name)) continue;
+      const std::string path = fmt::format("{}/match-{}.json", results_dir, name);
+      if (reuse(path, uninterrupted(path, read_match_file))) continue;
+      const Scene scene = load_scene(name);
+      MatchOptions o;
+      o.spec = scene_spec(scene);
+      o.budget_s = suite.match_budget_s;
+      o.isolation = isolation;
+      o.reference = reference_engine();
+      o.converged_reference = converged_reference_engine();
+      const MatchResult m = run_match(scene, swept, o, run_context());
+      write_match_files(m, path, fmt::format("{}/match-{}.csv", results_dir, name));
+      stop_if_interrupted();
+      fmt::print(stderr, "matched {}\n", name);
     }
     for (const std::string& name : suite.sweep_scenes) {
       if (!mine("sweep:" + name)) continue;
@@ -367,7 +329,7 @@ void report(const ReportArgs& a) {
       stop_if_interrupted();
     }
     nlohmann::json context = run_context();
-    context["suite"] = a.full ? "full" : "quick";
+    context["suite"] = suite.name;
     context["seeds"] = suite.seeds;
     context["engine_list"] = a.engines;
     context["scenes"] = suite.scenes;  // the report's order
@@ -396,9 +358,9 @@ void add_report(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "report", "run the standard comparison (tables, sweeps, stability frontiers, scaling) and write REPORT.md");
   cmd->add_option("--out", a->out, "folder for REPORT.md, figures/ and results/ (default: reports)");
-  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite, about 13 minutes on 2 cores, 4 with --no-bench (the default)");
-  cmd->add_flag("--full", a->full, "the complete evidence: more scenes, sweeps and frontiers, every benchmark "
-                                   "(tens of minutes)")
+  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite (the default): about 30 minutes on 2 cores, 20 with --no-bench");
+  cmd->add_flag("--full", a->full, "the complete evidence: more scenes, equal-accuracy searches, sweeps and "
+                                   "frontiers, every benchmark (hours)")
       ->excludes(quick);
   auto* render_only =
       cmd->add_flag("--render-only", a->render_only, "only rebuild REPORT.md from the results already in OUT/results");
@@ -420,6 +382,9 @@ void add_report(CLI::App& app) {
                   "random placements of each scene with random placement, for its ensemble table (default: 3 quick, "
                   "10 full)")
       ->check(kPositiveCount)
+      ->excludes(render_only);
+  cmd->add_option("--suites", a->suites,
+                  "the suites file: what --quick and --full run (default: scenarios/suites/report.toml)")
       ->excludes(render_only);
   cmd->add_option("--shard", a->shard,
                   "run only shard I of N of the report's parts (I/N, e.g. 2/3; the benchmarks are one part), on one "

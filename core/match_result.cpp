@@ -1,0 +1,189 @@
+#include "match_result.h"
+
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "data_file.h"
+#include "input_error.h"
+#include "json_value.h"
+#include "shard_roll.h"
+
+namespace ballbench {
+
+std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
+
+std::string configuration_text(const MatchTry& t) {
+  std::string s = t.halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << t.halvings);
+  if (!t.knob.empty()) s += fmt::format(", {}={}", t.knob, json_text(t.value));
+  return s;
+}
+
+double term_miss(const SpecTermDef& d, double bound, double figure) {
+  if (d.at_least) return figure > 0 ? bound / figure : std::numeric_limits<double>::infinity();
+  return bound > 0 ? figure / bound : 1 + figure;
+}
+
+double miss(const MatchTry& t, const AccuracySpec& spec) {
+  if (t.status != RunStatus::ok) return std::numeric_limits<double>::infinity();
+  double worst = 0;
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound) continue;
+    const auto f = t.figures.value(d.key, nlohmann::json());
+    if (!f.is_number()) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, term_miss(d, *bound, f.get<double>()));
+  }
+  return worst;
+}
+
+std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec) {
+  if (t.status != RunStatus::ok) return std::nullopt;
+  if (const auto term = principal_term(spec)) {
+    const auto f = t.figures.value(spec_term(*term).key, nlohmann::json());
+    return f.is_number() ? std::optional(f.get<double>()) : std::nullopt;
+  }
+  const double x = miss(t, spec);
+  return std::isfinite(x) ? std::optional(x) : std::nullopt;
+}
+
+const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role) {
+  const MatchOutcome* best = nullptr;
+  for (const MatchOutcome& oc : m.outcomes)
+    if (oc.reached && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
+  return best;
+}
+
+nlohmann::json to_json(const MatchResult& m) {
+  nlohmann::json tries = nlohmann::json::array(), outcomes = nlohmann::json::array();
+  for (const MatchTry& t : m.tries)
+    tries.push_back({{"engine", t.engine},       {"profile", t.profile}, {"knob", t.knob},
+                     {"value", t.value},         {"halvings", t.halvings}, {"dt", t.dt},
+                     {"status", run_status_text(t.status)},       {"error", t.error},   {"met", t.met},
+                     {"why_not", t.why_not},     {"figures", t.figures}, {"cost_ns", t.cost_ns},
+                     {"cost_pipe_ns", t.cost_pipe_ns ? nlohmann::json(*t.cost_pipe_ns) : nlohmann::json()},
+                     {"wall_s", t.wall_s},       {"settings", t.settings}});
+  for (const MatchOutcome& o : m.outcomes)
+    outcomes.push_back({{"engine", o.engine},       {"profile", o.profile},   {"role", o.role},   {"reached", o.reached},
+                        {"found", o.found},         {"best", o.best},         {"tries", o.tries},
+                        {"finest_dt", o.finest_dt}, {"cost_repeats", o.cost_repeats}, {"cost_ns", o.cost_ns},
+                        {"cost_pipe_ns", o.cost_pipe_ns ? nlohmann::json(*o.cost_pipe_ns) : nlohmann::json()},
+                        {"stopped", o.stopped},     {"command", o.command}});
+  return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
+          {"scene_class", m.scene_class}, {"n", m.n},        {"dt", m.dt},
+          {"spec", m.spec.to_json()}, {"context", m.context}, {"interrupted", m.interrupted},
+          {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
+          {"tries", tries},          {"outcomes", outcomes}};
+}
+
+MatchResult match_from_json(const nlohmann::json& j) {
+  if (j.value("kind", "") != "match") throw InputError("not a match result (no \"kind\": \"match\")");
+  MatchResult m;
+  m.scene = j.at("scene").get<std::string>();
+  m.scene_source = j.at("scene_source").get<std::string>();
+  m.scene_class = j.at("scene_class").get<std::string>();
+  m.n = j.at("n").get<int>();
+  m.dt = j.at("dt").get<double>();
+  for (const auto& [key, value] : j.at("spec").items()) {
+    const auto term = spec_term_named(key);
+    if (!term) throw InputError(fmt::format("spec: unknown term '{}'", key));
+    m.spec[*term] = value.get<double>();
+  }
+  m.context = j.at("context");
+  m.interrupted = j.at("interrupted").get<std::string>();
+  m.shard_index = j.at("shard").at("index").get<int>();
+  m.shard_count = j.at("shard").at("count").get<int>();
+  const auto opt = [](const nlohmann::json& v) { return v.is_null() ? std::nullopt : std::optional(v.get<double>()); };
+  for (const auto& q : j.at("tries")) {
+    MatchTry t;
+    t.engine = q.at("engine").get<std::string>(), t.profile = q.at("profile").get<std::string>();
+    t.knob = q.at("knob").get<std::string>(), t.value = q.at("value");
+    t.halvings = q.at("halvings").get<int>(), t.dt = q.at("dt").get<double>();
+    t.status = run_status_from_text(q.at("status").get<std::string>()), t.error = q.at("error").get<std::string>();
+    t.met = q.at("met").get<bool>(), t.why_not = q.at("why_not").get<std::string>(), t.figures = q.at("figures");
+    t.cost_ns = q.at("cost_ns").get<double>(), t.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
+    t.wall_s = q.at("wall_s").get<double>(), t.settings = q.at("settings");
+    m.tries.push_back(std::move(t));
+  }
+  for (const auto& q : j.at("outcomes")) {
+    MatchOutcome o;
+    o.engine = q.at("engine").get<std::string>(), o.profile = q.at("profile").get<std::string>();
+    o.role = q.at("role").get<std::string>();
+    o.reached = q.at("reached").get<bool>(), o.found = q.at("found").get<int>(), o.best = q.at("best").get<int>();
+    o.tries = q.at("tries").get<int>(), o.finest_dt = q.at("finest_dt").get<double>();
+    o.cost_repeats = q.at("cost_repeats").get<std::vector<double>>(), o.cost_ns = q.at("cost_ns").get<double>();
+    o.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
+    o.stopped = q.at("stopped").get<std::string>(), o.command = q.at("command").get<std::string>();
+    for (int k : {o.found, o.best})
+      if (k >= int(m.tries.size())) throw InputError(fmt::format("outcomes: try {} is not in tries", k));
+    m.outcomes.push_back(std::move(o));
+  }
+  return m;
+}
+
+namespace {
+
+std::string match_csv(const MatchResult& m) {
+  std::string out = "engine,profile,knob,value,halvings,dt,status,met,cost_ns,cost_pipe_ns,wall_s";
+  for (const SpecTermDef& d : spec_terms()) out += fmt::format(",{}", d.key);
+  out += ",why_not\n";
+  const auto csv_text = [](std::string s) {  // quoted, as RFC 4180
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+  };
+  for (const MatchTry& t : m.tries) {
+    out += fmt::format("{},{},{},{},{},{:.17g},{},{},{:.6g},{},{:.3f}", t.engine, t.profile, t.knob,
+                       csv_text(t.value.is_null() ? "" : json_text(t.value)), t.halvings, t.dt, csv_text(run_status_text(t.status)),
+                       t.met ? 1 : 0, t.cost_ns, t.cost_pipe_ns ? fmt::format("{:.6g}", *t.cost_pipe_ns) : "", t.wall_s);
+    for (const SpecTermDef& d : spec_terms()) {
+      const auto v = t.figures.value(d.key, nlohmann::json());
+      out += v.is_null() ? "," : fmt::format(",{:.6g}", v.get<double>());
+    }
+    out += "," + csv_text(t.why_not) + "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_match_files(const MatchResult& m, const std::string& json_path, const std::string& csv_path) {
+  write_file_atomically(json_path, to_json(m).dump(2) + "\n", "the match results");
+  write_file_atomically(csv_path, match_csv(m), "the match CSV");
+}
+
+MatchResult read_match_file(const std::string& path) {
+  return read_json_file(path, "a match result", [](const nlohmann::json& j) { return match_from_json(j); });
+}
+
+MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std::vector<std::string>& names) {
+  if (shards.empty()) throw InputError("merge: no shards given");
+  const MatchResult& first = shards.front();
+  ShardRoll roll(first.shard_count, names);
+  MatchResult out = first;
+  out.tries.clear(), out.outcomes.clear();
+  out.shard_index = out.shard_count = 1;
+  out.context["shards"] = nlohmann::json::array();
+  for (size_t k = 0; k < shards.size(); ++k) {
+    const MatchResult& s = shards[k];
+    if (s.scene != first.scene || s.scene_source != first.scene_source || s.spec.to_json() != first.spec.to_json() ||
+        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt)
+      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec or shard count "
+                                   "differs)",
+                                   names[k], names.front()));
+    roll.take(k, s.shard_index, s.interrupted);
+    out.context["shards"].push_back(s.context);
+    const int offset = int(out.tries.size());
+    out.tries.insert(out.tries.end(), s.tries.begin(), s.tries.end());
+    for (MatchOutcome o : s.outcomes) {
+      if (o.found >= 0) o.found += offset;
+      if (o.best >= 0) o.best += offset;
+      out.outcomes.push_back(std::move(o));
+    }
+  }
+  roll.check_complete();
+  return out;
+}
+
+}  // namespace ballbench

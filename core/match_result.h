@@ -1,0 +1,93 @@
+#pragma once
+// What `ballbench match` found (match.h searches): every configuration tried and each engine and
+// profile's outcome, with their JSON and CSV. The report reads these files for its equal-accuracy
+// tables and work-precision fronts.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accuracy_spec.h"
+#include "run_status.h"
+
+namespace ballbench {
+
+// One configuration tried: a profile, a knob on top of it (or none) and a step size.
+struct MatchTry {
+  std::string engine, profile;
+  std::string knob;              // "" for the profile as it is
+  nlohmann::json value;          // the knob's value
+  int halvings = 0;              // dt = scene dt / 2^halvings
+  double dt = 0;
+  RunStatus status = RunStatus::ok;  // the run's
+  std::string error;
+  bool met = false;
+  std::string why_not;           // the failing terms, or the run's status
+  nlohmann::json figures;        // every spec term's figure
+  // Cost per ball per scene step (ns): the engine's own step time (self-timed by an engine in
+  // another process), and for such an engine the harness's time with the pipe beside it.
+  double cost_ns = 0;
+  std::optional<double> cost_pipe_ns;
+  double wall_s = 0;             // the run's wall time, harness included (s)
+  nlohmann::json settings;       // the engine's effective settings
+};
+
+// Each search's outcome: the cheapest configuration that met the spec, or the best one tried.
+struct MatchOutcome {
+  std::string engine, profile;
+  std::string role;      // the engine's (role_name): ours is compared with the external engines
+  bool reached = false;
+  int found = -1;        // index into MatchResult::tries of the cheapest that met
+  int best = -1;         // the try nearest the spec that did not meet it (its worst term's ratio to its bound)
+  int tries = 0;
+  double finest_dt = 0;  // the finest step tried (s)
+  std::vector<double> cost_repeats;  // the found configuration's cost in each timing run (ns)
+  double cost_ns = 0;    // their median
+  std::optional<double> cost_pipe_ns;
+  std::string stopped;   // why the search ended without a result ("budget", "max halvings"), or ""
+  std::string command;   // the `ballbench run` that reproduces the found (or best) point
+};
+
+struct MatchResult {
+  std::string scene, scene_source, scene_class;
+  int n = 0;
+  double dt = 0;  // the scene's
+  AccuracySpec spec;
+  nlohmann::json context;
+  std::string interrupted;
+  int shard_index = 1, shard_count = 1;
+  std::vector<MatchTry> tries;
+  std::vector<MatchOutcome> outcomes;
+};
+
+nlohmann::json to_json(const MatchResult& m);
+MatchResult match_from_json(const nlohmann::json& j);
+// JSON (the whole result) and CSV (every try), each written atomically.
+void write_match_files(const MatchResult& m, const std::string& json_path, const std::string& csv_path);
+MatchResult read_match_file(const std::string& path);
+// Shards of one match (same scene, spec and shard count, each once): one result.
+MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std::vector<std::string>& names);
+
+// How far a figure is from its term's bound: the figure over the bound (the bound over the figure
+// for a term that must be at least; 1 + the figure for a bound of 0), so at most 1 meets it.
+double term_miss(const SpecTermDef& d, double bound, double figure);
+
+// How far a try is from the spec: its worst term's figure over the bound (the bound over the figure
+// for a term that must be at least; 1 + the figure for a bound of 0), so at most 1 meets it;
+// infinite for a run that did not end ok or a term it did not measure.
+double miss(const MatchTry& t, const AccuracySpec& spec);
+
+// The try's error along its spec's principal term (principal_term), or its miss where the spec has
+// none; none for a run that did not end ok or a figure not measured. Work-precision fronts plot it.
+std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec);
+
+// The cheapest outcome of engines of `role` ("ours", "external") that met the spec, or none.
+const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role);
+
+// "dt/8, iterations=20": a try's step size and the knob set on top of its profile.
+std::string configuration_text(const MatchTry& t);
+// A cost in ns as the tables print it: whole numbers from 100 up, three figures below.
+std::string cost_text(double ns);
+
+}  // namespace ballbench

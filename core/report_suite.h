@@ -1,0 +1,34 @@
+#pragma once
+// What `ballbench report` runs, read from scenarios/suites/report.toml (its comments say what each
+// key does): the scenes of each part of the report, the benchmark selections and the budgets.
+#include <string>
+#include <vector>
+
+namespace ballbench {
+
+struct ReportSuite {
+  std::string name;                         // "quick", "full"
+  std::vector<std::string> scenes;          // a comparison table each, every engine and profile
+  std::vector<std::string> viewer_scenes;   // of those, animated and in the trajectory viewer
+  std::vector<std::string> unreferenced;    // of those, run without a reference
+  std::vector<std::string> match_scenes;    // equal accuracy and its work-precision fronts
+  double match_budget_s = 90;               // one engine and profile's search (s)
+  std::vector<std::string> sweep_scenes;    // work against precision
+  std::vector<std::string> stress_scenes;   // stability frontier
+  int stress_levels = 5;
+  int seeds = 1;                            // placements of each scene with random placement
+  std::vector<std::string> bench_filters;   // Google Benchmark --benchmark_filter, one process each
+  double bench_min_time = 0.05;             // s per benchmark
+  double bench_budget_s = 10;               // s a benchmark may run before it stops as failed
+  std::string harness_filter;               // of bench/ballbench_harness_benchmark
+  double timeout_s = 600;                   // per engine run
+  bool costly_engines = false;              // sweeps, frontiers and matches include EngineInfo::costly_runs engines
+};
+
+// The suite `name` of the suites file (default: scenarios/suites/report.toml in the scenarios
+// folder); an unknown suite, key or scene name is one line naming the file, line and field.
+ReportSuite load_report_suite(const std::string& name, const std::string& path = "");
+
+std::string report_suites_file();
+
+}  // namespace ballbench

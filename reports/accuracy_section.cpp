@@ -1,0 +1,168 @@
+#include "accuracy_section.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "result.h"
+
+namespace ballbench {
+namespace {
+
+std::string step_text(int halvings) { return halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << halvings); }
+
+std::string figure_text(const nlohmann::json& v) {
+  if (!v.is_number()) return "n/a";
+  const double x = v.get<double>();
+  return x == std::floor(x) && std::abs(x) < 1e9 ? fmt::format("{:.0f}", x) : fmt::format("{:.3g}", x);
+}
+
+// The figure of the spec's term that is furthest from its bound in try `t`, as "overlap 0.034".
+std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
+  std::string worst;
+  double worst_ratio = -1;
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound) continue;
+    const auto f = t.figures.value(d.key, nlohmann::json());
+    if (!f.is_number()) return fmt::format("{} not measured", d.key);
+    const double x = f.get<double>();
+    const double ratio = term_miss(d, *bound, x);
+    if (ratio > worst_ratio) worst_ratio = ratio, worst = fmt::format("{} {}", d.key, figure_text(f));
+  }
+  return worst;
+}
+
+std::string markdown_cell(std::string s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += ' ';
+    else out += c;
+  }
+  return out;
+}
+
+void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {
+  md += fmt::format("## {}\n\n", accuracy_heading(m.scene));
+  md += fmt::format("{} balls, class `{}`, the scene's dt = {:g} s. Spec: {}.", m.n, m.scene_class, m.dt,
+                    m.spec.text());
+  if (!m.interrupted.empty()) md += fmt::format(" **Interrupted by {}: the rows below are what ran.**", m.interrupted);
+  md += "\n\n";
+  // The cheapest first; then what did not meet the spec.
+  std::vector<const MatchOutcome*> rows;
+  for (const MatchOutcome& oc : m.outcomes) rows.push_back(&oc);
+  std::stable_sort(rows.begin(), rows.end(), [](const MatchOutcome* a, const MatchOutcome* b) {
+    if (a->reached != b->reached) return a->reached;
+    return a->reached && a->cost_ns < b->cost_ns;
+  });
+  std::vector<std::string> terms;
+  for (const SpecTermDef& d : spec_terms())
+    if (m.spec[d.term]) terms.push_back(d.key);
+  md += "| engine/profile | meets the spec | configuration | cost (ns) |";
+  for (const auto& t : terms) md += fmt::format(" {} |", t);
+  md += " tries |\n|---|---|---|---:|";
+  for (size_t k = 0; k < terms.size(); ++k) md += "---:|";
+  md += "---:|\n";
+  for (const MatchOutcome* oc : rows) {
+    const std::string label = run_label(oc->engine, oc->profile);
+    const int shown = oc->reached ? oc->found : oc->best;
+    const MatchVerdict v = verdict_of(m, *oc);
+    md += fmt::format("| {} | {} | ", label,
+                      v == MatchVerdict::met ? "yes" : markdown_cell("no: " + miss_text(m, *oc)));
+    if (shown < 0) {
+      md += "n/a | n/a |";
+      for (size_t k = 0; k < terms.size(); ++k) md += " n/a |";
+    } else {
+      const MatchTry& t = m.tries[shown];
+      md += fmt::format("{}{} | {} |", oc->reached ? "" : "finest: ", markdown_cell(configuration_text(t)),
+                        oc->reached ? cost_text(oc->cost_ns) : "n/a");
+      for (const auto& key : terms) md += fmt::format(" {} |", figure_text(t.figures.value(key, nlohmann::json())));
+    }
+    md += fmt::format(" {} |\n", oc->tries);
+  }
+  md += "\nCost: the engine's own step time per ball per scene step (a step of dt/8 costs 8 of its steps), the "
+        "median of the found configuration's runs; figures as the harness measured them from the states at the "
+        "scene's step times. \"n/a\": not measured.\n\n";
+  const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
+  for (const MatchOutcome& oc : m.outcomes) {
+    if (oc.role != role_name(EngineRole::ours)) continue;
+    const std::string label = run_label(oc.engine, oc.profile);
+    if (!oc.reached) continue;
+    if (ext)
+      md += fmt::format("- **{}** costs {} ns: **{} cheaper** than the cheapest external engine that meets the spec "
+                        "({}, {} ns at {}).\n",
+                        label, cost_text(oc.cost_ns), ratio_text(ext->cost_ns / oc.cost_ns),
+                        run_label(ext->engine, ext->profile), cost_text(ext->cost_ns),
+                        configuration_text(m.tries[ext->found]));
+    else
+      md += fmt::format("- **{}** costs {} ns; no external engine met the spec.\n", label, cost_text(oc.cost_ns));
+  }
+  for (const Figure& f : figures)
+    if (f.kind == "front" && f.scene == m.scene)
+      md += fmt::format("\n![work-precision front of {}]({})\n\n*{}*\n", m.scene, f.file, f.caption);
+  md += "\n<details><summary>Reproduce each row with <code>ballbench run</code></summary>\n\n";
+  for (const MatchOutcome* oc : rows)
+    if (!oc->command.empty()) md += fmt::format("- {}: `{}`\n", run_label(oc->engine, oc->profile), oc->command);
+  md += fmt::format("\nEvery try: `results/match-{}.csv`.\n\n</details>\n\n", m.scene);
+}
+
+}  // namespace
+
+MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
+  if (oc.reached) return MatchVerdict::met;
+  bool any_ok = false, all_unsupported = true;
+  for (const MatchTry& t : m.tries)
+    if (t.engine == oc.engine && t.profile == oc.profile) {
+      any_ok = any_ok || t.status == RunStatus::ok;
+      all_unsupported = all_unsupported && t.status == RunStatus::unsupported;
+    }
+  if (oc.tries > 0 && all_unsupported) return MatchVerdict::unsupported;
+  return any_ok ? MatchVerdict::not_reached : MatchVerdict::failed;
+}
+
+std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
+  const MatchVerdict v = verdict_of(m, oc);
+  if (oc.best < 0) return "no configuration ran";
+  const MatchTry& b = m.tries[oc.best];
+  const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
+  const std::string stop = oc.stopped.find("budget") != std::string::npos ? fmt::format(" ({})", oc.stopped) : "";
+  switch (v) {
+    case MatchVerdict::met: return "";
+    case MatchVerdict::unsupported: return "unsupported";
+    case MatchVerdict::failed:
+      return fmt::format("{} at every step down to {}{}", run_status_text(b.status),
+                         finest == "dt/1" ? "dt" : finest, stop);
+    case MatchVerdict::not_reached:
+      return fmt::format("{} at {}{}", worst_term_text(b, m.spec), step_text(b.halvings), stop);
+  }
+  return "";
+}
+
+std::string ratio_text(double r) {
+  if (!(r > 0) || !std::isfinite(r)) return "n/a";
+  if (r >= 10) return fmt::format("{:.0f}x", r);
+  if (r >= 0.1) return fmt::format("{:.2g}x", r);
+  return fmt::format("1/{:.0f}x", 1 / r);
+}
+
+std::string accuracy_heading(const std::string& scene) { return fmt::format("Equal accuracy: `{}`", scene); }
+
+std::string accuracy_anchor(const std::string& scene) {
+  std::string out;
+  for (unsigned char c : accuracy_heading(scene)) {
+    if (std::isalnum(c) || c == '-' || c == '_') out += char(std::tolower(c));
+    else if (c == ' ') out += '-';
+  }
+  return out;
+}
+
+std::string accuracy_section(const ReportInputs& in, const std::vector<Figure>& figures) {
+  std::string md;
+  for (const MatchResult& m : in.matches) section_for(md, m, figures);
+  return md;
+}
+
+}  // namespace ballbench

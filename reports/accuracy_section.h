@@ -1,0 +1,37 @@
+#pragma once
+// The report's equal-accuracy section (from results/match-SCENE.json, `ballbench match`): per
+// scene, each engine and profile's cheapest configuration that meets the scene's spec, our
+// solver's ratio to the cheapest external engine, and the work-precision front of every try.
+#include <string>
+#include <vector>
+
+#include "match_result.h"
+#include "report_writer.h"
+
+namespace ballbench {
+
+// What became of one engine and profile's search, as a reader needs it.
+enum class MatchVerdict {
+  met,          // a configuration met the spec
+  not_reached,  // it ran, but no configuration tried met the spec
+  unsupported,  // the engine refused the scene at every configuration
+  failed,       // no configuration ran to its end (crashed, timed out, diverged at every step size)
+};
+MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc);
+
+// One phrase for an outcome that did not meet the spec: its nearest miss with one figure and the
+// finest step tried ("overlap 0.034 at dt/64"), or why it did not run ("unsupported", "diverged
+// at every step size down to dt/64").
+std::string miss_text(const MatchResult& m, const MatchOutcome& oc);
+
+// "48x", "2.1x", "1/330x": how many times the first costs the second, readable below 1.
+std::string ratio_text(double ratio);
+
+// The heading of a scene's equal-accuracy section and its anchor (GitHub's rule: lower case, spaces
+// to '-', punctuation dropped), for links from the summary.
+std::string accuracy_heading(const std::string& scene);
+std::string accuracy_anchor(const std::string& scene);
+
+std::string accuracy_section(const ReportInputs& in, const std::vector<Figure>& figures);
+
+}  // namespace ballbench

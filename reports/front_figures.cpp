@@ -1,0 +1,178 @@
+#include "front_figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "gnuplot.h"
+#include "palette.h"
+#include "result.h"
+
+namespace ballbench {
+namespace {
+
+// Where a front measures error: the spec's principal term (accuracy_spec.h), or the worst term over
+// its bound where the spec bounds only counts and the horizon.
+struct ErrorAxis {
+  std::optional<SpecTerm> term;
+  double bound = 1;  // the spec's line on the axis
+  std::string label;
+};
+
+ErrorAxis error_axis(const AccuracySpec& spec) {
+  ErrorAxis a;
+  a.term = principal_term(spec);
+  if (a.term) {
+    const SpecTermDef& d = spec_term(*a.term);
+    a.bound = *spec[*a.term];
+    a.label = fmt::format("{}{}{}{} (at most {:g} meets the spec)", d.key, *d.unit ? " (" : "", d.unit, *d.unit ? ")" : "",
+                          a.bound);
+  } else {
+    a.label = "error / spec: the worst term over its bound (at most 1 meets the spec)";
+  }
+  return a;
+}
+
+// A figure of 0 cannot sit on a log axis: it is drawn at a thousandth of the spec's bound.
+double on_log_axis(double x, const ErrorAxis& axis) { return std::max(x, axis.bound * 1e-3); }
+
+struct Series {
+  std::string label, data;
+  RunStyle style;
+};
+
+// One data file per engine and profile: block 0 the profile as it is from dt down (the line),
+// block 1 the tries that met the spec, block 2 those that did not. None when no try ran ok.
+std::optional<Series> write_series(const MatchResult& m, const MatchOutcome& oc, const ErrorAxis& axis,
+                                   const std::string& base, bool normalised) {
+  std::vector<const MatchTry*> mine;
+  for (const MatchTry& t : m.tries)
+    if (t.engine == oc.engine && t.profile == oc.profile && front_error(t, m.spec)) mine.push_back(&t);
+  if (mine.empty()) return std::nullopt;
+  Series s{run_label(oc.engine, oc.profile), fmt::format("{}-{}.dat", base, slug(run_label(oc.engine, oc.profile))),
+           run_style(oc.engine, oc.profile)};
+  std::ofstream f(s.data);
+  // Normalised: the worst term over its bound, as `miss` (1 is the spec on every panel).
+  const auto x_of = [&](const MatchTry& t) {
+    return normalised ? std::max(miss(t, m.spec), 1e-3) : on_log_axis(*front_error(t, m.spec), axis);
+  };
+  std::vector<const MatchTry*> as_is;
+  for (const MatchTry* t : mine)
+    if (t->knob.empty()) as_is.push_back(t);
+  std::sort(as_is.begin(), as_is.end(), [](auto* a, auto* b) { return a->halvings < b->halvings; });
+  for (const MatchTry* t : as_is) f << x_of(*t) << ' ' << t->cost_ns << '\n';
+  for (bool met : {true, false}) {
+    f << "\n\n";
+    int n = 0;
+    for (const MatchTry* t : mine)
+      if (t->met == met) f << x_of(*t) << ' ' << t->cost_ns << '\n', ++n;
+    if (n == 0) f << "NaN NaN\n";  // an empty block would end the file early for gnuplot
+  }
+  return s;
+}
+
+std::string plot_series(const std::vector<Series>& series, bool titles) {
+  std::string plot;
+  for (const Series& s : series) {
+    const std::string c = fmt::format("lc rgb '{}'", s.style.colour);
+    plot += fmt::format("{}'{}' index 0 with lines lw 2 dt {} {} {}, '{}' index 1 with points pt 7 ps 1.2 {} notitle, "
+                        "'{}' index 2 with points pt 6 ps 1.2 {} notitle",
+                        plot.empty() ? "" : ", ", s.data, s.style.dash, c,
+                        titles ? fmt::format("title '{}'", s.label) : "notitle", s.data, c, s.data, c);
+  }
+  return plot;
+}
+
+std::string not_drawn(const MatchResult& m, const ErrorAxis& axis) {
+  std::vector<std::string> names;
+  for (const MatchOutcome& oc : m.outcomes) {
+    bool any = false;
+    for (const MatchTry& t : m.tries)
+      any = any || (t.engine == oc.engine && t.profile == oc.profile && front_error(t, m.spec));
+    if (!any) names.push_back(run_label(oc.engine, oc.profile));
+  }
+  return names.empty() ? "" : fmt::format(" Not drawn (no run ended ok): {}.", fmt::join(names, ", "));
+}
+
+Figure scene_front(const MatchResult& m) {
+  const ErrorAxis axis = error_axis(m.spec);
+  const std::string base = slug(m.scene) + "-front";
+  std::vector<Series> series;
+  for (const MatchOutcome& oc : m.outcomes)
+    if (auto s = write_series(m, oc, axis, base, false)) series.push_back(std::move(*s));
+  std::ofstream gp(base + ".gp");
+  gp << "set terminal pngcairo size 900,520 font 'sans,10'\nset output '" << base << ".png'\n"
+     << "set title 'Equal accuracy on " << m.scene << ": cost against error, every configuration tried'\n"
+     << "set xlabel '" << axis.label << "'\nset ylabel 'cost (ns per ball per scene step)'\n"
+     << "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nset key outside right top\n"
+     << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n", axis.bound)
+     << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, true)) << '\n';
+  gp.close();
+  run_gnuplot(base + ".gp");
+  return {"front", m.scene, "figures/" + base + ".png",
+          fmt::format("Cost against {} on `{}`: each engine and profile's tries, the profile as it is from dt down "
+                      "(the line) and each knob on top of it; filled: met the spec ({}), open: did not; the dashed line "
+                      "is the spec's bound.{}{}",
+                      axis.term ? spec_term(*axis.term).key : "error over the spec", m.scene, m.spec.text(),
+                      axis.term ? " A figure of 0 is drawn at a thousandth of the bound." : "", not_drawn(m, axis))};
+}
+
+// Every scene's front in one figure, the error over the spec's bound so that 1 means the spec on
+// each panel; the legend in a panel of its own below them.
+Figure all_fronts(const std::vector<MatchResult>& matches) {
+  const int columns = matches.size() > 1 ? 2 : 1, rows = int(matches.size() + columns - 1) / columns;
+  const double panel_h = 340, legend_h = 150, height = rows * panel_h + legend_h;
+  std::ofstream gp("fronts.gp");
+  gp << fmt::format("set terminal pngcairo size {},{} font 'sans,10'\nset output 'fronts.png'\nset multiplot\n",
+                    columns * 480, int(height))
+     << "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nunset key\n";
+  std::vector<Series> legend;
+  for (size_t k = 0; k < matches.size(); ++k) {
+    const MatchResult& m = matches[k];
+    const ErrorAxis axis = error_axis(m.spec);
+    std::vector<Series> series;
+    for (const MatchOutcome& oc : m.outcomes)
+      if (auto s = write_series(m, oc, axis, slug(m.scene) + "-fronts", true)) {
+        if (std::none_of(legend.begin(), legend.end(), [&](const Series& l) { return l.label == s->label; }))
+          legend.push_back(*s);
+        series.push_back(std::move(*s));
+      }
+    const int row = int(k) / columns, col = int(k) % columns;
+    gp << fmt::format("set origin {},{}\nset size {},{}\n", double(col) / columns,
+                      (height - (row + 1) * panel_h) / height, 1.0 / columns, panel_h / height)
+       << fmt::format("set title '{} ({})'\n", m.scene, m.scene_class)
+       << "set xlabel 'error / spec (the worst term)'\nset ylabel 'ns per ball per scene step'\n"
+       << "unset arrow\nset arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n"
+       << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, false)) << '\n';
+  }
+  // The legend: every engine and profile once, drawn as its line.
+  gp << fmt::format("set origin 0,0\nset size 1,{}\n", legend_h / height)
+     << "unset arrow\nunset logscale\nunset title\nunset xlabel\nunset ylabel\nunset border\nunset tics\nunset grid\n"
+     << "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal maxrows 4 width 2\nplot ";
+  for (size_t k = 0; k < legend.size(); ++k)
+    gp << (k ? ", " : "") << fmt::format("NaN with linespoints lw 2 pt 7 dt {} lc rgb '{}' title '{}'",
+                                         legend[k].style.dash, legend[k].style.colour, legend[k].label);
+  if (legend.empty()) gp << "NaN notitle";
+  gp << "\nunset multiplot\n";
+  gp.close();
+  run_gnuplot("fronts.gp");
+  return {"fronts", "", "figures/fronts.png",
+          "Every scene's work-precision front: cost against the spec's worst term over its bound (the dashed "
+          "line at 1: at most 1 meets the spec; 0 drawn at 0.001), each engine and profile's tries; filled: met the "
+          "spec, open: did not."};
+}
+
+}  // namespace
+
+std::vector<Figure> front_figures(const ReportInputs& in) {
+  std::vector<Figure> out;
+  for (const MatchResult& m : in.matches) out.push_back(scene_front(m));
+  if (!in.matches.empty()) out.push_back(all_fronts(in.matches));
+  return out;
+}
+
+}  // namespace ballbench

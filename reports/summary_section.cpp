@@ -1,0 +1,85 @@
+#include "summary_section.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "accuracy_section.h"
+#include "result.h"
+
+namespace ballbench {
+namespace {
+
+// The engine and profile with the smallest error on the front's axis at the scene's own step, the
+// profile as it is: who is most accurate before anyone refines. Where the spec has no principal
+// term (only counts), those that meet it at the scene's step.
+std::string most_accurate_at_dt(const MatchResult& m) {
+  std::vector<std::pair<double, std::string>> at_dt;
+  for (const MatchTry& t : m.tries)
+    if (t.halvings == 0 && t.knob.empty())
+      if (const auto e = front_error(t, m.spec)) at_dt.emplace_back(*e, run_label(t.engine, t.profile));
+  std::stable_sort(at_dt.begin(), at_dt.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  const auto term = principal_term(m.spec);
+  if (!term) {
+    std::vector<std::string> met;
+    for (const MatchTry& t : m.tries)
+      if (t.halvings == 0 && t.knob.empty() && t.met) met.push_back(run_label(t.engine, t.profile));
+    return met.empty() ? "none meets it at dt" : fmt::format("meet it at dt: {}", fmt::join(met, ", "));
+  }
+  if (at_dt.empty()) return "n/a";
+  // Figures a millionth of the bound apart are round-off: no ranking among them.
+  const double level = std::max(at_dt.front().first, *m.spec[*term] * 1e-6);
+  std::vector<std::string> equal;
+  for (const auto& [e, label] : at_dt)
+    if (e <= level) equal.push_back(label);
+  if (equal.size() == 1) return fmt::format("{} ({} {:.2g})", equal.front(), spec_term(*term).key, at_dt.front().first);
+  const size_t shown = std::min<size_t>(equal.size(), 4);
+  return fmt::format("{} equal, {} below {:.0e}: {}{}", equal.size(), spec_term(*term).key, level * 1.0001,
+                     fmt::join(equal.begin(), equal.begin() + shown, ", "),
+                     equal.size() > shown ? fmt::format(" and {} more", equal.size() - shown) : "");
+}
+
+std::string found_text(const MatchResult& m, const MatchOutcome* oc) {
+  if (!oc) return "none";
+  return fmt::format("{}, {}: {} ns", run_label(oc->engine, oc->profile), configuration_text(m.tries[oc->found]),
+                     cost_text(oc->cost_ns));
+}
+
+}  // namespace
+
+std::string summary_section(const ReportInputs& in, const std::vector<Figure>& figures) {
+  if (in.matches.empty()) return "";
+  std::string md = "## Summary\n\n";
+  md += "Each engine is asked for the same accuracy: for every scene a stated spec (overlap, tunnelling, rest, energy, "
+        "closed forms; [the terms](../scenarios/README.md#accuracy)), and each engine and profile's cheapest configuration that meets it "
+        "(its step size dt/2^k and its own knobs, found by `ballbench match`). Cost is the engine's own step time per "
+        "ball per scene step, the median of three runs on a shared machine: read ratios to about 10%.\n\n";
+  md += "| scene (class) | spec | cheapest external engine that meets it | ours | ours against it | most accurate at "
+        "the scene's dt |\n|---|---|---|---|---|---|\n";
+  std::vector<std::string> misses;
+  for (const MatchResult& m : in.matches) {
+    const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
+    const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
+    std::string ratio = "n/a";
+    if (ours && ext) ratio = fmt::format("**{} cheaper**", ratio_text(ext->cost_ns / ours->cost_ns));
+    else if (ours) ratio = "only ours met it";
+    else if (ext) ratio = "ours did not meet it";
+    md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
+                      m.spec.text(), found_text(m, ext), found_text(m, ours), ratio, most_accurate_at_dt(m));
+    std::vector<std::string> failed;
+    for (const MatchOutcome& oc : m.outcomes)
+      if (!oc.reached && verdict_of(m, oc) != MatchVerdict::unsupported)
+        failed.push_back(fmt::format("{} ({})", run_label(oc.engine, oc.profile), miss_text(m, oc)));
+    if (!failed.empty())
+      misses.push_back(fmt::format("- [`{}`](#{}): {}.", m.scene, accuracy_anchor(m.scene), fmt::join(failed, "; ")));
+  }
+  if (!misses.empty()) md += fmt::format("\nDid not meet the spec at any step size tried:\n\n{}\n", fmt::join(misses, "\n"));
+  for (const Figure& f : figures)
+    if (f.kind == "fronts") md += fmt::format("\n![every scene's work-precision front]({})\n\n*{}*\n", f.file, f.caption);
+  md += "\n";
+  return md;
+}
+
+}  // namespace ballbench

@@ -1,0 +1,87 @@
+// The report's summary and equal-accuracy sections, from match results made by hand: the ratio of
+// ours to the cheapest external engine that met the spec, what did not meet it with its nearest
+// miss, links to the sections, and ratios that stay readable below 1.
+#include <gtest/gtest.h>
+
+#include "accuracy_section.h"
+#include "summary_section.h"
+
+namespace ballbench {
+namespace {
+
+MatchTry try_of(const std::string& engine, const std::string& profile, int halvings, bool met, double overlap,
+                double cost, RunStatus status = RunStatus::ok) {
+  MatchTry t;
+  t.engine = engine, t.profile = profile, t.halvings = halvings, t.dt = 0.01 / (1 << halvings);
+  t.status = status, t.met = met, t.cost_ns = cost;
+  t.figures = {{"overlap", status == RunStatus::ok ? nlohmann::json(overlap) : nlohmann::json()},
+               {"tunnelling", status == RunStatus::ok ? nlohmann::json(0) : nlohmann::json()}};
+  return t;
+}
+
+MatchOutcome outcome(const std::string& engine, const std::string& profile, const std::string& role, int found,
+                     int best, int tries, double cost) {
+  MatchOutcome o;
+  o.engine = engine, o.profile = profile, o.role = role, o.reached = found >= 0, o.found = found, o.best = best;
+  o.tries = tries, o.cost_ns = cost, o.finest_dt = 0.01 / 64;
+  return o;
+}
+
+// A pile: ours meets the spec at dt for 900 ns; chipmunk at dt/64 for 45 000 ns; box2d never
+// (0.034 at dt/64); the thesis port diverges at every step.
+MatchResult pile() {
+  MatchResult m;
+  m.scene = "pile", m.scene_class = "pile", m.n = 500, m.dt = 0.01;
+  m.spec[SpecTerm::overlap] = 0.01;
+  m.spec[SpecTerm::tunnelling] = 0;
+  m.tries = {try_of("home", "default", 0, true, 0.007, 900),
+             try_of("chipmunk", "stock", 5, false, 0.02, 20000),
+             try_of("chipmunk", "stock", 6, true, 0.008, 45000),
+             try_of("box2d", "stock", 6, false, 0.034, 80000),
+             try_of("home-seed", "default", 6, false, 0, 100, RunStatus::diverged)};
+  m.outcomes = {outcome("home", "default", "ours", 0, -1, 1, 900), outcome("chipmunk", "stock", "external", 2, 1, 7, 45000),
+                outcome("box2d", "stock", "external", -1, 3, 7, 0), outcome("home-seed", "default", "thesis", -1, 4, 7, 0)};
+  return m;
+}
+
+TEST(AccuracySection, TheSummaryAnswersWithTheRatioAndTheMisses) {
+  ReportInputs in;
+  in.matches = {pile()};
+  const std::string md = summary_section(in, {});
+  EXPECT_NE(md.find("| [`pile`](#equal-accuracy-pile) (pile) | overlap <= 0.01, tunnelling <= 0 | chipmunk/stock, "
+                    "dt/64: 45000 ns | home, dt: 900 ns | **50x cheaper** |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("box2d/stock (overlap 0.034 at dt/64)"), std::string::npos) << md;
+  EXPECT_NE(md.find("home-seed (diverged at every step down to dt/64)"), std::string::npos) << md;
+  EXPECT_EQ(md.find("home (over"), std::string::npos) << md;  // what met the spec is not a miss
+}
+
+TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
+  ReportInputs in;
+  in.matches = {pile()};
+  const std::string md = accuracy_section(in, {});
+  EXPECT_NE(md.find("## Equal accuracy: `pile`"), std::string::npos);
+  const auto home = md.find("| home | yes | dt | 900 |"), chip = md.find("| chipmunk/stock | yes | dt/64 | 45000 |"),
+             box2d = md.find("| box2d/stock | no: overlap 0.034 at dt/64 | finest: dt/64 | n/a |");
+  ASSERT_NE(home, std::string::npos) << md;
+  ASSERT_NE(chip, std::string::npos) << md;
+  ASSERT_NE(box2d, std::string::npos) << md;
+  EXPECT_LT(home, chip);
+  EXPECT_LT(chip, box2d);
+  EXPECT_NE(md.find("**50x cheaper** than the cheapest external engine that meets the spec (chipmunk/stock"),
+            std::string::npos)
+      << md;
+}
+
+TEST(AccuracySection, RatiosReadBelowOne) {
+  EXPECT_EQ(ratio_text(48.1), "48x");
+  EXPECT_EQ(ratio_text(2.14), "2.1x");
+  EXPECT_EQ(ratio_text(0.5), "0.5x");
+  EXPECT_EQ(ratio_text(1.0 / 330), "1/330x");
+  EXPECT_EQ(ratio_text(0), "n/a");
+  EXPECT_EQ(accuracy_anchor("seed-box"), "equal-accuracy-seed-box");
+}
+
+}  // namespace
+}  // namespace ballbench
