@@ -435,11 +435,26 @@ TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
   EXPECT_LT(*r.engine_process_s, 1.0);
 }
 
-// A short block says how many bytes it lacked, whether the engine then closes its output or waits.
+// A short block says how many bytes it lacked, whether the engine then closes its output or waits:
+// an engine that stays alive is named when its block pauses (5 s), not at the reply limit (60 s).
 TEST(ProcessEngine, AShortStateBlockSaysHowManyBytesAreMissing) {
-  const Result r = run_engine(box(), misbehaving("short-block-alive", 3.0), steps(10));
+  const Result r = run_engine(box(), misbehaving("short-block-alive", 60.0), steps(10));
   EXPECT_EQ(r.status, RunStatus::failed);
-  EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more within the time limit")) << r.error;
+  EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more for 5 s")) << r.error;
+}
+
+// A command's --timeout bounds the engines' handshakes, made before any run, as it bounds the runs:
+// an engine silent at hello is unavailable for "no reply within the time limit", not waited on for
+// its own reply limit (600 s here, the engine sleeping 100 s).
+TEST(ProcessEngine, TheHandshakeIsBoundedByTheCommandsTimeout) {
+  const std::string dir = (std::filesystem::temp_directory_path() / ("bb_slow_hello." + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/slow.toml") << "[[engine]]\nname = \"slow\"\ncommand = [\"sleep\", \"100\"]\ntimeout_s = 600\n";
+  const testing::CliOutcome o = testing::run_cli("--engines " + dir + "/slow.toml run --quiet --no-reference --scene seed-box "
+                                                 "--engine slow --steps 2 --timeout 2");
+  std::filesystem::remove_all(dir);
+  EXPECT_NE(o.out.find("sent no reply within the time limit"), std::string::npos) << o.out << o.err;
+  EXPECT_NE(row(o.out, "slow").find("unsupported"), std::string::npos) << o.out;
 }
 
 // The handshake: names without control characters and not `all`, each profile once, the versions
