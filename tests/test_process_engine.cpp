@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -570,6 +571,30 @@ TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
     ::usleep(20'000);
   }
   EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
+}
+
+// The same through `ballbench run`, whose runs are in child processes that end without destructors:
+// the helper of the run's engine, and of the engine the handshake started, end with the command.
+TEST(ProcessEngine, AHelperOfAnIsolatedRunDoesNotOutliveTheCommand) {
+  const std::string pid_file =
+      (std::filesystem::temp_directory_path() / ("bb_helper_cli." + std::to_string(::getpid()))).string();
+  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 --engine "
+                                                 "'process:python3 " + kMisbehaving + " helper " + pid_file + "'");
+  EXPECT_EQ(o.status, 0) << o.err;
+  std::ifstream in(pid_file);
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  std::filesystem::remove(pid_file);
+  bool alive = false;
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
+    if (!alive) break;
+    ::usleep(20'000);
+  }
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
+  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
 
 TEST(EnginesFile, RefusesAFolderAndTheNameAll) {

@@ -10,8 +10,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -40,6 +42,19 @@ void close_fd(int& fd) {
 }
 
 std::string join_argv(const std::vector<std::string>& argv) { return fmt::format("{}", fmt::join(argv, " ")); }
+
+// The process groups of the children started and not yet ended, with the process that started
+// each (a fork inherits the list, not the children). A run's child process ends by quick_exit
+// (isolated_run.cpp), without destructors: its engines' groups, helpers included, end with it.
+std::vector<std::pair<pid_t, pid_t>>& live_groups() {
+  static std::vector<std::pair<pid_t, pid_t>> groups;  // (owner, group)
+  return groups;
+}
+
+void kill_live_groups() {
+  for (const auto& [owner, group] : live_groups())
+    if (owner == ::getpid()) ::kill(-group, SIGKILL);
+}
 
 }  // namespace
 
@@ -103,6 +118,9 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
                                         cwd.empty() ? "" : fmt::format(" in {}", cwd), std::strerror(e)));
   }
   ::fcntl(err_, F_SETFL, O_NONBLOCK);
+  static const bool at_exit = std::at_quick_exit(kill_live_groups) == 0;
+  (void)at_exit;
+  live_groups().emplace_back(owner_, pid_);
 }
 
 ChildProcess::~ChildProcess() {
@@ -123,6 +141,7 @@ ChildProcess::~ChildProcess() {
   }
   // What the engine started in its process group (a helper that kept its output open) ends with it.
   if (pid_ > 0) ::kill(-pid_, SIGKILL);
+  std::erase(live_groups(), std::pair{owner_, pid_});
   close_fd(out_), close_fd(err_);
 }
 
