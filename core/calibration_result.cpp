@@ -50,7 +50,13 @@ void write_calibration_file(const std::string& path, const CalibrationResult& c)
 }
 
 CalibrationResult read_calibration_file(const std::string& path) {
-  return read_json_file(path, "a restitution calibration", [](const nlohmann::json& j) { return calibration_from_json(j); });
+  return read_json_file(path, "a restitution calibration", [](const nlohmann::json& j) { return calibration_from_json(j); },
+                        [](const nlohmann::json&) {
+                          CalibrationResult c;  // the shape of a calibration file: one point
+                          c.requested = c.speeds = {0};
+                          c.points.emplace_back();
+                          return JsonShape{to_json(c), ""};
+                        });
 }
 
 }  // namespace ballbench

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -52,6 +53,14 @@ struct FileKey {
   }
 };
 
+// The absolute path with every symbolic link of its existing part followed, `..` and `.` resolved.
+std::string resolved_path(const std::string& path) {
+  std::error_code ec;
+  const std::filesystem::path abs = std::filesystem::absolute(path, ec);
+  const std::filesystem::path resolved = std::filesystem::weakly_canonical(abs, ec);
+  return (ec ? abs : resolved).lexically_normal().string();
+}
+
 FileKey file_key(const std::string& path) {
   FileKey k;
   struct stat st {};
@@ -60,10 +69,7 @@ FileKey file_key(const std::string& path) {
     k.special = !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
     return k;
   }
-  std::error_code ec;
-  const std::filesystem::path abs = std::filesystem::absolute(path, ec);
-  const std::filesystem::path resolved = std::filesystem::weakly_canonical(abs, ec);
-  k.resolved = (ec ? abs : resolved).lexically_normal().string();
+  k.resolved = resolved_path(path);
   return k;
 }
 
@@ -106,8 +112,17 @@ void check_readable_file(const std::string& path, const std::string& what, std::
 void check_path_clashes(const std::vector<PathUse>& uses) {
   std::vector<FileKey> keys;
   for (const PathUse& u : uses) keys.push_back(file_key(u.path));
+  for (const PathUse& folder : uses) {
+    if (!folder.output || !folder.folder) continue;
+    std::string root = resolved_path(folder.path);
+    if (!root.ends_with('/')) root += '/';
+    for (const PathUse& u : uses)
+      if (!u.output && resolved_path(u.path).starts_with(root))
+        throw InputError(fmt::format("{} {}: inside {} {}, which the command writes", u.flag, u.path, folder.flag, folder.path));
+  }
   for (size_t i = 0; i < uses.size(); ++i)
     for (size_t j = 0; j < i; ++j) {
+      if (uses[i].folder || uses[j].folder) continue;
       if (!uses[i].output && !uses[j].output) continue;  // reading one file twice is harmless
       if (!(keys[i] == keys[j])) continue;
       if (keys[i].special && uses[i].output && uses[j].output) continue;  // /dev/null twice
@@ -208,6 +223,67 @@ nlohmann::json parse_json_file(const std::string& path, const std::string& what)
 
 std::string json_shape_error(const std::string& path, const std::string& what, const std::exception& e) {
   return fmt::format("{}: not {}: {}", path, what, e.what());
+}
+
+const char* json_kind_name(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::boolean: return "true or false";
+    case nlohmann::json::value_t::string: return "a string";
+    case nlohmann::json::value_t::array: return "an array";
+    case nlohmann::json::value_t::object: return "an object";
+    case nlohmann::json::value_t::binary: return "binary data";
+    default: return "a number";
+  }
+}
+
+namespace {
+
+bool same_kind(const nlohmann::json& shape, const nlohmann::json& got) {
+  if (shape.is_null()) return true;
+  if (shape.is_number()) return got.is_number() || got.is_null();
+  return std::string_view(json_kind_name(shape)) == json_kind_name(got);
+}
+
+// Depth first, in `shape`'s order; `at` is the path so far.
+std::string mismatch(const nlohmann::json& shape, const nlohmann::json& got, const std::string& at,
+                     const std::string& missing) {
+  const std::string here = at.empty() ? "the file" : at;
+  if (!same_kind(shape, got)) return fmt::format("{}: expected {}, got {}", here, json_kind_name(shape), json_kind_name(got));
+  if (shape.is_array() && !shape.empty())
+    for (size_t k = 0; k < got.size(); ++k)
+      if (std::string m = mismatch(shape.front(), got[k], fmt::format("{}[{}]", at, k), missing); !m.empty()) return m;
+  if (shape.is_object())
+    for (const auto& [key, value] : shape.items()) {
+      const std::string field = at.empty() ? key : at + "." + key;
+      const auto it = got.find(key);
+      if (it == got.end()) {
+        if (key == missing) return field + ": missing";
+        continue;
+      }
+      if (std::string m = mismatch(value, *it, field, missing); !m.empty()) return m;
+    }
+  return "";
+}
+
+}  // namespace
+
+std::string json_shape_mismatch(const JsonShape& shape, const nlohmann::json& got, const std::string& missing) {
+  return mismatch(shape.value, got, shape.root, missing);
+}
+
+std::string json_type_error(const std::string& path, const std::string& what, const nlohmann::json::exception& e,
+                            const nlohmann::json& j, const JsonShape* shape) {
+  if (shape) {
+    // The library names a missing key ("key 'engine' not found") but not where it is missing.
+    const std::string text = e.what();
+    const size_t open = text.find("key '"), close = text.find("' not found");
+    const std::string missing = open != std::string::npos && close != std::string::npos && close > open + 5
+                                    ? text.substr(open + 5, close - open - 5)
+                                    : "";
+    if (const std::string m = json_shape_mismatch(*shape, j, missing); !m.empty()) return fmt::format("{}: {}", path, m);
+  }
+  return json_shape_error(path, what, e);
 }
 
 }  // namespace ballbench

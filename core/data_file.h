@@ -8,6 +8,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,12 +44,14 @@ struct PathUse {
   std::string flag;  // "--json", "--scene", "RESULTS"
   std::string path;
   bool output = false;
+  bool folder = false;  // an output folder: every file in it, at any depth, may be written or removed
 };
 
 // Before anything runs: no output is the same file as an input or as another output, however
 // spelled (./a, sub/../a, a symbolic link, a hard link: compared by device and inode where the
-// file exists, by resolved path where it does not). Two outputs into the same device or FIFO
-// (/dev/null) are allowed. Throws InputError "--X PATH: same file as --Y PATH".
+// file exists, by resolved path where it does not), and no input lies in an output folder. Two
+// outputs into the same device or FIFO (/dev/null) are allowed. Throws InputError "--X PATH: same
+// file as --Y PATH" or "--Y PATH: inside --X FOLDER, which the command writes".
 void check_path_clashes(const std::vector<PathUse>& uses);
 
 // Files read by options of the whole command (`--engines`), noted as they are read so that each
@@ -74,18 +77,46 @@ void check_writable(const std::string& path, const std::string& what, bool creat
 nlohmann::json parse_json_file(const std::string& path, const std::string& what);
 std::string json_shape_error(const std::string& path, const std::string& what, const std::exception& e);
 
+// What a kind of file holds, for naming the field a file gets wrong: `value` is such a file with
+// every field ballbench may write present (an array's elements are all like its first), and
+// `root` names the whole ("runs" for a results file's list, "" for an object).
+struct JsonShape {
+  nlohmann::json value;
+  std::string root;
+};
+
+// "a number", "a string", "true or false", "an array", "an object" or "null": a value's type in a message.
+const char* json_kind_name(const nlohmann::json& j);
+
+// The first place, in `shape`'s order, where `got` holds another type than `shape` says, or lacks
+// the key `missing` that `shape` has: "runs[3].metrics.energy.drift: expected a number, got a
+// string", "runs[0].engine: missing"; "" if none. A number in `shape` takes null too (NaN is
+// written as null); null takes anything.
+std::string json_shape_mismatch(const JsonShape& shape, const nlohmann::json& got, const std::string& missing = "");
+
+// The one line for a JSON exception `e` met while converting file `path` (`what`, as
+// json_shape_error): the field `shape` finds wrong in `j` ("PATH: FIELD: expected a number, got a
+// string"), or, if it finds none, the library's message.
+std::string json_type_error(const std::string& path, const std::string& what, const nlohmann::json::exception& e,
+                            const nlohmann::json& j, const JsonShape* shape);
+
 // parse_json_file, then `convert` (JSON -> value); a field missing or of the wrong type (a JSON
 // exception, or an InputError of the converter's naming the field) is an InputError naming the
-// file too.
-template <class Convert>
-auto read_json_file(const std::string& path, const std::string& what, Convert convert) {
+// file too, and the field where `shape_of(j)` (a JsonShape) can tell it.
+template <class Convert, class ShapeOf = std::nullptr_t>
+auto read_json_file(const std::string& path, const std::string& what, Convert convert, ShapeOf shape_of = nullptr) {
   const nlohmann::json j = parse_json_file(path, what);
   try {
     return convert(j);
   } catch (const InputError& e) {  // a field the converter named: "points[3].dt: expected a number"
-    throw InputError(json_shape_error(path, what, e));
+    throw InputError(path + ": " + e.what());
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(json_shape_error(path, what, e));
+    if constexpr (std::is_same_v<ShapeOf, std::nullptr_t>) {
+      throw InputError(json_type_error(path, what, e, j, nullptr));
+    } else {
+      const JsonShape shape = shape_of(j);
+      throw InputError(json_type_error(path, what, e, j, &shape));
+    }
   } catch (const std::length_error& e) {  // a count no file of ours holds
     throw InputError(json_shape_error(path, what, e));
   } catch (const std::bad_alloc& e) {

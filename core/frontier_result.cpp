@@ -44,7 +44,12 @@ void write_frontier_file(const std::string& path, const FrontierResult& f) {
 }
 
 FrontierResult read_frontier_file(const std::string& path) {
-  return read_json_file(path, "a stability frontier", [](const nlohmann::json& j) { return frontier_from_json(j); });
+  return read_json_file(path, "a stability frontier", [](const nlohmann::json& j) { return frontier_from_json(j); },
+                        [](const nlohmann::json&) {
+                          FrontierResult f;  // the shape of a frontier file: one row
+                          f.rows.emplace_back().factor = 1;
+                          return JsonShape{to_json(f), ""};
+                        });
 }
 
 }  // namespace ballbench

@@ -11,6 +11,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <optional>
@@ -75,8 +76,9 @@ void send(int fd, const std::string& text) {
     message = "error an exception that is not a std::exception\n";
   }
   send(fd, message);
-  // _exit, not exit: no atexit handlers, static destructors or stdio flushes of the parent's state.
-  ::_exit(0);
+  // quick_exit, not exit: no atexit handlers, static destructors or stdio flushes of the parent's
+  // state; its at_quick_exit handlers end the engine processes this child started.
+  std::quick_exit(0);
 }
 
 // What the parent saw of the child.

@@ -122,7 +122,11 @@ Result result_from_json(const nlohmann::json& j) {
   r.dt = j.at("dt");
   r.steps = j.at("steps");
   r.steps_done = j.value("steps_done", r.steps);
-  r.status = run_status_from_text(j.value("status", "ok"));
+  try {
+    r.status = run_status_from_text(j.value("status", "ok"));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("status: {}", e.what()));
+  }
   r.error = j.value("error", "");
   r.diverged_step = j.at("diverged_step").is_null() ? -1 : j.at("diverged_step").get<long>();
   // Results files written before the field was named for what it holds call it "wall_s".
@@ -135,7 +139,11 @@ Result result_from_json(const nlohmann::json& j) {
   take_metrics(j, r);
   // Results files written before events were recorded have none: their counts stand alone.
   if (j.contains("events"))
-    for (const auto& e : j.at("events")) r.events.push_back(event_from_json(e));
+    for (const auto& e : j.at("events")) try {
+        r.events.push_back(event_from_json(e));
+      } catch (const InputError& err) {
+        throw InputError(fmt::format("events[{}].kind: {}", r.events.size(), err.what()));
+      }
   if (j.contains("metrics_config")) {
     const auto& c = j["metrics_config"];
     r.metrics_config.contact_tolerance = c.at("contact_tolerance");
@@ -184,12 +192,57 @@ void write_results_file(const std::string& path, const std::vector<Result>& resu
   write_file_atomically(path, json_layout(arr) + "\n", "the results file");
 }
 
+namespace {
+
+// A run with every field a results file may hold set, so that its JSON is the shape of any run's.
+nlohmann::json result_shape() {
+  Result r;
+  r.status = RunStatus::diverged;  // with its step
+  r.engine_process_s = 0;
+  r.events.emplace_back();
+  r.events.back().j = 1;  // a pair's
+  r.reference.available = true;
+  r.reference.horizon = 0;
+  r.reference.reference_failed_step = 0;
+  r.speed_ks = r.speed_ks_critical = r.jitter = r.angle_of_repose = 0;
+  r.rolling = {0, 0, 0};
+  r.skipped = {""};
+  auto& s = r.series;
+  s.t = s.energy = s.com_x = s.com_y = s.pos_err = s.frame_t = s.radius = {0};
+  s.tracks = s.frames = {{{0, 0}}};
+  s.final_pos = {{0, 0}};
+  s.box = std::array<double, 4>{};
+  // A metric of the exemplar that is NaN (a drift relative to no energy) is written null; any run's
+  // may be a number there.
+  nlohmann::json j = to_json(r);
+  const auto numbers = [](auto& self, nlohmann::json& v) -> void {
+    if (v.is_null()) v = 0;
+    if (v.is_structured())
+      for (auto& x : v) self(self, x);
+  };
+  numbers(numbers, j);
+  return j;
+}
+
+}  // namespace
+
 std::vector<Result> read_results_file(const std::string& path) {
-  return read_json_file(path, "a ballbench results file", [](const nlohmann::json& j) {
-    std::vector<Result> out;
-    for (const auto& item : j.is_object() ? nlohmann::json::array({j}) : j) out.push_back(result_from_json(item));
-    return out;
-  });
+  return read_json_file(
+      path, "a ballbench results file",
+      [](const nlohmann::json& j) {
+        std::vector<Result> out;
+        for (const auto& item : j.is_object() ? nlohmann::json::array({j}) : j) {
+          try {
+            out.push_back(result_from_json(item));
+          } catch (const InputError& e) {  // a value no run has (a status, an event's kind)
+            throw InputError(j.is_object() ? std::string(e.what()) : fmt::format("runs[{}].{}", out.size(), e.what()));
+          }
+        }
+        return out;
+      },
+      [](const nlohmann::json& j) {
+        return j.is_object() ? JsonShape{result_shape(), ""} : JsonShape{nlohmann::json::array({result_shape()}), "runs"};
+      });
 }
 
 }  // namespace ballbench

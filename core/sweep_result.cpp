@@ -86,14 +86,15 @@ namespace {
 template <class T>
 T field(const nlohmann::json& j, const char* key, const std::string& where) {
   const std::string name = where.empty() ? key : where + "." + key;
-  if (!j.is_object()) throw InputError(fmt::format("{}: expected an object, got {}", where.empty() ? "the file" : where, j.type_name()));
+  if (!j.is_object())
+    throw InputError(fmt::format("{}: expected an object, got {}", where.empty() ? "the file" : where, json_kind_name(j)));
   const auto it = j.find(key);
   if (it == j.end()) throw InputError(fmt::format("{}: missing", name));
   try {
     return it->get<T>();
   } catch (const nlohmann::json::exception&) {
     const char* want = std::is_same_v<T, std::string> ? "a string" : std::is_same_v<T, bool> ? "true or false" : "a number";
-    throw InputError(fmt::format("{}: expected {}, got {}", name, want, it->type_name()));
+    throw InputError(fmt::format("{}: expected {}, got {}", name, want, json_kind_name(*it)));
   }
 }
 
@@ -101,7 +102,7 @@ T field(const nlohmann::json& j, const char* key, const std::string& where) {
 const nlohmann::json& array_field(const nlohmann::json& j, const char* key, const std::string& where) {
   const std::string name = where.empty() ? key : where + "." + key;
   if (!j.is_object() || !j.contains(key)) throw InputError(fmt::format("{}: missing", name));
-  if (!j.at(key).is_array()) throw InputError(fmt::format("{}: expected an array, got {}", name, j.at(key).type_name()));
+  if (!j.at(key).is_array()) throw InputError(fmt::format("{}: expected an array, got {}", name, json_kind_name(j.at(key))));
   return j.at(key);
 }
 
@@ -203,7 +204,14 @@ void write_sweep_files(const SweepResult& s, const std::string& json_path, const
 }
 
 SweepResult read_sweep_file(const std::string& path) {
-  return read_json_file(path, "a sweep result", [](const nlohmann::json& j) { return sweep_from_json(j); });
+  // The shape of a sweep file: one point.
+  return read_json_file(path, "a sweep result", [](const nlohmann::json& j) { return sweep_from_json(j); },
+                        [](const nlohmann::json&) {
+                          SweepResult s;
+                          SweepPoint& p = s.points.emplace_back();  // its knob's value: any type
+                          p.ns_per_ball_step = p.engine_s = {0};
+                          return JsonShape{to_json(s), ""};
+                        });
 }
 
 }  // namespace ballbench

@@ -108,7 +108,22 @@ BenchResults bench_from_json(const nlohmann::json& j) {
 }  // namespace
 
 BenchResults read_bench_file(const std::string& path) {
-  return read_json_file(path, "Google Benchmark JSON", [](const nlohmann::json& j) { return bench_from_json(j); });
+  return read_json_file(path, "Google Benchmark JSON", [](const nlohmann::json& j) { return bench_from_json(j); },
+                        [](const nlohmann::json&) {
+                          // The fields of a benchmark row that bench_from_json reads by type.
+                          const nlohmann::json row = {{"name", ""},
+                                                      {"run_type", ""},
+                                                      {"error_occurred", false},
+                                                      {"error_message", ""},
+                                                      {"ns_per_ball_step", 0},
+                                                      {"steps_per_s", 0},
+                                                      {"peak_rss_bytes_per_ball", 0},
+                                                      {"engine_bytes_per_ball", 0},
+                                                      {"settle_steps", 0},
+                                                      {"start_rms_speed", 0},
+                                                      {"engine_process_ns_per_ball_step", 0}};
+                          return JsonShape{{{"context", nlohmann::json::object()}, {"benchmarks", {row}}}, ""};
+                        });
 }
 
 }  // namespace ballbench

@@ -674,11 +674,11 @@ TEST(Cli, InputsAreBoundedAndRegularFilesOnly) {
   // Wrong types: the file named, exit 2, never an internal error.
   std::ofstream(s / "typed.json") << R"({"scene": 5, "points": "many"})";
   expect_one_line_error(cli("merge " + s / "typed.json" + " --out " + s / "m.json"),
-                        s / "typed.json" + ": not a sweep result: scene: expected a string, got number");
+                        s / "typed.json" + ": scene: expected a string, got a number");
   std::ofstream(s / "point.json") << R"({"scene": "seed-box", "n": 20, "horizon": 0.2, "reference": "exact", "repeats": 1,
                                         "points": [{"engine": "home", "profile": "default", "knob": "dt", "value": 0.01, "dt": "fast"}]})";
   expect_one_line_error(cli("merge " + s / "point.json" + " --out " + s / "m.json"),
-                        s / "point.json" + ": not a sweep result: points[0].dt: expected a number, got string");
+                        s / "point.json" + ": points[0].dt: expected a number, got a string");
   std::filesystem::create_directories(s / "report/results");
   std::ofstream(s / "report/results/run.json") << R"({"command": 5, "scenes": "seed-box", "suite": []})";
   expect_one_line_error(cli("report --out " + s / "report" + " --render-only"), "run.json");
@@ -777,3 +777,120 @@ TEST(Cli, RegressRefusesANegativeToleranceAndUpdatesACorruptBaseline) {
 }
 
 }  // namespace
+
+// A results file read back (`view`, `report --render-only`, `merge`) with a value of another type
+// than ballbench writes is one line naming the file and the field's path, exit 2, never an internal
+// error: whatever the field, at any depth.
+TEST(Cli, AResultsFileOfWrongTypesNamesTheField) {
+  const Scratch s("bb_wrong_types");
+  ASSERT_EQ(cli("run --quiet --no-reference --scene seed-box --engine home,home-seed --steps 4 --frames 2 --json " +
+                s / "r.json")
+                .status,
+            0);
+  const nlohmann::json good = nlohmann::json::parse(slurp(s / "r.json"));
+  const auto edited = [&](const std::string& name, const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json j = good;
+    edit(j);
+    std::ofstream(s / name) << j.dump();
+    return s / name;
+  };
+  struct Case {
+    std::string name;
+    std::function<void(nlohmann::json&)> edit;
+    std::string says;
+  };
+  const std::vector<Case> cases = {
+      {"drift.json", [](nlohmann::json& j) { j[1]["energy"]["max_rel_drift"] = "x"; },
+       "runs[1].energy.max_rel_drift: expected a number, got a string"},
+      {"tunnel.json", [](nlohmann::json& j) { j[0]["tunnelling"]["wall"] = nlohmann::json::array(); },
+       "runs[0].tunnelling.wall: expected a number, got an array"},
+      {"n.json", [](nlohmann::json& j) { j[0]["n"] = "twenty"; }, "runs[0].n: expected a number, got a string"},
+      {"engine.json", [](nlohmann::json& j) { j[1]["engine"] = 5; }, "runs[1].engine: expected a string, got a number"},
+      {"missing.json", [](nlohmann::json& j) { j[1].erase("engine"); }, "runs[1].engine: missing"},
+      {"status.json", [](nlohmann::json& j) { j[0]["status"] = true; }, "runs[0].status: expected a string, got true or false"},
+      {"word.json", [](nlohmann::json& j) { j[0]["status"] = "frobbed"; }, "runs[0].status: unknown run status 'frobbed'"},
+      {"frame.json", [](nlohmann::json& j) { j[0]["series"]["frames"][1][7][0] = "x"; },
+       "runs[0].series.frames[1][7][0]: expected a number, got a string"},
+      {"events.json", [](nlohmann::json& j) { j[0]["events"] = 7; }, "runs[0].events: expected an array, got a number"},
+      {"config.json", [](nlohmann::json& j) { j[0]["metrics_config"]["stuck_samples"] = "many"; },
+       "runs[0].metrics_config.stuck_samples: expected a number, got a string"},
+      {"top.json", [](nlohmann::json& j) { j = 5; }, "runs: expected an array, got a number"},
+  };
+  for (const Case& c : cases) {
+    const std::string path = edited(c.name, c.edit);
+    expect_one_line_error(cli("view " + path + " --out " + s / "page.html"), path + ": " + c.says);
+    std::filesystem::create_directories(s / "report/results");
+    std::ofstream(s / "report/results/run.json") << R"({"command": "ballbench report", "scenes": ["seed-box"]})";
+    std::filesystem::copy_file(path, s / "report/results/seed-box.json", std::filesystem::copy_options::overwrite_existing);
+    expect_one_line_error(cli("report --out " + s / "report" + " --render-only"), "seed-box.json: " + c.says);
+  }
+  EXPECT_FALSE(std::filesystem::exists(s / "page.html"));
+  // The report's own run record, and a shard that is not a sweep's or a match's.
+  std::ofstream(s / "report/results/run.json") << R"({"command": 5, "scenes": ["seed-box"]})";
+  std::filesystem::copy_file(s / "r.json", s / "report/results/seed-box.json", std::filesystem::copy_options::overwrite_existing);
+  expect_one_line_error(cli("report --out " + s / "report" + " --render-only"),
+                        "run.json: command: expected a string, got a number");
+  std::ofstream(s / "report/results/run.json") << R"({"command": "c", "scenes": "seed-box"})";
+  expect_one_line_error(cli("report --out " + s / "report" + " --render-only"),
+                        "run.json: scenes: expected an array, got a string");
+  std::ofstream(s / "report/results/run.json") << R"({"command": "c", "scenes": ["seed-box"]})";
+  std::ofstream(s / "report/results/bench.json") << R"({"benchmarks": [{"name": 5}]})";
+  expect_one_line_error(cli("report --out " + s / "report" + " --render-only"),
+                        "bench.json: benchmarks[0].name: expected a string, got a number");
+  std::filesystem::create_directories(s / "shard/results");
+  std::ofstream(s / "shard/results/run.json") << R"({"shard": {"index": "1", "count": 2}, "parts": []})";
+  expect_one_line_error(cli("merge " + s / "shard" + " --out " + s / "merged"),
+                        "run.json: shard.index: expected a number, got a string");
+  std::ofstream(s / "kind.json") << R"({"kind": 5, "scene": "seed-box"})";
+  expect_one_line_error(cli("merge " + s / "kind.json" + " --out " + s / "m.json"), "kind.json: ");
+  std::ofstream(s / "pos.json") << R"({"scene": "seed-box", "n": 20, "horizon": 0.2, "reference": "exact", "repeats": 1,
+      "points": [{"engine": "home", "profile": "default", "knob": "dt", "value": 0.01, "dt": 0.01, "steps": 2,
+                  "settings": {}, "status": "ok", "error": "", "ns_per_ball_step": [1], "engine_s": [1],
+                  "pos_rms": "far", "vel_rms": 0, "energy_rel": 0, "tunnelling": 0, "sticking": 0, "pareto": true}]})";
+  expect_one_line_error(cli("merge " + s / "pos.json" + " --out " + s / "m.json"),
+                        "pos.json: points[0].pos_rms: expected a number, got a string");
+}
+
+// The report reads nothing from where it writes: an engines file or a benchmark inside OUT/results
+// or OUT/figures (which --fresh empties), or a result file that OUT/REPORT.md links to.
+TEST(Cli, AReportWritesNoneOfItsInputs) {
+  const Scratch s("bb_report_inputs");
+  std::filesystem::create_directories(s / "rep/results");
+  std::ofstream(s / "rep/results/e.toml") << "# no engines\n";
+  expect_one_line_error(cli("--engines " + s / "rep/results/e.toml" + " report --out " + s / "rep" +
+                            " --fresh --no-bench --engine home"),
+                        "--engines " + s / "rep/results/e.toml" + ": inside --out " + s / "rep/results");
+  expect_one_line_error(cli("--engines " + s.dir.string() + "/rep/figures/../results/./e.toml report --out " +
+                            s / "rep" + " --no-bench --engine home"),
+                        "inside --out " + s / "rep/results");
+  EXPECT_EQ(slurp(s / "rep/results/e.toml"), "# no engines\n");
+  ASSERT_EQ(cli("run --quiet --no-reference --scene seed-box --engine home --steps 2 --json " + s / "rep/results/seed-box.json")
+                .status,
+            0);
+  const std::string results = slurp(s / "rep/results/seed-box.json");
+  std::ofstream(s / "rep/results/run.json") << R"({"command": "c", "scenes": ["seed-box"]})";
+  std::filesystem::create_symlink("results/seed-box.json", s / "rep/REPORT.md");
+  expect_one_line_error(cli("report --out " + s / "rep" + " --render-only"), "same file as the results file");
+  EXPECT_EQ(slurp(s / "rep/results/seed-box.json"), results);
+}
+
+// view, merge and list stop on SIGINT, SIGTERM or SIGHUP as every command does: exit 128 + the
+// signal, named, nothing half written. A wait for an engine's handshake ends at once.
+TEST(Cli, ListViewAndMergeStopOnASignalNamingIt) {
+  const Scratch s("bb_signal_list");
+  std::ofstream(s / "slow.toml") << "[[engine]]\nname = \"slow\"\ncommand = [\"sleep\", \"100\"]\ntimeout_s = 600\n";
+  for (const auto& [signal, status] : {std::pair{"HUP", 129}, {"TERM", 143}, {"INT", 130}}) {
+    // The project's engines (Node) left out: the one awaited is `sleep 100`.
+    const std::string cmd = std::string("BALLBENCH_ENGINES= timeout --preserve-status -s ") + signal + " 2 " +
+                            BALLBENCH_CLI + " --engines " + s / "slow.toml" + " list >/dev/null 2>" + s / "err";
+    const int rc = std::system(cmd.c_str());
+    ASSERT_TRUE(WIFEXITED(rc)) << signal;
+    EXPECT_EQ(WEXITSTATUS(rc), status) << signal << ": " << slurp(s / "err");
+    const std::string e = slurp(s / "err");
+    EXPECT_NE(e.find(std::string("ballbench: interrupted by SIG") + signal + " while waiting for a reply from engine "
+                     "process `sleep 100`"),
+              std::string::npos)
+        << e;
+    EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << e;
+  }
+}

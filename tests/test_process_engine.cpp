@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -435,11 +436,26 @@ TEST(ProcessEngine, AStepTimeMustBeFiniteAndPlausible) {
   EXPECT_LT(*r.engine_process_s, 1.0);
 }
 
-// A short block says how many bytes it lacked, whether the engine then closes its output or waits.
+// A short block says how many bytes it lacked, whether the engine then closes its output or waits:
+// an engine that stays alive is named when its block pauses (5 s), not at the reply limit (60 s).
 TEST(ProcessEngine, AShortStateBlockSaysHowManyBytesAreMissing) {
-  const Result r = run_engine(box(), misbehaving("short-block-alive", 3.0), steps(10));
+  const Result r = run_engine(box(), misbehaving("short-block-alive", 60.0), steps(10));
   EXPECT_EQ(r.status, RunStatus::failed);
-  EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more within the time limit")) << r.error;
+  EXPECT_TRUE(has(r.error, "sent a state block 792 bytes short (of 800), and no more for 5 s")) << r.error;
+}
+
+// A command's --timeout bounds the engines' handshakes, made before any run, as it bounds the runs:
+// an engine silent at hello is unavailable for "no reply within the time limit", not waited on for
+// its own reply limit (600 s here, the engine sleeping 100 s).
+TEST(ProcessEngine, TheHandshakeIsBoundedByTheCommandsTimeout) {
+  const std::string dir = (std::filesystem::temp_directory_path() / ("bb_slow_hello." + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir + "/slow.toml") << "[[engine]]\nname = \"slow\"\ncommand = [\"sleep\", \"100\"]\ntimeout_s = 600\n";
+  const testing::CliOutcome o = testing::run_cli("--engines " + dir + "/slow.toml run --quiet --no-reference --scene seed-box "
+                                                 "--engine slow --steps 2 --timeout 2");
+  std::filesystem::remove_all(dir);
+  EXPECT_NE(o.out.find("sent no reply within the time limit"), std::string::npos) << o.out << o.err;
+  EXPECT_NE(row(o.out, "slow").find("unsupported"), std::string::npos) << o.out;
 }
 
 // The handshake: names without control characters and not `all`, each profile once, the versions
@@ -555,6 +571,30 @@ TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
     ::usleep(20'000);
   }
   EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
+}
+
+// The same through `ballbench run`, whose runs are in child processes that end without destructors:
+// the helper of the run's engine, and of the engine the handshake started, end with the command.
+TEST(ProcessEngine, AHelperOfAnIsolatedRunDoesNotOutliveTheCommand) {
+  const std::string pid_file =
+      (std::filesystem::temp_directory_path() / ("bb_helper_cli." + std::to_string(::getpid()))).string();
+  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 --engine "
+                                                 "'process:python3 " + kMisbehaving + " helper " + pid_file + "'");
+  EXPECT_EQ(o.status, 0) << o.err;
+  std::ifstream in(pid_file);
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  std::filesystem::remove(pid_file);
+  bool alive = false;
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
+    if (!alive) break;
+    ::usleep(20'000);
+  }
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
+  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
 
 TEST(EnginesFile, RefusesAFolderAndTheNameAll) {

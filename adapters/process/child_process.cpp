@@ -10,11 +10,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <thread>
+#include <utility>
 
 #include <fmt/format.h>
 
+#include "interrupt.h"
 #include "isolated_run.h"
 
 namespace ballbench {
@@ -22,6 +25,10 @@ namespace {
 
 constexpr size_t kStderrKeep = 4096;  // bytes of the child's stderr kept for error messages
 constexpr auto kExitGrace = std::chrono::milliseconds(500);  // for a child told to stop (stdin closed)
+// A state block follows its reply line at once (PROTOCOL.md): this long without a byte of it, the
+// block is short, whatever the reply time limit, so an engine that stays alive after a short block
+// is named promptly. Far above a pipe's pause under load.
+constexpr auto kBlockPause = std::chrono::seconds(5);
 
 int ms_until(ChildProcess::Clock::time_point deadline) {
   const auto left =
@@ -35,6 +42,19 @@ void close_fd(int& fd) {
 }
 
 std::string join_argv(const std::vector<std::string>& argv) { return fmt::format("{}", fmt::join(argv, " ")); }
+
+// The process groups of the children started and not yet ended, with the process that started
+// each (a fork inherits the list, not the children). A run's child process ends by quick_exit
+// (isolated_run.cpp), without destructors: its engines' groups, helpers included, end with it.
+std::vector<std::pair<pid_t, pid_t>>& live_groups() {
+  static std::vector<std::pair<pid_t, pid_t>> groups;  // (owner, group)
+  return groups;
+}
+
+void kill_live_groups() {
+  for (const auto& [owner, group] : live_groups())
+    if (owner == ::getpid()) ::kill(-group, SIGKILL);
+}
 
 }  // namespace
 
@@ -98,6 +118,9 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
                                         cwd.empty() ? "" : fmt::format(" in {}", cwd), std::strerror(e)));
   }
   ::fcntl(err_, F_SETFL, O_NONBLOCK);
+  static const bool at_exit = std::at_quick_exit(kill_live_groups) == 0;
+  (void)at_exit;
+  live_groups().emplace_back(owner_, pid_);
 }
 
 ChildProcess::~ChildProcess() {
@@ -118,6 +141,7 @@ ChildProcess::~ChildProcess() {
   }
   // What the engine started in its process group (a helper that kept its output open) ends with it.
   if (pid_ > 0) ::kill(-pid_, SIGKILL);
+  std::erase(live_groups(), std::pair{owner_, pid_});
   close_fd(out_), close_fd(err_);
 }
 
@@ -152,19 +176,26 @@ void ChildProcess::write(const std::string& bytes, Clock::time_point deadline) {
   if (error != 0) throw failure(fmt::format("cannot be written to ({})", std::strerror(error)));
 }
 
-void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes) {
+void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes, bool stop_on_interrupt) {
   const auto short_by = [&] {
     return fmt::format("a {} {} bytes short (of {})", waiting_for, block_bytes - std::min(block_bytes, inbox_.size()),
                        block_bytes);
   };
+  // A block's bytes may pause kBlockPause at most; a reply line may take the whole time limit.
+  const auto pause_end = block_bytes > 0 ? std::min(deadline, Clock::now() + kBlockPause) : deadline;
   for (;;) {
-    if (Clock::now() >= deadline) {
-      if (block_bytes > 0 && !inbox_.empty())
-        throw failure(fmt::format("sent {}, and no more within the time limit", short_by()));
+    if (stop_on_interrupt && interrupt_signal())
+      throw Interrupted{fmt::format("waiting for a {} from engine process {}", waiting_for, label_)};
+    if (Clock::now() >= pause_end) {
+      if (block_bytes > 0)
+        throw failure(fmt::format("sent {}, and no more {}", short_by(),
+                                  pause_end < deadline ? fmt::format("for {} s (a block follows its reply line at once)",
+                                                                     kBlockPause.count())
+                                                       : std::string("within the time limit")));
       throw failure(fmt::format("sent no {} within the time limit", waiting_for));
     }
     pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
-    const int ready = ::poll(fds, 2, ms_until(deadline));
+    const int ready = ::poll(fds, 2, ms_until(pause_end));
     if (ready < 0 && errno != EINTR) throw failure(fmt::format("cannot be read ({})", std::strerror(errno)));
     if (ready <= 0) continue;
     if (fds[1].revents) drain_stderr();
@@ -189,13 +220,13 @@ void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, siz
   }
 }
 
-std::string ChildProcess::read_line(Clock::time_point deadline, size_t max_bytes) {
+std::string ChildProcess::read_line(Clock::time_point deadline, size_t max_bytes, bool stop_on_interrupt) {
   size_t end;
   while ((end = inbox_.find('\n')) == std::string::npos) {
     if (inbox_.size() > max_bytes)
       throw failure(fmt::format("sent garbage: a reply line longer than {} bytes, starting '{}'", max_bytes,
                                 inbox_.substr(0, 60)));
-    pump(deadline, "reply");
+    pump(deadline, "reply", 0, stop_on_interrupt);
   }
   std::string line = inbox_.substr(0, end);
   inbox_.erase(0, end + 1);

@@ -35,8 +35,9 @@ class ChildProcess {
 
   // Everything written, or ChildProcessError (the child exited or stopped reading past `deadline`).
   void write(const std::string& bytes, Clock::time_point deadline);
-  // One line without its '\n', at most `max_bytes` long (longer is garbage).
-  std::string read_line(Clock::time_point deadline, size_t max_bytes);
+  // One line without its '\n', at most `max_bytes` long (longer is garbage). `stop_on_interrupt`:
+  // a stop request (interrupt.h) ends the wait by throwing Interrupted, for a wait before any run.
+  std::string read_line(Clock::time_point deadline, size_t max_bytes, bool stop_on_interrupt = false);
   // Exactly `n` bytes into `out`; `what` names them in errors ("the state block"), which say how
   // many bytes were short.
   void read_bytes(void* out, size_t n, Clock::time_point deadline, const char* what = "state block");
@@ -57,7 +58,7 @@ class ChildProcess {
  private:
   // Reads whatever arrives next. `block_bytes`: a binary block of that many bytes is awaited, and
   // an end or a silence says how many of them are missing.
-  void pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes = 0);
+  void pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes = 0, bool stop_on_interrupt = false);
   void drain_stderr();
   std::string exit_description();
 

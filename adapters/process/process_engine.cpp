@@ -13,6 +13,11 @@
 namespace ballbench {
 namespace {
 
+double& handshake_limit_s() {
+  static double limit = 1e300;
+  return limit;
+}
+
 // The processes of one engine entry that finished a run and wait for the next scene.
 struct ProcessPool {
   ProcessEngineSpec spec;
@@ -141,12 +146,15 @@ EngineEntry working_entry(const ProcessEngineSpec& spec, Handshake h, std::uniqu
 
 }  // namespace
 
+void limit_handshake_seconds(double seconds) { handshake_limit_s() = seconds; }
+
 std::vector<EngineEntry> process_engine_entries(const std::vector<ProcessEngineSpec>& specs) {
   std::vector<std::unique_ptr<ProtocolClient>> clients(specs.size());
   std::vector<std::string> errors(specs.size());
   for (size_t k = 0; k < specs.size(); ++k) {
     try {
-      clients[k] = std::make_unique<ProtocolClient>(specs[k].command, specs[k].cwd, specs[k].timeout_s);
+      clients[k] = std::make_unique<ProtocolClient>(specs[k].command, specs[k].cwd,
+                                                    std::min(specs[k].timeout_s, handshake_limit_s()));
       clients[k]->send_hello();
     } catch (const std::exception& e) {
       errors[k] = e.what();
@@ -156,7 +164,7 @@ std::vector<EngineEntry> process_engine_entries(const std::vector<ProcessEngineS
   for (size_t k = 0; k < specs.size(); ++k) {
     if (errors[k].empty()) {
       try {
-        Handshake h = clients[k]->hello_reply();
+        Handshake h = clients[k]->hello_reply(true);  // before any run: a stop request ends the wait
         out.push_back(working_entry(specs[k], std::move(h), std::move(clients[k])));
         continue;
       } catch (const std::exception& e) {

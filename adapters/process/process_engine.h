@@ -27,6 +27,10 @@ EngineEntry process_engine_entry(const ProcessEngineSpec& spec);
 // The same for several, their processes started together so their start-up times overlap.
 std::vector<EngineEntry> process_engine_entries(const std::vector<ProcessEngineSpec>& specs);
 
+// The longest a handshake made by process_engine_entries may take (s), below each engine's own reply
+// limit: a command's --timeout, which bounds everything an engine does for it.
+void limit_handshake_seconds(double seconds);
+
 // "process:python3 my_engine.py" -> the spec of an engine named on the command line (argv split at
 // spaces, run in the current folder); InputError for an empty command.
 ProcessEngineSpec parse_process_engine(const std::string& text);

@@ -98,8 +98,8 @@ void ProtocolClient::send_hello() {
                                                                     std::chrono::duration<double>(timeout_s_)));
 }
 
-Handshake ProtocolClient::hello_reply() {
-  const nlohmann::json j = reply("hello");
+Handshake ProtocolClient::hello_reply(bool stop_on_interrupt) {
+  const nlohmann::json j = reply("hello", stop_on_interrupt);
   try {
     const nlohmann::json version = j.value("protocol", nlohmann::json());
     if (!version.is_number_integer() || version.get<int>() < kOldestProtocolVersion ||
@@ -132,7 +132,7 @@ Handshake ProtocolClient::hello_reply() {
       const std::string key = text_field(k, "key", true);
       if (std::find(h.settings_keys.begin(), h.settings_keys.end(), key) == h.settings_keys.end())
         throw std::runtime_error(fmt::format("'sweep_knobs' varies '{}', which is not in 'settings_keys'", excerpt(key)));
-      if (!k.at("values").is_array() || k.at("values").empty())
+      if (!k.contains("values") || !k["values"].is_array() || k["values"].empty())
         throw std::runtime_error(fmt::format("'sweep_knobs' entry '{}' has no list of 'values'", excerpt(key)));
       h.info.sweep_knobs.push_back({key, k.at("values")});
     }
@@ -232,10 +232,10 @@ nlohmann::json ProtocolClient::request(const nlohmann::json& message, const char
   return reply(op);
 }
 
-nlohmann::json ProtocolClient::reply(const char* op) {
+nlohmann::json ProtocolClient::reply(const char* op, bool stop_on_interrupt) {
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
-  const std::string line = child_.read_line(deadline, kMaxReplyLine);
+  const std::string line = child_.read_line(deadline, kMaxReplyLine, stop_on_interrupt);
   const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("ok") || !j["ok"].is_boolean())
     throw child_.failure(fmt::format("sent garbage in reply to '{}': '{}' is not a JSON object with \"ok\"", op, excerpt(line)));
@@ -261,6 +261,8 @@ void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const c
   try {
     if (it == reply.end()) throw std::runtime_error("no 'state'");
     if (!it->is_object()) throw std::runtime_error("'state' is not an object");
+    for (const char* key : {"n", "t", "fields"})
+      if (!it->contains(key)) throw std::runtime_error(fmt::format("'{}' is missing", key));
     if (!it->at("n").is_number_integer()) throw std::runtime_error("'n' is not a whole number");
     if (!it->at("t").is_number()) throw std::runtime_error("'t' is not a number");
     n = it->at("n").get<long>();

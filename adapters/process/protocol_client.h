@@ -37,7 +37,8 @@ class ProtocolClient {
 
   // Sends hello without waiting, so several engines start up at once; hello_reply() takes it.
   void send_hello();
-  Handshake hello_reply();
+  // `stop_on_interrupt`: a stop request ends the wait (Interrupted), for a handshake before any run.
+  Handshake hello_reply(bool stop_on_interrupt = false);
 
   // A new world from `scene`, replacing any world before; returns the effective settings the
   // engine reports. A reply with kind "settings" is the user's error: InputError.
@@ -52,7 +53,7 @@ class ProtocolClient {
 
  private:
   nlohmann::json request(const nlohmann::json& message, const char* op);
-  nlohmann::json reply(const char* op);
+  nlohmann::json reply(const char* op, bool stop_on_interrupt = false);
   void read_state(const nlohmann::json& header, State& out, const char* op);
 
   void check_time(double t, const char* op);

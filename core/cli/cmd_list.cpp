@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "metrics/catalog.h"
 #include "registry.h"
 #include "scene_loader.h"
@@ -73,8 +74,12 @@ void add_list(CLI::App& app) {
   cmd->add_option("--settings", *settings, "print ENGINE's settings instead: key, default, values, unit, what it does")
       ->type_name("ENGINE");
   cmd->callback([metrics, settings] {
-    if (!settings->empty()) return list_settings(*settings);
-    *metrics ? list_metrics() : list();
+    // A stop request ends a wait for an engine's handshake at once (interrupt.h), and the command
+    // with the signal's status.
+    install_interrupt_handlers();
+    if (!settings->empty()) list_settings(*settings);
+    else *metrics ? list_metrics() : list();
+    exit_if_interrupted("the list above was printed whole");
   });
 }
 

@@ -10,6 +10,7 @@
 #include "input_error.h"
 #include "interrupt.h"
 #include "match.h"
+#include "process/process_engine.h"
 #include "progress.h"
 #include "registry.h"
 #include "scene_loader.h"
@@ -27,8 +28,10 @@ struct MatchArgs {
 };
 
 void match(MatchArgs& a) {
+  install_interrupt_handlers();  // first: a stop request during the handshakes too
   Progress::quiet = a.options.quiet;
   const Scene scene = load_scene(a.scene);
+  limit_handshake_seconds(a.options.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
   a.options.spec = scene_spec(scene);
@@ -41,7 +44,6 @@ void match(MatchArgs& a) {
   if (a.json.empty()) a.json = shard_file_name("match-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
   check_json_and_csv(scene, a.json, a.csv, "the match's");
-  install_interrupt_handlers();
   const MatchResult m = run_match(scene, engines, a.options, run_context());
   write_match_files(m, a.json, a.csv);
   print_match(m);

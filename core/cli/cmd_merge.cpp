@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "match.h"
 #include "sweep_result.h"
 
@@ -26,31 +27,39 @@ struct MergeArgs {
 
 bool is_match_file(const std::string& path) {
   const nlohmann::json j = parse_json_file(path, "a shard");
-  return j.is_object() && j.value("kind", "") == "match";
+  return j.is_object() && j.contains("kind") && j["kind"] == "match";
+}
+
+// The merged JSON and CSV are neither a shard nor an input of the command, nor each other.
+void check_merge_outputs(const MergeArgs& a, const std::string& csv) {
+  std::vector<PathUse> uses = noted_input_files();
+  for (const auto& path : a.shards) uses.push_back({"SHARD", path, false});
+  uses.push_back({"--out", a.out, true});
+  uses.push_back({"--csv", csv, true});
+  check_path_clashes(uses);
 }
 
 void merge_matches(const MergeArgs& a) {
+  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
+  check_merge_outputs(a, csv);
   std::vector<MatchResult> shards;
   for (const auto& path : a.shards) shards.push_back(read_match_file(path));
   const MatchResult merged = merge_match_shards(shards, a.shards);
-  const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
+  exit_if_interrupted("nothing written");
   write_match_files(merged, a.out, csv);
+  exit_if_interrupted(fmt::format("{} and {} were written whole", a.out, csv));
   fmt::print("merged {} match shards ({} tries) into {} and {}\n", shards.size(), merged.tries.size(), a.out, csv);
 }
 
 void merge_sweeps(const MergeArgs& a) {
   const std::string csv = a.csv.empty() ? sweep_csv_path(a.out) : a.csv;
-  {
-    std::vector<PathUse> uses = noted_input_files();
-    for (const auto& path : a.shards) uses.push_back({"SHARD", path, false});
-    uses.push_back({"--out", a.out, true});
-    uses.push_back({"--csv", csv, true});
-    check_path_clashes(uses);
-  }
+  check_merge_outputs(a, csv);
   std::vector<SweepResult> shards;
   for (const auto& path : a.shards) shards.push_back(read_sweep_file(path));
   const SweepResult merged = merge_sweep_shards(shards, a.shards);
+  exit_if_interrupted("nothing written");
   write_sweep_files(merged, a.out, csv);
+  exit_if_interrupted(fmt::format("{} and {} were written whole", a.out, csv));
   fmt::print("merged {} shards ({} points) into {} and {}\n", shards.size(), merged.points.size(), a.out, csv);
 }
 
@@ -79,7 +88,15 @@ ReportShard read_report_shard(const std::string& folder) {
     s.index = s.context.at("shard").at("index").get<int>();
     s.count = s.context.at("shard").at("count").get<int>();
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(json_shape_error(path, "a report's run record", e));
+    // The run record's fields a merge reads, by type.
+    const JsonShape record{{{"suite", ""},
+                            {"seeds", 0},
+                            {"engine_list", ""},
+                            {"parts", nlohmann::json::array({""})},
+                            {"engines", nlohmann::json::object()},
+                            {"shard", {{"index", 0}, {"count", 0}}}},
+                           ""};
+    throw InputError(json_type_error(path, "a report's run record", e, s.context, &record));
   }
   if (s.count < 1 || s.count > 10000)
     throw InputError(fmt::format("merge: {}: shard.count: {} is not a shard count", path, s.count));
@@ -93,6 +110,13 @@ void merge_reports(const MergeArgs& a) {
     if (fs::equivalent(folder, a.out, ec))
       throw InputError(fmt::format("merge: --out {} is one of the shards: merge into a folder of its own", a.out));
     shards.push_back(read_report_shard(folder));
+  }
+  {  // what the merge writes (OUT/results, OUT/figures, OUT/REPORT.md) holds nothing it reads
+    std::vector<PathUse> uses = noted_input_files();
+    for (const auto& folder : a.shards) uses.push_back({"SHARD", (fs::path(folder) / "results/run.json").string(), false});
+    for (const char* part : {"results", "figures"}) uses.push_back({"--out", (fs::path(a.out) / part).string(), true, true});
+    uses.push_back({"--out", (fs::path(a.out) / "REPORT.md").string(), true});
+    check_path_clashes(uses);
   }
   const ReportShard& first = shards.front();
   std::vector<std::string> seen(first.count + 1);
@@ -112,6 +136,7 @@ void merge_reports(const MergeArgs& a) {
     if (seen[i].empty()) throw InputError(fmt::format("merge: report shard {}/{} is missing", i, first.count));
   // Every shard's result files (its parts) into one results folder; a file in two shards is refused.
   const fs::path results = fs::path(a.out) / "results";
+  exit_if_interrupted("nothing written");
   fs::create_directories(results);
   std::vector<std::string> copied;
   for (const auto& folder : a.shards)
@@ -121,7 +146,11 @@ void merge_reports(const MergeArgs& a) {
       if (std::find(copied.begin(), copied.end(), name) != copied.end())
         throw InputError(fmt::format("merge: {} is in two shards ({} is one): run each shard into its own folder", name,
                                      folder));
-      fs::copy_file(e.path(), results / name, fs::copy_options::overwrite_existing);
+      // Copied beside its place, then renamed: a file in results/ is whole, whenever the merge stops.
+      const std::string target = (results / name).string();
+      const std::string tmp = create_temp_beside(target, "a merged result file");
+      fs::copy_file(e.path(), tmp, fs::copy_options::overwrite_existing);
+      move_file_into_place(tmp, target, "a merged result file");
       copied.push_back(name);
     }
   nlohmann::json context = first.context;
@@ -130,10 +159,15 @@ void merge_reports(const MergeArgs& a) {
   for (const auto& s : shards) context["shards"].push_back(s.context);
   write_file_atomically((results / "run.json").string(), context.dump(2) + "\n", "the run record");
   fmt::print("merged {} report shards ({} result files) into {}\n", shards.size(), copied.size(), results.string());
+  exit_if_interrupted(fmt::format("the merged results are in {}; REPORT.md not rendered (`ballbench report "
+                                  "--render-only --out {}` renders it)",
+                                  results.string(), a.out));
   render_report_folder(a.out);
+  exit_if_interrupted(fmt::format("{}/REPORT.md was written whole", a.out));
 }
 
 void merge(const MergeArgs& a) {
+  install_interrupt_handlers();
   size_t folders = 0;
   for (const auto& s : a.shards) {
     if (!fs::exists(s)) throw InputError(fmt::format("merge: {}: no such file or folder", s));

@@ -132,7 +132,7 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
   nlohmann::json joined;
   for (size_t k = 0; k < filters.size(); ++k) {
     const std::string& filter = filters[k];
-    const std::string tmp = fmt::format("{}.running{}", path, k);
+    const std::string tmp = create_temp_beside(path, "the benchmark output");  // this report's own
     const std::string cmd =
         fmt::format("'{}' --benchmark_filter='{}' {} --budget_s={} --benchmark_out='{}' --benchmark_out_format=json 1>&2",
                     bin, filter, min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", budget_s, tmp);
@@ -180,15 +180,41 @@ void render_report_folder(const std::string& out) {
   try {
     md = render_report(inputs, draw_figures(inputs, out));
   } catch (const nlohmann::json::exception& e) {  // a field of run.json of another type than a report writes
-    throw InputError(fmt::format("{}/results/run.json: not a report's run record: {}", out, e.what()));
+    // The run record's fields that rendering reads by type (the machine's are shown as they are).
+    const JsonShape record{{{"command", ""}, {"date", ""}, {"suite", ""}, {"scenes", nlohmann::json::array({""})}}, ""};
+    throw InputError(json_type_error(out + "/results/run.json", "a report's run record", e, inputs.run, &record));
+  } catch (const std::exception&) {  // a figure's gnuplot ended by the signal that stops this process
+    if (interrupt_signal()) exit_if_interrupted(fmt::format("{}/REPORT.md not rewritten", out));
+    throw;
   }
+  exit_if_interrupted(fmt::format("{}/REPORT.md not rewritten", out));
   write_file_atomically(out + "/REPORT.md", md, "the report");
   fmt::print("wrote {}/REPORT.md\n", out);
 }
 
 namespace {
 
+// What the report reads (an engines file, the benchmark binaries; with --render-only the results)
+// lies outside what it writes and, with --fresh, empties: OUT/results, OUT/figures, OUT/REPORT.md.
+void check_report_paths(const ReportArgs& a) {
+  std::vector<PathUse> uses = noted_input_files();
+  const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
+  if (!a.render_only && !a.no_bench && !bin.empty())
+    for (const std::string& b : {bin, (fs::path(bin).parent_path() / "ballbench_harness_benchmark").string()})
+      if (fs::exists(b)) uses.push_back({a.bench_binary.empty() ? "the benchmark" : "--bench-binary", b, false});
+  if (!a.suites.empty()) uses.push_back({"--suites", a.suites, false});
+  std::error_code ec;
+  if (a.render_only)  // each result file read, against REPORT.md (a link to one would be written into it)
+    for (const auto& e : fs::directory_iterator(a.out + "/results", ec))
+      if (e.is_regular_file()) uses.push_back({"the results file", e.path().string(), false});
+  if (!a.render_only) uses.push_back({"--out", a.out + "/results", true, true});
+  uses.push_back({"--out", a.out + "/figures", true, true});
+  uses.push_back({"--out", a.out + "/REPORT.md", true});
+  check_path_clashes(uses);
+}
+
 void report(const ReportArgs& a) {
+  install_interrupt_handlers();  // first: a stop request during the handshakes too
   if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
     throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
   const std::string results_dir = a.out + "/results";
@@ -196,6 +222,7 @@ void report(const ReportArgs& a) {
   // --out that cannot hold them is one line, not an error from deep inside after the runs.
   for (const std::string& p : {a.out + "/REPORT.md", results_dir + "/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
+  check_report_paths(a);
   ReportSuite suite = load_report_suite(a.full ? "full" : "quick", a.suites);
   const auto engines = parse_engine_list(a.engines);  // a bad name is an error before anything runs
   if (a.seeds > 0) suite.seeds = a.seeds;
@@ -211,7 +238,6 @@ void report(const ReportArgs& a) {
       for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file()) fs::remove(e.path(), ec);
   }
-  install_interrupt_handlers();
   // Asked to stop: the part in progress is written (marked) and every finished part kept; a report
   // run again resumes from them. REPORT.md is only rendered from a report that ran to its end.
   auto stop_if_interrupted = [&] {

@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "process/process_engine.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "registry.h"
@@ -124,6 +125,7 @@ void run(const RunArgs& a) {
   install_interrupt_handlers();
   Progress::quiet = a.quiet;
   Scene scene = load_scene(a.scene);
+  limit_handshake_seconds(a.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;

@@ -9,6 +9,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "interrupt.h"
+#include "process/process_engine.h"
 #include "progress.h"
 #include "registry.h"
 #include "scene_loader.h"
@@ -26,8 +27,10 @@ struct StressArgs {
 };
 
 void stress(StressArgs& a) {
+  install_interrupt_handlers();  // first: a stop request during the handshakes too
   Progress::quiet = a.options.quiet;
   const Scene base = load_scene(a.scene);
+  limit_handshake_seconds(a.options.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
   if (!a.knobs.empty()) a.options.knobs = a.knobs;
@@ -40,7 +43,6 @@ void stress(StressArgs& a) {
     check_path_clashes(uses);
     check_writable(a.json, "the frontiers", true);
   }
-  install_interrupt_handlers();
   const FrontierResult f = run_frontier(base, engines, a.options, run_context());
   print_frontier(f);
   if (!a.json.empty()) write_frontier_file(a.json, f);

@@ -11,6 +11,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "process/process_engine.h"
 #include "interrupt.h"
 #include "progress.h"
 #include "registry.h"
@@ -29,8 +30,10 @@ struct SweepArgs {
 };
 
 void sweep(SweepArgs& a) {
+  install_interrupt_handlers();  // first: a stop request during the handshakes too
   Progress::quiet = a.options.quiet;
   const Scene scene = load_scene(a.scene);
+  limit_handshake_seconds(a.options.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
   if (!a.dt_factors.empty()) a.options.dt_factors = a.dt_factors;
@@ -40,7 +43,6 @@ void sweep(SweepArgs& a) {
   if (a.json.empty()) a.json = shard_file_name("sweep-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
   check_json_and_csv(scene, a.json, a.csv, "the sweep's");
-  install_interrupt_handlers();
   const SweepResult s = run_sweep(scene, engines, a.options, run_context());
   write_sweep_files(s, a.json, a.csv);
   if (s.shard_count == 1) print_pareto(s);  // a shard's fronts are of its points only

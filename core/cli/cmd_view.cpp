@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
+#include "interrupt.h"
 #include "validators.h"
 #include "viewer_page.h"
 
@@ -19,6 +20,7 @@ struct ViewArgs {
 };
 
 void view(const ViewArgs& a) {
+  install_interrupt_handlers();
   const std::string out =
       a.out.empty() ? std::filesystem::path(a.results).replace_extension(".html").string() : a.out;
   {
@@ -45,7 +47,10 @@ void view(const ViewArgs& a) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: {}", a.results, e.what()));
   }
+  // Asked to stop while reading: nothing is written. A page being written is written whole.
+  exit_if_interrupted(fmt::format("{} not written", out));
   write_file_atomically(out, page, "the viewer page");
+  exit_if_interrupted(fmt::format("{} was written whole", out));
   fmt::print("wrote {} ({} runs of {}, {} frames, {:.2f} MB)\n", out, runs.size(), runs.front().scene, frames,
              static_cast<double>(page.size()) / 1e6);
 }
