@@ -459,7 +459,7 @@ std::vector<Figure> scaling_figures(const BenchResults& bench, const fs::path& d
     gp.close();
     run_gnuplot(dir / (base + ".gp"));
     figures.push_back({"scaling", "", "figures/" + base + ".png",
-                       fmt::format("Step cost against ball count on `{}` (bench/ballbench_step_benchmark, engine step "
+                       fmt::format("Step cost against ball count on {} (bench/ballbench_step_benchmark, engine step "
                                    "only), one line per engine and profile, log-log: flat is linear scaling. Points "
                                    "an engine did not reach are named under the plot.",
                                    scene)});
