@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <regex>
 #include <string_view>
 
 #include <fmt/format.h>
 
 #include "input_error.h"
+#include "palette.h"
 
 namespace ballbench {
 
@@ -21,6 +23,13 @@ long fixed(double v) { return std::lround(v / kUnit); }
 
 // Six significant digits: what a line on a 200-pixel chart can show, at a third of the bytes.
 double short_number(double v) { return std::isfinite(v) ? std::stod(fmt::format("{:.6g}", v)) : v; }
+
+// The page is shared beyond the machine that made it: a path of that machine ("/home/me/x/seed-box.toml",
+// in a scene source or an error message) is shown by its last part.
+std::string without_machine_paths(const std::string& text) {
+  static const std::regex path(R"((^|[\s'"(=])(?:/[^\s/'"():,;]+)+/([^\s/'"():,;]+))");
+  return std::regex_replace(text, path, "$1$2");
+}
 
 std::string label(const Result& r) {
   const std::string l = run_label(r);
@@ -45,11 +54,14 @@ nlohmann::json run_json(const Result& r) {
     events.push_back(std::move(j));
   }
   const MetricsSummary& m = r.metrics;
+  const RunStyle style = run_style(r.engine, r.profile);
   return {{"label", label(r)},
           {"engine", r.engine},
           {"profile", r.profile},
+          {"colour", style.colour},
+          {"dash", style.dash},
           {"status", run_status_text(r.status)},
-          {"error", r.error},
+          {"error", without_machine_paths(r.error)},
           {"frame_t", r.series.frame_t},
           {"frames", std::move(frames)},
           {"t", r.series.t},
@@ -61,6 +73,12 @@ nlohmann::json run_json(const Result& r) {
             {"tunnel-pair", m.tunnelling_pair},
             {"stick-wall", m.sticking_wall},
             {"stick-pair", m.sticking_pair}}}};
+}
+
+std::vector<std::string> track_colours() {
+  std::vector<std::string> colours;
+  for (int b = 0; b < kTracks; ++b) colours.push_back(track_colour(b));
+  return colours;
 }
 
 }  // namespace
@@ -125,7 +143,7 @@ std::string viewer_page(const std::vector<const Result*>& runs) {
   std::vector<double> radius = s.series.radius;
   if (static_cast<int>(radius.size()) != s.n) radius.assign(s.n, s.series.radius_mean);  // files without radii
   nlohmann::json data = {{"scene", s.scene},
-                         {"source", s.scene_source},
+                         {"source", without_machine_paths(s.scene_source)},
                          {"n", s.n},
                          {"dt", s.dt},
                          {"steps", s.steps},
@@ -133,6 +151,7 @@ std::string viewer_page(const std::vector<const Result*>& runs) {
                          {"radius", radius},
                          {"unit", kUnit},
                          {"tracks", kTracks},
+                         {"track_colours", track_colours()},
                          {"runs", nlohmann::json::array()}};
   for (const Result* r : runs) data["runs"].push_back(run_json(*r));
   // Inside <script>, "</script>" in a string (an error message) would end the element: '<' is

@@ -2,8 +2,9 @@
 // The trajectory viewer: a self-contained HTML page (reports/viewer/viewer.html, compiled in) with
 // the runs of one scene side by side, played back from their frames (Result::series::frames), with
 // the tracks of the first balls, every tunnelling and sticking event (Result::events) where and
-// when it happened, and energy over time. `ballbench report` writes one per seed scene,
-// `ballbench view` one for any run file.
+// when it happened, and energy over time; each run in its engine's colour and its profile's line
+// style (palette.h), and no path of the machine that made it. `ballbench report` writes one per
+// seed scene, `ballbench view` one for any run file.
 #include <string>
 #include <vector>
 

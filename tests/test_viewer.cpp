@@ -2,11 +2,15 @@
 // errors, and the page loaded in headless Chromium (skipped where Chromium is absent).
 #include <gtest/gtest.h>
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -17,6 +21,7 @@
 #include "cli_runner.h"
 #include "input_error.h"
 #include "metrics/metrics.h"
+#include "palette.h"
 #include "registry.h"
 #include "result.h"
 #include "run_engines.h"
@@ -251,7 +256,7 @@ std::string chromium() {
   return "";
 }
 
-// The page's <pre id="state"> after Chromium loaded `url` headless and ran its script.
+// The page's hidden <pre id="state"> after Chromium loaded `url` headless and ran its script.
 nlohmann::json page_state(const std::string& browser, const std::string& url, const fs::path& dir) {
   const fs::path dom = dir / "dom.html";
   // Its own profile folder: ctest runs tests in parallel, and a profile is locked by its browser.
@@ -260,10 +265,11 @@ nlohmann::json page_state(const std::string& browser, const std::string& url, co
                           dom.string() + " 2>/dev/null";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
   std::string html = slurp(dom.string());
-  const std::string open = "<pre id=\"state\">";
+  // Hidden: a reader never sees it.
+  const std::string open = "<pre id=\"state\" hidden=\"\">";
   const size_t at = html.find(open), end = html.find("</pre>", at);
   if (at == std::string::npos || end == std::string::npos) {
-    ADD_FAILURE() << "no state element in what Chromium drew:\n" << html.substr(0, 2000);
+    ADD_FAILURE() << "no hidden state element in what Chromium drew:\n" << html.substr(0, 2000);
     return {};
   }
   std::string text = html.substr(at + open.size(), end - at - open.size());
@@ -273,8 +279,111 @@ nlohmann::json page_state(const std::string& browser, const std::string& url, co
   return nlohmann::json::parse(text);
 }
 
-// The colours viewer.html draws balls and the inside of the box with.
-const std::vector<int> kBall = {0x30, 0x60, 0xc0}, kInside = {0xff, 0xff, 0xff};
+// Chromium driven through its DevTools pipe (--remote-debugging-pipe: commands in on descriptor 3,
+// replies and events out on 4, each a JSON text ended by a NUL), for what a URL fragment cannot do:
+// press a key, as a person does, with the browser's own handling of it.
+class DevTools {
+ public:
+  DevTools(const std::string& browser, const fs::path& profile) {
+    int to[2], from[2];
+    if (::pipe(to) != 0 || ::pipe(from) != 0) return;
+    const std::string profile_arg = "--user-data-dir=" + profile.string();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::dup2(to[0], 3), ::dup2(from[1], 4);
+      for (int fd : {to[0], to[1], from[0], from[1]})
+        if (fd > 4) ::close(fd);
+      if (std::FILE* null = std::freopen("/dev/null", "w", stderr)) (void)null;
+      ::execl(browser.c_str(), browser.c_str(), "--headless", "--no-sandbox", "--disable-gpu", profile_arg.c_str(),
+              "--remote-debugging-pipe", "about:blank", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    ::close(to[0]), ::close(from[1]);
+    out_ = to[1], in_ = from[0];
+  }
+  ~DevTools() {
+    if (out_ >= 0) ::close(out_);
+    if (in_ >= 0) ::close(in_);
+    if (pid_ > 0) ::kill(pid_, SIGTERM), ::waitpid(pid_, nullptr, 0);
+  }
+
+  // The result of `method`, or null (and a test failure) on an error or after 30 s of silence.
+  nlohmann::json call(const std::string& method, const nlohmann::json& params, const std::string& session = "") {
+    nlohmann::json message = {{"id", ++id_}, {"method", method}, {"params", params}};
+    if (!session.empty()) message["sessionId"] = session;
+    const std::string text = message.dump() + '\0';
+    if (out_ < 0 || ::write(out_, text.data(), text.size()) != static_cast<ssize_t>(text.size())) {
+      ADD_FAILURE() << "cannot write to Chromium's pipe";
+      return {};
+    }
+    for (;;) {
+      nlohmann::json reply = next();
+      if (reply.is_null()) return {};
+      if (reply.value("id", -1) != id_) {
+        events_.push_back(std::move(reply));
+        continue;
+      }
+      if (reply.contains("error")) {
+        ADD_FAILURE() << method << ": " << reply.at("error").dump();
+        return {};
+      }
+      return reply.at("result");
+    }
+  }
+
+  // Waits for the event `method` (one that came while waiting for a reply counts).
+  bool wait_for(const std::string& method) {
+    for (;;) {
+      for (auto e = events_.begin(); e != events_.end(); ++e)
+        if (e->value("method", "") == method) return events_.erase(e), true;
+      nlohmann::json event = next();
+      if (event.is_null()) return false;
+      events_.push_back(std::move(event));
+    }
+  }
+
+ private:
+  nlohmann::json next() {
+    for (;;) {
+      if (const size_t end = buffer_.find('\0'); end != std::string::npos) {
+        const std::string text = buffer_.substr(0, end);
+        buffer_.erase(0, end + 1);
+        return nlohmann::json::parse(text);
+      }
+      pollfd p{in_, POLLIN, 0};
+      char chunk[65536];
+      const ssize_t got = in_ >= 0 && ::poll(&p, 1, 30000) == 1 ? ::read(in_, chunk, sizeof chunk) : -1;
+      if (got <= 0) {
+        ADD_FAILURE() << "Chromium's pipe closed or stayed silent for 30 s";
+        return {};
+      }
+      buffer_.append(chunk, static_cast<size_t>(got));
+    }
+  }
+
+  pid_t pid_ = -1;
+  int out_ = -1, in_ = -1, id_ = 0;
+  std::string buffer_;
+  std::deque<nlohmann::json> events_;
+};
+
+// The colour viewer.html draws the inside of the box with.
+const std::vector<int> kInside = {0xff, 0xff, 0xff};
+
+// "#rrggbb" as {r, g, b}.
+std::vector<int> rgb(const std::string& colour) {
+  const long v = std::stol(colour.substr(1), nullptr, 16);
+  return {static_cast<int>(v >> 16 & 0xff), static_cast<int>(v >> 8 & 0xff), static_cast<int>(v & 0xff)};
+}
+
+// What a panel's title says of its run's events: the count over the whole run, and how many the
+// page lists when it keeps fewer.
+std::string event_note(const Result& r) {
+  const long counted = r.metrics.tunnelling_wall + r.metrics.tunnelling_pair + r.metrics.sticking_wall + r.metrics.sticking_pair;
+  std::string note = std::to_string(counted) + (counted == 1 ? " event" : " events");
+  if (static_cast<long>(r.events.size()) < counted) note += ", " + std::to_string(r.events.size()) + " listed";
+  return note;
+}
 
 TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
   const std::string browser = chromium();
@@ -289,12 +398,18 @@ TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
   const std::vector<Result> runs = read_results_file(json);
   ASSERT_EQ(runs.size(), 2u);
   ASSERT_GT(runs[0].series.frames.size(), 40u);
+  // The page names no path of the machine that made it (the scene's file is in the source tree).
+  const std::string html = slurp(page);
+  for (const std::string& path : {std::string(BALLBENCH_SOURCE_DIR), dir.path.string()})
+    EXPECT_EQ(html.find(path), std::string::npos) << path;
+  EXPECT_NE(runs[0].scene_source.find('/'), std::string::npos) << "a path to leave out: " << runs[0].scene_source;
 
   const int k = 37;  // not the frame a page opens at (0)
   const nlohmann::json state = page_state(browser, "file://" + page + "#frame=" + std::to_string(k), dir.path);
   ASSERT_FALSE(state.is_null());
   EXPECT_EQ(state.at("frame"), k);
   EXPECT_NEAR(state.at("t").get<double>(), runs[1].series.frame_t[k], 1e-12);
+  EXPECT_NE(state.at("title").get<std::string>().find("seed-box"), std::string::npos) << state.at("title");
   EXPECT_EQ(state.at("engines"), nlohmann::json({"home-seed", "home"}));
   ASSERT_EQ(state.at("panels").size(), 2u);
   for (size_t p = 0; p < runs.size(); ++p) {
@@ -302,11 +417,24 @@ TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
     const Result& r = runs[p];
     const size_t held = std::min<size_t>(k, r.series.frames.size() - 1);
     EXPECT_EQ(panel.at("frame"), held) << r.engine;
-    // Ball 0 is drawn where this run's frame puts it, in the ball colour.
+    // Ball 0 is drawn where this run's frame puts it, in its engine's colour (the figures' and GIFs').
     const auto& ball0 = panel.at("ball0");
     EXPECT_NEAR(ball0.at("x").get<double>(), r.series.frames[held][0][0], 1e-9) << r.engine;
     EXPECT_NEAR(ball0.at("y").get<double>(), r.series.frames[held][0][1], 1e-9) << r.engine;
-    EXPECT_EQ(ball0.at("rgb").get<std::vector<int>>(), kBall) << r.engine;
+    EXPECT_EQ(ball0.at("rgb").get<std::vector<int>>(), rgb(run_style(r.engine, r.profile).colour)) << r.engine;
+    // The title counts the run's events, not the ones listed; a run that stopped says so instead.
+    if (held == static_cast<size_t>(k)) {
+      EXPECT_EQ(panel.at("note"), event_note(r)) << r.engine;
+    } else {
+      EXPECT_TRUE(panel.at("note").is_null()) << r.engine;
+    }
+    // Events are marked once they have happened, not before.
+    const long happened = std::count_if(r.events.begin(), r.events.end(),
+                                        [&](const Event& e) { return e.t <= runs[1].series.frame_t[k]; });
+    EXPECT_EQ(panel.at("marks"), happened) << r.engine;
+    if (p == 0) {
+      EXPECT_LT(happened, static_cast<long>(r.events.size())) << "events still to come, not drawn yet";
+    }
     // A point no ball of that frame covers shows the inside of the box.
     ASSERT_TRUE(panel.contains("empty")) << r.engine;
     const auto& empty = panel.at("empty");
@@ -330,6 +458,47 @@ TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
   for (size_t f = 0; f < t.size(); ++f)
     if (std::abs(t[f] - first.t) < std::abs(t[nearest] - first.t)) nearest = f;
   EXPECT_EQ(picked.at("frame"), nearest);
+}
+
+// The arrow keys step one frame each, with the slider focused (where the slider's own stepping
+// would add a second) and without.
+TEST(ViewerBrowser, AnArrowKeyStepsOneFrame) {
+  const std::string browser = chromium();
+  if (browser.empty()) GTEST_SKIP() << "chromium not found: the viewer's browser test needs Debian's chromium (scripts/lib.sh installs it)";
+  TempDir dir;
+  const std::string json = (dir.path / "run.json").string(), page = (dir.path / "run.html").string();
+  ASSERT_EQ(run_cli("run --scene seed-box --engine home --steps 100 --frames 50 --no-reference --quiet --json " + json).status, 0);
+  ASSERT_EQ(run_cli("view " + json + " --out " + page).status, 0);
+  DevTools chrome(browser, dir.path / "devtools-profile");
+  const nlohmann::json target = chrome.call("Target.createTarget", {{"url", "about:blank"}});
+  ASSERT_FALSE(target.is_null());
+  const nlohmann::json attached = chrome.call("Target.attachToTarget", {{"targetId", target.at("targetId")}, {"flatten", true}});
+  ASSERT_FALSE(attached.is_null());
+  const std::string session = attached.at("sessionId");
+  chrome.call("Page.enable", nlohmann::json::object(), session);
+  chrome.call("Page.navigate", {{"url", "file://" + page + "#frame=10"}}, session);
+  ASSERT_TRUE(chrome.wait_for("Page.loadEventFired"));
+  auto evaluate = [&](const std::string& expression) {
+    const nlohmann::json r = chrome.call("Runtime.evaluate", {{"expression", expression}, {"returnByValue", true}}, session);
+    return r.is_null() ? nlohmann::json() : r.at("result").value("value", nlohmann::json());
+  };
+  auto press = [&](const std::string& key, int code) {
+    for (const char* type : {"rawKeyDown", "keyUp"})
+      chrome.call("Input.dispatchKeyEvent", {{"type", type}, {"key", key}, {"code", key}, {"windowsVirtualKeyCode", code}}, session);
+  };
+  auto frame = [&]() {
+    const nlohmann::json text = evaluate("document.getElementById('state').textContent");
+    return text.is_string() ? nlohmann::json::parse(text.get<std::string>()).at("frame").get<int>() : -1;
+  };
+  ASSERT_EQ(frame(), 10);
+  ASSERT_EQ(evaluate("document.getElementById('scrub').focus(); document.activeElement.id"), "scrub");
+  for (int k = 0; k < 3; ++k) press("ArrowRight", 39);
+  EXPECT_EQ(frame(), 13) << "three presses on the focused slider";
+  press("ArrowLeft", 37);
+  EXPECT_EQ(frame(), 12);
+  ASSERT_EQ(evaluate("document.activeElement.blur(); document.activeElement.tagName"), "BODY");
+  press("ArrowRight", 39);
+  EXPECT_EQ(frame(), 13) << "a press with nothing focused";
 }
 
 }  // namespace
