@@ -550,6 +550,19 @@ radius = 0.25
 }
 
 // A helper the engine started, holding the engine's stdout, ends with the engine's process.
+
+// Whether process `pid` still runs after up to 2 s of waiting for it to end (gone, or a zombie its
+// new parent has not reaped yet, counts as ended).
+bool still_running(long pid) {
+  for (int k = 0; k < 100; ++k) {
+    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+    std::string line;
+    if (!std::getline(stat, line) || line.find(") Z") != std::string::npos) return false;
+    ::usleep(20'000);
+  }
+  return true;
+}
+
 TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
   const std::string pid_file = (std::filesystem::temp_directory_path() / ("bb_helper." + std::to_string(::getpid()))).string();
   {
@@ -561,15 +574,7 @@ TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
   long pid = 0;
   ASSERT_TRUE(in >> pid);
   std::filesystem::remove(pid_file);
-  // Killed (gone, or a zombie its new parent has not reaped yet): not sleeping on.
-  bool alive = false;
-  for (int k = 0; k < 100; ++k) {
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string line;
-    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
-    if (!alive) break;
-    ::usleep(20'000);
-  }
+  const bool alive = still_running(pid);
   EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
 }
 
@@ -585,14 +590,7 @@ TEST(ProcessEngine, AHelperOfAnIsolatedRunDoesNotOutliveTheCommand) {
   long pid = 0;
   ASSERT_TRUE(in >> pid);
   std::filesystem::remove(pid_file);
-  bool alive = false;
-  for (int k = 0; k < 100; ++k) {
-    std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
-    std::string line;
-    alive = static_cast<bool>(std::getline(stat, line)) && line.find(") Z") == std::string::npos;
-    if (!alive) break;
-    ::usleep(20'000);
-  }
+  const bool alive = still_running(pid);
   EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
   if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
