@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "progress.h"
 #include "input_error.h"
 #include "metrics/catalog.h"
 #include "registry.h"
@@ -72,6 +73,7 @@ void add_list(CLI::App& app) {
   auto settings = std::make_shared<std::string>();
   cmd->add_option("--settings", *settings, "print ENGINE's settings instead: key, default, values, unit, what it does")
       ->type_name("ENGINE");
+  add_quiet(cmd, Progress::quiet);
   cmd->callback([metrics, settings] {
     if (!settings->empty()) return list_settings(*settings);
     *metrics ? list_metrics() : list();
