@@ -190,9 +190,14 @@ TEST_F(SweepCli, ThreeShardsMergedEqualTheWholeSweepButForTiming) {
     EXPECT_EQ(std::tie(p.engine, p.profile, p.knob, p.value, p.dt, p.steps, p.settings, p.status, p.error),
               std::tie(q.engine, q.profile, q.knob, q.value, q.dt, q.steps, q.settings, q.status, q.error))
         << where;
-    EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
-              std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
-        << where;
+    // A point not measured (refused) has no figures in either: null, read back as NaN.
+    EXPECT_EQ(p.measured, q.measured) << where;
+    if (p.measured)
+      EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
+                std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
+          << where;
+    else
+      EXPECT_TRUE(std::isnan(p.pos_rms) && std::isnan(q.pos_rms)) << where;
     EXPECT_EQ(q.engine_s.size(), q.status == RunStatus::ok ? 1u : 0u) << where;  // a refused point is not timed
   }
   EXPECT_TRUE(fs::exists(dir_ / "merged.csv"));
