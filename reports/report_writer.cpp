@@ -17,6 +17,7 @@
 #include "input_error.h"
 #include "json_value.h"
 #include "metrics/catalog.h"
+#include "no_data.h"
 #include "ensemble.h"
 #include "friction_section.h"
 #include "ordered_set.h"
@@ -72,10 +73,6 @@ struct MarkdownBuffer {
 };
 
 
-
-// No figure: the run did not step (refused, or failed before its first step), or the figure is not
-// defined for it. One symbol for it everywhere in the report.
-constexpr const char* kNoData = "n/a";
 
 // Where a column of a scene goes: its table, or the scene's appendix at the end of the report.
 enum class Place { table, appendix };
@@ -419,7 +416,7 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
   for (const BenchRow* r : rows) {
     const BenchRow* p = pipe_at(r->scene, r->n);
     put("| {} | {} | {} | {:.0f} | {:.0f} | {} |\n", run_label(r->engine, r->profile), r->scene, r->n,
-        *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : "-");
+        *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : kNoData);
   }
   put("\nns per ball-step. Source: `results/bench.json`.\n\n");
 }
