@@ -273,9 +273,10 @@ void put_initial_overlap(MarkdownBuffer& put, const std::vector<const Result*>& 
   if (initial.empty()) return;
   const auto [lo, hi] = std::minmax_element(initial.begin(), initial.end());
   if (*hi <= rows.front()->metrics_config.contact_tolerance) return;
+  const std::string low = fmt::format("{:.3g}", *lo), high = fmt::format("{:.3g}", *hi);  // equal as printed: one
   put("The placement starts with balls overlapping by up to {} of a radius ({}`penetration.initial`): not the "
       "engines' doing; the table's penetration is after the start.\n\n",
-      fmt::format("{:.3g}", *hi), *lo == *hi ? "every engine, " : fmt::format("{:.3g} - {:.3g} by engine, ", *lo, *hi));
+      high, low == high ? "every engine, " : fmt::format("{} - {} by engine, ", low, high));
 }
 
 // Every scene's columns that its table leaves out, at the end of the report.
@@ -810,7 +811,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
         put("\nError against {} (a converged run: `exact` cannot run this scene).\n", r->reference.reference);
         break;
       }
-    put("\n{}The other columns: [appendix](#appendix-{}); every figure: `{}`.\n\n",
+    put("\n{}The other columns: [appendix](#appendix-{}); every run's whole result: `{}`.\n\n",
         view.chaotic ? "Chaotic: every engine parts from the reference, so the horizon (the time it stays within a "
                        "tenth of a radius of it) ranks accuracy here, and the final error (in the appendix) does not. "
                      : "",
