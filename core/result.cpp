@@ -36,6 +36,24 @@ nlohmann::json event_json(const Event& e) {
   return j;
 }
 
+// The features a result records, each under its JSON name.
+constexpr std::pair<const char*, bool SceneFeatures::*> kFeatureFields[] = {
+    {"gravity", &SceneFeatures::gravity},           {"walls", &SceneFeatures::walls},
+    {"equal_radii", &SceneFeatures::equal_radii},   {"equal_masses", &SceneFeatures::equal_masses},
+    {"elastic", &SceneFeatures::elastic},           {"frictionless", &SceneFeatures::frictionless},
+    {"rotation", &SceneFeatures::rotation}};
+
+// A measurement: its value, or null for a run that has none (Result::measured).
+nlohmann::json measurement(const Result& r, double v) { return r.measured() ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// A measurement read back: null (not measured) as 0, which Result::measured() tells apart; a field
+// results files have always had is required, a later one (`required` false) defaults to 0.
+double measurement_from(const nlohmann::json& j, const char* key, bool required = true) {
+  if (!required && !j.contains(key)) return 0.0;
+  const nlohmann::json& v = j.at(key);
+  return v.is_null() ? 0.0 : v.get<double>();
+}
+
 Event event_from_json(const nlohmann::json& j) {
   return {event_kind_from_name(j.at("kind").get<std::string>()), j.at("step").get<long>(), num(j.at("t")),
           j.at("i").get<int>(), j.value("j", -1), num(j.at("x")), num(j.at("y"))};
@@ -66,15 +84,19 @@ nlohmann::json to_json(const Result& r) {
   j["error"] = r.error;
   j["diverged"] = r.diverged();
   j["diverged_step"] = r.diverged() ? nlohmann::json(r.diverged_step) : nlohmann::json(nullptr);
-  j["engine_s"] = r.engine_s;
-  j["ns_per_step"] = r.ns_per_step;
-  j["ns_per_ball_step"] = r.ns_per_ball_step;
-  j["harness_s"] = r.harness_s;
+  j["engine_s"] = measurement(r, r.engine_s);
+  j["ns_per_step"] = measurement(r, r.ns_per_step);
+  j["ns_per_ball_step"] = measurement(r, r.ns_per_ball_step);
+  j["harness_s"] = measurement(r, r.harness_s);
   if (r.engine_process_s) {
-    j["engine_process_s"] = *r.engine_process_s;
-    j["ns_per_ball_step_pipe"] = r.engine_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n);
+    j["engine_process_s"] = measurement(r, *r.engine_process_s);
+    j["ns_per_ball_step_pipe"] = measurement(r, r.engine_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n));
   }
-  j["out_of_plane_max"] = r.out_of_plane_max;
+  j["out_of_plane_max"] = measurement(r, r.out_of_plane_max);
+  if (r.scene_features) {
+    nlohmann::json& f = j["scene_features"];
+    for (const auto& [name, field] : kFeatureFields) f[name] = (*r.scene_features).*field;
+  }
   put_metrics(r, j);
   j["events"] = nlohmann::json::array();
   for (const Event& e : r.events) j["events"].push_back(event_json(e));
@@ -85,7 +107,7 @@ nlohmann::json to_json(const Result& r) {
                          {"roll_tolerance", r.metrics_config.roll_tolerance}};
   j["settings"] = r.settings;
   j["skipped"] = r.skipped;
-  if (r.reference.available) {
+  if (r.reference.available && r.measured()) {
     const auto& e = r.reference;
     j["error_vs_reference"] = {
         {"reference", e.reference},
@@ -96,6 +118,7 @@ nlohmann::json to_json(const Result& r) {
         {"vel_rms_max", e.vel_rms_max},
         {"energy_rel_max", e.energy_rel_max},
         {"horizon", e.horizon ? nlohmann::json(*e.horizon) : nlohmann::json(nullptr)},
+        {"horizon_status", horizon_status_text(horizon_status(e))},
         {"horizon_tolerance", e.horizon_tolerance},
         {"reference_failed_step", e.reference_failed_step >= 0 ? nlohmann::json(e.reference_failed_step) : nlohmann::json(nullptr)},
         {"reference_error", e.reference_error}};
@@ -130,12 +153,17 @@ Result result_from_json(const nlohmann::json& j) {
   r.error = j.value("error", "");
   r.diverged_step = j.at("diverged_step").is_null() ? -1 : j.at("diverged_step").get<long>();
   // Results files written before the field was named for what it holds call it "wall_s".
-  r.engine_s = j.contains("engine_s") ? j.at("engine_s").get<double>() : j.at("wall_s").get<double>();
-  r.ns_per_step = j.at("ns_per_step");
-  r.ns_per_ball_step = j.at("ns_per_ball_step");
-  r.harness_s = j.value("harness_s", 0.0);
-  if (j.contains("engine_process_s")) r.engine_process_s = j.at("engine_process_s").get<double>();
-  r.out_of_plane_max = j.value("out_of_plane_max", 0.0);
+  r.engine_s = measurement_from(j, j.contains("engine_s") ? "engine_s" : "wall_s");
+  r.ns_per_step = measurement_from(j, "ns_per_step");
+  r.ns_per_ball_step = measurement_from(j, "ns_per_ball_step");
+  r.harness_s = measurement_from(j, "harness_s", false);
+  if (j.contains("engine_process_s")) r.engine_process_s = measurement_from(j, "engine_process_s");
+  r.out_of_plane_max = measurement_from(j, "out_of_plane_max", false);
+  if (j.contains("scene_features")) {
+    const auto& f = j.at("scene_features");
+    r.scene_features.emplace();
+    for (const auto& [name, field] : kFeatureFields) (*r.scene_features).*field = f.at(name).get<bool>();
+  }
   take_metrics(j, r);
   // Results files written before events were recorded have none: their counts stand alone.
   if (j.contains("events"))

@@ -14,6 +14,7 @@
 #include "metrics/metrics.h"
 #include "metrics/reference_error.h"
 #include "run_status.h"
+#include "scene.h"
 
 namespace ballbench {
 
@@ -31,6 +32,13 @@ struct Result {
   long diverged_step = -1;  // the step a diverged run stopped at
   // JSON "diverged", derived from the status.
   bool diverged() const { return status == RunStatus::diverged; }
+  // The harness read states back from the engine: its metrics and timings are measurements (of the
+  // steps done). A run refused, or one that failed, crashed or timed out before its first step, has
+  // none: its JSON holds null for each, never a 0 that reads as a perfect, infinitely fast run.
+  bool measured() const { return steps_done > 0; }
+  // What the scene has (gravity, walls, elasticity...): which metrics mean something on it, for the
+  // report. JSON "scene_features"; none in results files written before it was recorded.
+  std::optional<SceneFeatures> scene_features;
   double engine_s = 0;          // engine step time summed over the run (s); JSON "engine_s"
   // The engine's own step time per step and per ball-step: self-timed by an engine in another
   // process (engine_process_s), the harness's timing of step() for every other.

@@ -44,6 +44,7 @@ Result result_header(const Scene& scene, const EngineEntry& entry, const RunOpti
   r.scene = scene.name;
   r.seed_offset = scene.seed_offset;
   r.scene_source = scene.source;
+  r.scene_features = scene.features();
   r.n = scene.n();
   r.dt = scene.dt;
   r.steps = options.steps >= 0 ? options.steps : scene.steps();

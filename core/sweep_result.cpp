@@ -32,18 +32,34 @@ void mark_pareto(std::vector<SweepPoint>& points) {
     p.pareto = false;
     if (p.status == RunStatus::ok && std::isfinite(p.pos_rms) && !p.engine_s.empty()) by_engine[p.engine].push_back(&p);
   }
-  for (auto& [engine, ps] : by_engine) {
-    // Fastest first (ties: the more accurate first); a point is on the front if it is more accurate
-    // than every faster one.
-    std::sort(ps.begin(), ps.end(), [](const SweepPoint* a, const SweepPoint* b) {
-      const double ta = a->engine_s_median(), tb = b->engine_s_median();
-      return ta != tb ? ta < tb : a->pos_rms < b->pos_rms;
-    });
-    double best = std::numeric_limits<double>::infinity();
+  const auto fastest = [](const SweepPoint* p) { return *std::min_element(p->engine_s.begin(), p->engine_s.end()); };
+  const auto slowest = [](const SweepPoint* p) { return *std::max_element(p->engine_s.begin(), p->engine_s.end()); };
+  const auto beats = [&](const SweepPoint* a, const SweepPoint* b) {
+    const bool faster = slowest(a) < fastest(b), not_slower = fastest(a) <= slowest(b);
+    return a->pos_rms <= b->pos_rms && not_slower && (a->pos_rms < b->pos_rms || faster);
+  };
+  for (auto& [engine, ps] : by_engine)
     for (SweepPoint* p : ps)
-      if (p->pos_rms < best) p->pareto = true, best = p->pos_rms;
-  }
+      p->pareto = std::none_of(ps.begin(), ps.end(), [&](const SweepPoint* q) { return q != p && beats(q, p); });
 }
+
+namespace {
+
+// A point's measurement, or null for a point whose run was not measured.
+template <class T>
+nlohmann::json measured(const SweepPoint& p, T v) {
+  return p.measured ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+// The same as a CSV cell: empty for none.
+template <class T>
+std::string measured_cell(const SweepPoint& p, T v) {
+  if (!p.measured) return "";
+  if constexpr (std::is_floating_point_v<T>) return fmt::format("{:.6g}", v);
+  else return fmt::format("{}", v);
+}
+
+}  // namespace
 
 nlohmann::json to_json(const SweepResult& s) {
   nlohmann::json points = nlohmann::json::array();
@@ -61,11 +77,11 @@ nlohmann::json to_json(const SweepResult& s) {
                       {"ns_per_ball_step_median", p.ns_median()},
                       {"engine_s", p.engine_s},
                       {"engine_s_median", p.engine_s_median()},
-                      {"pos_rms", p.pos_rms},
-                      {"vel_rms", p.vel_rms},
-                      {"energy_rel", p.energy_rel},
-                      {"tunnelling", p.tunnelling},
-                      {"sticking", p.sticking},
+                      {"pos_rms", measured(p, p.pos_rms)},
+                      {"vel_rms", measured(p, p.vel_rms)},
+                      {"energy_rel", measured(p, p.energy_rel)},
+                      {"tunnelling", measured(p, p.tunnelling)},
+                      {"sticking", measured(p, p.sticking)},
                       {"pareto", p.pareto},
                       {"plan_index", p.plan_index}});
   return {{"scene", s.scene},
@@ -141,8 +157,10 @@ SweepResult sweep_from_json(const nlohmann::json& j) {
     p.pos_rms = json_number(q.at("pos_rms"));
     p.vel_rms = json_number(q.at("vel_rms"));
     p.energy_rel = json_number(q.at("energy_rel"));
-    p.tunnelling = field<int>(q, "tunnelling", at);
-    p.sticking = field<int>(q, "sticking", at);
+    // A point not measured has null counts (and errors); a measured one's error may be null too
+    // (NaN: a run that blew up), its counts never.
+    p.measured = !q.contains("tunnelling") || !q.at("tunnelling").is_null();
+    if (p.measured) p.tunnelling = field<int>(q, "tunnelling", at), p.sticking = field<int>(q, "sticking", at);
     p.pareto = field<bool>(q, "pareto", at);
     p.plan_index = q.value("plan_index", static_cast<long>(s.points.size()));
     s.points.push_back(std::move(p));
@@ -160,9 +178,10 @@ std::string sweep_csv(const SweepResult& s) {
                               : std::pair{*std::min_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end()),
                                           *std::max_element(p.ns_per_ball_step.begin(), p.ns_per_ball_step.end())};
     const std::string value = json_text(p.value);
-    out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{}\n", p.engine,
-                       p.profile, p.knob, value, p.dt, p.steps, run_status_text(p.status), p.ns_median(), lo, hi, p.engine_s_median(),
-                       p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking, p.pareto ? 1 : 0);
+    out += fmt::format("{},{},{},{},{},{},{},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{}\n", p.engine, p.profile, p.knob,
+                       value, p.dt, p.steps, run_status_text(p.status), p.ns_median(), lo, hi, p.engine_s_median(),
+                       measured_cell(p, p.pos_rms), measured_cell(p, p.vel_rms), measured_cell(p, p.energy_rel),
+                       measured_cell(p, p.tunnelling), measured_cell(p, p.sticking), p.pareto ? 1 : 0);
   }
   return out;
 }

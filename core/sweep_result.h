@@ -19,6 +19,9 @@ struct SweepPoint {
   long steps = 0;                   // to the horizon
   nlohmann::json settings;          // the engine's effective settings (every knob, defaults included)
   RunStatus status = RunStatus::ok;  // of the run measured against the reference (Result::status)
+  // That run's states were read (Result::measured): without them the error and counts below are no
+  // measurement, and the JSON and CSV hold null (an empty cell) for each.
+  bool measured = true;
   std::string error;
   std::vector<double> ns_per_ball_step;  // one per timing repeat (engine step time only)
   std::vector<double> engine_s;     // one per timing repeat: engine time to the horizon (s)
@@ -56,8 +59,12 @@ SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std
 
 double median(std::vector<double> v);
 
-// Marks each engine's Pareto front: ok points not beaten in both engine time and position error by
-// another ok point of the same engine (any profile).
+// Marks each engine's Pareto front: the ok points that no other ok point of the same engine (any
+// profile) beats beyond the timing noise: one beats another when its position error is no larger and
+// its engine time no longer (its slowest repeat not above the other's fastest), and it is either
+// more accurate or faster beyond the noise (its slowest repeat below the other's fastest). Two
+// points whose repeats overlap are equally fast: timings inside the noise rank nothing.
+
 void mark_pareto(std::vector<SweepPoint>& points);
 
 nlohmann::json to_json(const SweepResult& s);

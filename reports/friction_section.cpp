@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "metrics/angle_of_repose.h"
+#include "no_data.h"
 #include "ordered_set.h"
 
 namespace ballbench {
@@ -36,8 +37,8 @@ std::string status_text(const Result& r) {
   return r.error.empty() ? run_status_text(r.status) : fmt::format("{}: {}", run_status_text(r.status), cell(r.error));
 }
 
-std::string or_dash(const std::optional<double>& v, const char* format) {
-  return v ? fmt::format(fmt::runtime(format), *v) : "-";
+std::string or_none(const std::optional<double>& v, const char* format) {
+  return v ? fmt::format(fmt::runtime(format), *v) : kNoData;
 }
 
 std::string source_text(const Result& r) {
@@ -60,11 +61,11 @@ void put_rolling(Markdown& put, const std::string& scene, const std::vector<cons
       "(m/s) |\n|---|---|---|---:|---:|---:|---:|---:|\n");
   for (const Result* r : rows) {
     if (!ran(*r)) {
-      put("| {} | {} | {} | - | - | - | - | - |\n", r->engine, r->profile, status_text(*r));
+      put("| {0} | {1} | {2} | {3} | {3} | {3} | {3} | {3} |\n", r->engine, r->profile, status_text(*r), kNoData);
       continue;
     }
     const auto& roll = r->rolling;
-    std::string speed_error = "-", time_error = "-";
+    std::string speed_error = kNoData, time_error = kNoData;
     if (roll.speed && roll.expected_speed && *roll.expected_speed != 0)
     {
       const double rel = 100 * (*roll.speed - *roll.expected_speed) / std::abs(*roll.expected_speed);
@@ -72,9 +73,9 @@ void put_rolling(Markdown& put, const std::string& scene, const std::vector<cons
     }
     const auto& t = r->metrics.slip.time_to_roll;
     if (t && roll.expected_time_to_roll) time_error = fmt::format("{:+.3f} s", *t - *roll.expected_time_to_roll);
-    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_dash(roll.speed, "{:.4f}"),
+    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_none(roll.speed, "{:.4f}"),
         speed_error, t ? fmt::format("{:.2f}", *t) : "never", time_error,
-        r->metrics.slip.measured ? fmt::format("{:.2g}", r->metrics.slip.final_max) : "-");
+        r->metrics.slip.measured ? fmt::format("{:.2g}", r->metrics.slip.final_max) : kNoData);
   }
   put("\n");
 }
@@ -107,7 +108,7 @@ void put_repose(Markdown& put, const std::vector<std::string>& scenes,
       }
       const Result& r = **it;
       if (!ran(r) || r.status != RunStatus::ok) {
-        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_dash(r.angle_of_repose, "{:.1f}"))
+        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.angle_of_repose, "{:.1f}"))
                    : std::string(run_status_text(r.status)));
         if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], cell(r.error)));
         continue;

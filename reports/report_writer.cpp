@@ -3,8 +3,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <cctype>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
+#include <optional>
 #include <set>
 
 #include <fmt/format.h>
@@ -13,6 +17,7 @@
 #include "input_error.h"
 #include "json_value.h"
 #include "metrics/catalog.h"
+#include "no_data.h"
 #include "ensemble.h"
 #include "friction_section.h"
 #include "accuracy_section.h"
@@ -22,59 +27,6 @@
 
 namespace ballbench {
 namespace {
-
-// One column of the per-scene table: its header, its text, and (for "best" marking) a value where
-// smaller is better.
-struct Column {
-  std::string header;
-  std::function<std::string(const Result&)> text;
-  std::function<double(const Result&)> value;  // null: not ranked
-  const MetricDef* metric = nullptr;           // a metric of the catalog: left out where no run has it
-};
-
-// Was the run compared with a reference other than itself? (The reference's own zero error is not
-// a result to rank.)
-bool compared(const Result& r) { return r.reference.available && r.engine != r.reference.reference; }
-
-// The status, the catalog's metrics that have a column (core/metrics/catalog.h), in its order, then
-// the error against the reference and the timing.
-std::vector<Column> columns() {
-  std::vector<Column> out = {
-      {"status",
-       [](const Result& r) {
-         return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
-       },
-       nullptr}};
-  for (const MetricDef& m : metric_catalog()) {
-    if (m.column.empty()) continue;
-    Column c{m.column, [&m](const Result& r) { return metric_text(m.get(r)); }, nullptr, &m};
-    if (m.ranked)
-      c.value = [&m](const Result& r) {
-        const nlohmann::json v = m.get(r);
-        return v.is_number() ? v.get<double>() : HUGE_VAL;
-      };
-    out.push_back(std::move(c));
-  }
-  const std::vector<Column> rest = {
-      {"pos error vs reference (m)",
-       [](const Result& r) { return r.reference.available ? fmt::format("{:.3g}", r.reference.pos_rms_final) : "-"; },
-       [](const Result& r) { return compared(r) ? r.reference.pos_rms_final : HUGE_VAL; }},
-      {"horizon (s)",
-       [](const Result& r) {
-         return !r.reference.available ? "-" : r.reference.horizon ? fmt::format("{:.3g}", *r.reference.horizon) : "never";
-       },
-       // Later is better: rank by minus the horizon, "never" best of all.
-       [](const Result& r) {
-         return !compared(r) ? HUGE_VAL : r.reference.horizon ? -*r.reference.horizon : -HUGE_VAL;
-       }},
-      {"ns/step", [](const Result& r) { return fmt::format("{:.0f}", r.ns_per_step); },
-       [](const Result& r) { return r.ns_per_step; }},
-      {"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
-       [](const Result& r) { return r.ns_per_ball_step; }},
-  };
-  out.insert(out.end(), rest.begin(), rest.end());
-  return out;
-}
 
 // Text for a markdown table cell: a `|` would end the cell.
 std::string table_cell(const std::string& text) {
@@ -92,9 +44,10 @@ std::string display_path(const std::string& source) {
 std::string times(int n) { return n == 1 ? "once" : fmt::format("{} times", n); }
 
 std::string verdict(const Result& r) {
-  if (r.status == RunStatus::unsupported || r.status == RunStatus::failed || r.status == RunStatus::crashed ||
-      r.status == RunStatus::timed_out)
-    return fmt::format("{}: {}", run_status_text(r.status), r.error);
+  if (!r.measured() || r.status == RunStatus::unsupported || r.status == RunStatus::failed ||
+      r.status == RunStatus::crashed || r.status == RunStatus::timed_out)
+    return r.error.empty() ? std::string(run_status_text(r.status))
+                           : fmt::format("{}: {}", run_status_text(r.status), r.error);
   std::vector<std::string> parts;
   if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   const auto& m = r.metrics;
@@ -105,8 +58,10 @@ std::string verdict(const Result& r) {
   parts.push_back(sticks ? fmt::format("got stuck {} ({} in walls, {} in balls)", times(sticks), m.sticking_wall,
                                        m.sticking_pair)
                          : "no sticking");
-  if (m.energy.max_rel_drift) parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *m.energy.max_rel_drift));
-  parts.push_back(fmt::format("{:.0f} ns per ball-step", r.ns_per_ball_step));
+  // Only where energy should be kept: with restitution below 1 the loss is the scene's physics.
+  if (m.energy.max_rel_drift && r.scene_features && r.scene_features->elastic)
+    parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *m.energy.max_rel_drift));
+  if (r.measured()) parts.push_back(fmt::format("{:.0f} ns per ball-step", r.ns_per_ball_step));
   return fmt::format("{}", fmt::join(parts, "; "));
 }
 
@@ -120,6 +75,228 @@ struct MarkdownBuffer {
 };
 
 
+
+// Where a column of a scene goes: its table, or the scene's appendix at the end of the report.
+enum class Place { table, appendix };
+
+// One column of a scene's table: its header, its text, and (for "best" marking) a value where
+// smaller is better.
+struct Column {
+  std::string header;
+  std::function<std::string(const Result&)> text;
+  std::function<std::optional<double>(const Result&)> value;  // null: not ranked; nullopt: this run not ranked
+  const MetricDef* metric = nullptr;  // a metric of the catalog: left out where no run has it
+  Place place = Place::table;
+  bool timing = false;  // ranked only among sound runs (a run that tunnels or sticks is no faster for it)
+};
+
+// Was the run compared with a reference other than itself? (The reference's own zero error is not
+// a result to rank.)
+bool compared(const Result& r) { return r.reference.available && r.engine != r.reference.reference; }
+
+// A run whose timing can be ranked: it ran every step, nothing passed through a wall or a ball and
+// nothing stuck.
+bool sound(const Result& r) {
+  const auto& m = r.metrics;
+  return r.status == RunStatus::ok && m.tunnelling_wall + m.tunnelling_pair + m.sticking_wall + m.sticking_pair == 0;
+}
+
+// What decides a scene's columns, from its runs.
+struct SceneView {
+  std::optional<SceneFeatures> features;  // none in results written before they were recorded
+  // Chaotic: every ok run compared with the reference parted from it (a finite horizon), so the
+  // final error measures chaos, not the engine, and the horizon is the figure to read.
+  bool chaotic = false;
+  bool horizon_exceeded = false;  // some run parted from the reference
+};
+
+SceneView scene_view(const std::vector<const Result*>& rows) {
+  SceneView v;
+  for (const Result* r : rows)
+    if (r->scene_features) v.features = r->scene_features;
+  bool any = false, all = true;
+  for (const Result* r : rows) {
+    if (!compared(*r) || !r->measured()) continue;
+    v.horizon_exceeded |= r->reference.horizon.has_value();
+    if (r->status != RunStatus::ok) continue;
+    any = true;
+    all &= r->reference.horizon.has_value();
+  }
+  v.chaotic = any && all;
+  return v;
+}
+
+// The scene's columns, the status first, then the catalog's metrics that have a column
+// (core/metrics/catalog.h) in its order, the error against the reference and the timing, each placed
+// in the table or the appendix by what means something on this scene.
+std::vector<Column> columns(const SceneView& view) {
+  std::vector<Column> out = {
+      {"status",
+       [](const Result& r) {
+         return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
+       },
+       nullptr}};
+  for (const MetricDef& m : metric_catalog()) {
+    if (m.column.empty()) continue;
+    const bool shown = view.features ? meaningful_on(m.meaningful, *view.features) : m.meaningful != MeaningfulOn::no_scene;
+    Column c{m.column,
+             [&m](const Result& r) {
+               const nlohmann::json v = m.get(r);
+               return v.is_null() ? std::string(kNoData) : metric_text(v);
+             },
+             nullptr, &m, shown ? Place::table : Place::appendix};
+    if (m.ranked)
+      c.value = [&m](const Result& r) -> std::optional<double> {
+        const nlohmann::json v = m.get(r);
+        return v.is_number() ? std::optional(v.get<double>()) : std::nullopt;
+      };
+    out.push_back(std::move(c));
+  }
+  out.push_back({"pos error vs reference (m)",
+                 [](const Result& r) { return r.reference.available ? fmt::format("{:.3g}", r.reference.pos_rms_final) : kNoData; },
+                 [](const Result& r) { return compared(r) ? std::optional(r.reference.pos_rms_final) : std::nullopt; },
+                 nullptr, view.chaotic ? Place::appendix : Place::table});
+  out.push_back({"horizon (s)",
+                 [](const Result& r) {
+                   return !r.reference.available ? kNoData
+                          : r.reference.horizon  ? fmt::format("{:.3g}", *r.reference.horizon)
+                                                 : "never";
+                 },
+                 // Later is better: rank by minus the horizon, "never" best of all.
+                 [](const Result& r) -> std::optional<double> {
+                   if (!compared(r)) return std::nullopt;
+                   return r.reference.horizon ? -*r.reference.horizon : -std::numeric_limits<double>::max();
+                 },
+                 nullptr, view.chaotic || view.horizon_exceeded ? Place::table : Place::appendix});
+  Column per_ball{"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
+                  [](const Result& r) { return std::optional(r.ns_per_ball_step); }};
+  per_ball.timing = true;
+  Column per_step{"ns/step", [](const Result& r) { return fmt::format("{:.0f}", r.ns_per_step); }, nullptr};
+  per_step.place = Place::appendix;
+  out.push_back(std::move(per_ball));
+  out.push_back(std::move(per_step));
+  return out;
+}
+
+// The columns some run of the scene has a figure for (the slip of a scene that does not rotate is no
+// column; nor is the error against a reference where none ran).
+std::vector<Column> scene_columns(const std::vector<const Result*>& rows, const SceneView& view) {
+  std::vector<Column> cols = columns(view);
+  std::erase_if(cols, [&](const Column& c) {
+    if (c.metric)
+      return std::none_of(rows.begin(), rows.end(), [&](const Result* r) { return !c.metric->get(*r).is_null(); });
+    if (c.header.starts_with("pos error") || c.header.starts_with("horizon"))
+      return std::none_of(rows.begin(), rows.end(), [](const Result* r) { return r->reference.available; });
+    return false;
+  });
+  return cols;
+}
+
+// The run's value in a ranked column, if its rank means something: it ended ok and was measured
+// (a timing: and was sound).
+std::optional<double> rank_value(const Column& c, const Result& r) {
+  if (!c.value || r.status != RunStatus::ok || !r.measured() || (c.timing && !sound(r))) return std::nullopt;
+  const std::optional<double> v = c.value(r);
+  return v && !std::isnan(*v) ? v : std::nullopt;
+}
+
+// The best value of a ranked column over the scene's runs: none where no ranking means anything
+// (fewer than two runs ranked, or all of them equal).
+std::optional<double> best_value(const Column& c, const std::vector<const Result*>& rows) {
+  std::vector<double> values;
+  for (const Result* r : rows)
+    if (const auto v = rank_value(c, *r)) values.push_back(*v);
+  if (values.size() < 2) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  if (*lo == *hi) return std::nullopt;
+  return *lo;
+}
+
+// A scene's table of the columns placed at `place`, the best of each ranked column in bold
+// (`bold` false: none).
+void put_scene_table(MarkdownBuffer& put, const std::vector<const Result*>& rows, const std::vector<Column>& all,
+                     Place place, bool bold) {
+  std::vector<const Column*> cols;
+  for (const Column& c : all)
+    if (c.place == place || &c == &all.front()) cols.push_back(&c);
+  put("| engine | profile |");
+  for (const Column* c : cols) put(" {} |", c->header);
+  put("\n|---|---|");
+  for (size_t k = 0; k < cols.size(); ++k) put("---|");
+  put("\n");
+  for (const Result* r : rows) {
+    put("| {} {} | {} |", r->engine, r->engine_version, r->profile);
+    for (const Column* c : cols) {
+      std::string cell = r->measured() || c == cols.front() ? c->text(*r) : kNoData;
+      if (bold)
+        if (const auto best = best_value(*c, rows); best && rank_value(*c, *r) == best) cell = "**" + cell + "**";
+      put(" {} |", table_cell(cell));
+    }
+    put("\n");
+  }
+}
+
+// "1 ball", "20 balls".
+std::string balls(long n) { return n == 1 ? "1 ball" : fmt::format("{} balls", n); }
+
+// What acts on the balls, as the scene's table is chosen by it.
+std::string features_text(const SceneFeatures& f) {
+  return fmt::format("{}, {}, {}{}", f.walls ? "walls" : "open space", f.gravity ? "gravity" : "no gravity",
+                     f.elastic ? "elastic (restitution 1)" : "restitution below 1",
+                     f.frictionless ? "" : ", friction");
+}
+
+constexpr const char* kBestNote =
+    "bold marks the best value of a column where a ranking means something (smaller is better; a later horizon is "
+    "better), among the runs that ended ok, and only where they differ; ns/ball-step only among the runs that "
+    "neither tunnelled nor got stuck. n/a: not measured (the run made no step) or not defined for that run.";
+
+// The heading's anchor as a code host makes it: lower case, punctuation dropped, spaces as '-'.
+std::string anchor(const std::string& scene) {
+  std::string out;
+  for (char c : scene)
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') out += static_cast<char>(std::tolower(c));
+    else if (c == ' ') out += '-';
+  return out;
+}
+
+// The scene's results file, relative to the report.
+std::string results_file(const ReportInputs& in, const std::string& scene) {
+  const auto it = in.result_files.find(scene);
+  return it != in.result_files.end() ? it->second : "results/" + scene + ".json";
+}
+
+// The placement's overlap, the same for every engine, said once above the table: the table's
+// penetration is what the engines let balls sink after the start.
+void put_initial_overlap(MarkdownBuffer& put, const std::vector<const Result*>& rows) {
+  std::vector<double> initial;
+  for (const Result* r : rows)
+    if (r->measured()) initial.push_back(r->metrics.penetration_initial);
+  if (initial.empty()) return;
+  const auto [lo, hi] = std::minmax_element(initial.begin(), initial.end());
+  if (*hi <= rows.front()->metrics_config.contact_tolerance) return;
+  const std::string low = fmt::format("{:.3g}", *lo), high = fmt::format("{:.3g}", *hi);  // equal as printed: one
+  put("The placement starts with balls overlapping by up to {} of a radius ({}`penetration.initial`): not the "
+      "engines' doing; the table's penetration is after the start.\n\n",
+      high, low == high ? "every engine, " : fmt::format("{} - {} by engine, ", low, high));
+}
+
+// Every scene's columns that its table leaves out, at the end of the report.
+void put_appendix(MarkdownBuffer& put, const std::vector<std::string>& scene_order,
+                  const std::map<std::string, std::vector<const Result*>>& by_scene) {
+  put("\n## Appendix: the other columns of each scene\n\nThe figures each scene's table leaves out because they "
+      "do not rank engines there (the final error on a chaotic scene, a momentum drift where walls and gravity act, "
+      "the energy drift where restitution below 1 loses energy by design, the penetration including the "
+      "placement's), unmarked.\n\n");
+  for (const auto& scene : scene_order) {
+    const auto& rows = by_scene.at(scene);
+    const std::vector<Column> cols = scene_columns(rows, scene_view(rows));
+    if (std::none_of(cols.begin(), cols.end(), [](const Column& c) { return c.place == Place::appendix; })) continue;
+    put("### Appendix: `{}`\n\n", scene);
+    put_scene_table(put, rows, cols, Place::appendix, false);
+    put("\n");
+  }
+}
 
 std::string setting_text(const SweepPoint& p) {
   if (p.knob == "dt") return "dt";
@@ -147,8 +324,11 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
       "`.csv`).\n\n",
       sw.n, sw.reference, sw.horizon, sw.repeats, sw.scene);
   put_figures(put, figures, "work-precision", sw.scene);
-  put("Each engine's Pareto front (no other setting of the same engine is both faster and more accurate), fastest "
-      "first:\n\n");
+  put("Each engine's Pareto front, fastest first: the settings no other setting of the same engine beats, being at "
+      "least as accurate and not slower, and more accurate or faster beyond the noise (its slowest timing repeat "
+      "below the other's fastest). Two settings whose repeats overlap are equally fast: a ranking inside the "
+      "run-to-run noise is no claim, so a front may hold settings whose medians alone would put one behind "
+      "another.\n\n");
   put("| engine | profile | setting | dt (s) | engine time (ms): median [min, max] | ns/ball-step | pos error (m) | "
       "energy error | tunnelling | sticking |\n|---|---|---|---|---|---|---|---|---|---|\n");
   std::vector<const SweepPoint*> front;
@@ -239,10 +419,20 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
   for (const BenchRow* r : rows) {
     const BenchRow* p = pipe_at(r->scene, r->n);
     put("| {} | {} | {} | {:.0f} | {:.0f} | {} |\n", run_label(r->engine, r->profile), r->scene, r->n,
-        *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : "-");
+        *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : kNoData);
   }
   put("\nns per ball-step. Source: `results/bench.json`.\n\n");
 }
+
+// A ratio as a reader takes it in: "48x", "2.5x", and below 0.1 its inverse, "1/330x" (not "0.0x").
+std::string ratio_text(double r) {
+  if (!(r > 0) || !std::isfinite(r)) return kNoData;
+  if (r < 0.1) return fmt::format("1/{:.0f}x", 1 / r);
+  return r >= 10 ? fmt::format("{:.0f}x", r) : r >= 1 ? fmt::format("{:.1f}x", r) : fmt::format("{:.2f}x", r);
+}
+
+// Balls from which a benchmark's memory per ball is the balls' (see put_scaling).
+constexpr long kMemoryBalls = 100000;
 
 void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults& bench,
                  const std::vector<Figure>& figures) {
@@ -300,6 +490,14 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
     for (const BenchRow& r : bench.rows)
       if (r.scene == scene && role_of(in, r.engine) == EngineRole::ours) add_once(ours_runs, {r.engine, r.profile});
     for (const auto& [engine, profile] : ours_runs) {
+      // A pile asleep does no work in a step: its time is no solve, and a ratio or a rate of it no
+      // measurement of one.
+      if (sleeps(profile)) {
+        put("\n`{}`: its balls sleep, so a step does next to nothing: its times above are the cost of a pile at rest "
+            "with sleeping, not of a solve, and are not set against other engines.\n",
+            run_label(engine, profile));
+        continue;
+      }
       const auto is_ours = [&](const BenchRow& r) { return r.engine == engine && r.profile == profile; };
       std::vector<std::string> ratios;
       for (long n : counts) {
@@ -312,8 +510,7 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
           if (external && (!fastest || r.ns_per_ball_step < fastest->ns_per_ball_step)) fastest = &r;
         }
         if (ours && fastest)
-          ratios.push_back(fmt::format("{} balls: {:.1f}x (vs {})", n,
-                                       fastest->ns_per_ball_step / ours->ns_per_ball_step,
+          ratios.push_back(fmt::format("{}: {} (vs {})", balls(n), ratio_text(fastest->ns_per_ball_step / ours->ns_per_ball_step),
                                        run_label(fastest->engine, fastest->profile)));
       }
       if (!ratios.empty())
@@ -324,13 +521,19 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
       const BenchRow* largest = nullptr;
       for (const BenchRow& r : bench.rows)
         if (r.scene == scene && is_ours(r) && r.error.empty() && (!largest || r.n > largest->n)) largest = &r;
+      // Memory per ball only where the balls dominate it: below kMemoryBalls the process's fixed cost
+      // (and the other benchmarks it ran) would be spread over a few balls.
       if (largest && largest->steps_per_s)
-        put("\n`{}` at {} balls: {:.1f} steps per second; memory {} bytes per ball (resident growth from a trimmed "
-            "heap while the world was built and run: what the engine holds), peak resident set of the benchmark "
-            "process {} bytes per ball.\n",
-            run_label(engine, profile), largest->n, *largest->steps_per_s,
-            largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : "n/a",
-            largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball) : "n/a");
+        put("\n`{}` at {}: {:.1f} steps per second{}.\n", run_label(engine, profile), balls(largest->n),
+            *largest->steps_per_s,
+            largest->n < kMemoryBalls
+                ? std::string()
+                : fmt::format("; memory {} bytes per ball (resident growth from a trimmed heap while the world was "
+                              "built and run: what the engine holds), peak resident set of the benchmark process {} "
+                              "bytes per ball",
+                              largest->engine_bytes_per_ball ? fmt::format("{:.0f}", *largest->engine_bytes_per_ball) : kNoData,
+                              largest->peak_rss_bytes_per_ball ? fmt::format("{:.0f}", *largest->peak_rss_bytes_per_ball)
+                                                               : kNoData));
     }
     // A settled pile that was still moving when its timed steps began (settling is bounded).
     std::vector<std::string> moving;
@@ -374,8 +577,8 @@ void put_ensemble(MarkdownBuffer& put, const ReportInputs& in, const std::string
       "over the runs that ended ok, with its 95% confidence interval (percentile bootstrap, 2000 resamples). {}\n\n",
       seeds.size(), seeds.size() - 1,
       ours.empty() ? ""
-                   : fmt::format("Against `{}` on the same placements (paired): **+** significantly above, **-** "
-                                 "significantly below (the bootstrap interval of the mean difference leaves out 0), = "
+                   : fmt::format("Against `{}` on the same placements (paired): **↑** significantly above, **↓** "
+                                 "significantly below (the bootstrap interval of the mean difference leaves out 0), ≈ "
                                  "not significantly different.",
                                  ours));
   put("| engine | ok |");
@@ -387,10 +590,11 @@ void put_ensemble(MarkdownBuffer& put, const ReportInputs& in, const std::string
     put("| {} | {} |", row.label, row.placements);
     for (size_t k = 0; k < metrics.size(); ++k)
       if (!row.metrics[k]) {
-        put(" - |");
+        put(" {} |", kNoData);
       } else {
         const std::string& v = row.versus_ours[k];
-        put(" {}{} |", interval_text(*row.metrics[k]), v.empty() ? "" : v == "=" ? " =" : " **" + v + "**");
+        put(" {}{} |", interval_text(*row.metrics[k]),
+            v.empty() ? "" : v == "=" ? " ≈" : v == "+" ? " **↑**" : " **↓**");
       }
     put("\n");
   }
@@ -469,6 +673,58 @@ void put_harness(MarkdownBuffer& put, const BenchResults& bench) {
   }
 }
 
+// The machine and build, one column each for the shards of a merged report (`ballbench merge`:
+// run.json's "merge" and "shards"), each with the parts it ran and its command.
+void put_machines(MarkdownBuffer& put, const nlohmann::json& run) {
+  static constexpr const char* kFields[] = {"cpu", "cores", "os", "compiler", "build_type", "flags"};
+  const nlohmann::json shards = run.value("shards", nlohmann::json::array());
+  put("## Machine and build\n\n");
+  if (!shards.is_array() || shards.empty()) {
+    put("| | |\n|---|---|\n");
+    for (const char* k : kFields)
+      if (run.contains(k)) put("| {} | {} |\n", k, table_cell(json_text(run[k])));
+    return;
+  }
+  put("Merged from {} shards, each run on its own (`report --shard I/N`; the report's parts dealt round-robin), "
+      "joined by `ballbench merge`. Times within a shard's parts come from its machine; compare across shards with "
+      "care.\n\n| |",
+      shards.size());
+  for (const auto& s : shards) put(" shard {}/{} |", s.value(nlohmann::json::json_pointer("/shard/index"), 0),
+        s.value(nlohmann::json::json_pointer("/shard/count"), 0));
+  put("\n|---|");
+  for (size_t k = 0; k < shards.size(); ++k) put("---|");
+  put("\n");
+  const auto row = [&](const char* name, const std::function<std::string(const nlohmann::json&)>& cell) {
+    put("| {} |", name);
+    for (const auto& s : shards) put(" {} |", table_cell(cell(s)));
+    put("\n");
+  };
+  for (const char* k : kFields)
+    row(k, [k](const nlohmann::json& s) { return s.contains(k) ? json_text(s[k]) : std::string(kNoData); });
+  row("parts", [](const nlohmann::json& s) {
+    const auto ran = s.value("ran", std::vector<std::string>{});
+    return ran.empty() ? std::string(kNoData) : fmt::format("{}", fmt::join(ran, ", "));
+  });
+  row("command", [](const nlohmann::json& s) { return "`" + s.value("command", "?") + "`"; });
+  row("date", [](const nlohmann::json& s) { return s.value("date", "?"); });
+  put("\n");
+}
+
+// What the report was asked to leave out, or could not run (run.json's "left_out", its own and its
+// shards'): a section that is missing says why.
+void put_left_out(MarkdownBuffer& put, const nlohmann::json& run) {
+  std::vector<std::string> lines;
+  const auto take = [&](const nlohmann::json& record) {
+    for (const auto& l : record.value("left_out", std::vector<std::string>{})) add_once(lines, l);
+  };
+  take(run);
+  for (const auto& s : run.value("shards", nlohmann::json::array())) take(s);
+  if (lines.empty()) return;
+  put("**Left out of this report**:\n\n");
+  for (const auto& l : lines) put("- {}\n", l);
+  put("\n");
+}
+
 }  // namespace
 
 EngineRole role_of(const ReportInputs& in, const std::string& engine) {
@@ -502,11 +758,14 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.matches.push_back(read_match_file(f.string()));
     } else if (name.starts_with("sweep-")) {
       in.sweeps.push_back(read_sweep_file(f.string()));
+      mark_pareto(in.sweeps.back().points);  // by today's rule, whatever rule wrote the file
     } else if (name.starts_with("stress-")) {
       in.frontiers.push_back(read_frontier_file(f.string()));
     } else {
-      for (auto& r : read_results_file(f.string()))
+      for (auto& r : read_results_file(f.string())) {
+        in.result_files.emplace(r.scene, "results/" + name);
         (r.seed_offset == 0 ? in.results : in.placements).push_back(std::move(r));
+      }
     }
   }
   // The equal-accuracy scenes in the suite's order (run.json's parts), then any others by name.
@@ -532,15 +791,16 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
       "the metrics are computed by the harness from sampled states, never taken from an engine.\n\n");
   put("Regenerate with `scripts/report` (`scripts/report --full` for the complete evidence). This report: `{}`, {} "
       "suite, {}.\n\n",
-      run.value("command", "?"), run.value("suite", "quick"), run.value("date", "?"));
+      run.contains("merge") ? run["merge"].value("command", "?") : run.value("command", "?"), run.value("suite", "quick"),
+      run.contains("merge") ? run["merge"].value("date", "?") : run.value("date", "?"));
 
   put("{}", summary_section(in, figures));
+  put_left_out(put, run);
   put("{}", accuracy_section(in, figures));
-  put("## Machine and build\n\n| | |\n|---|---|\n");
-  for (const char* k : {"cpu", "cores", "os", "compiler", "build_type", "flags"})
-    if (run.contains(k)) put("| {} | {} |\n", k, json_text(run[k]));
+  put_machines(put, run);
   put("\nTimes are engine step time only (reading states and computing metrics excluded), one run each on a shared "
-      "machine: read the ratios, not the nanoseconds.\n\n");
+      "machine: read the ratios, not the nanoseconds. In each scene's table, {}\n\n",
+      kBestNote);
 
   // Scenes in the suite's order (run.json), then any others in file order.
   std::vector<std::string> scene_order = run.value("scenes", std::vector<std::string>{});
@@ -553,42 +813,22 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   for (const auto& scene : scene_order) {
     const auto& rows = by_scene[scene];
     const Result& first = *rows.front();
-    // A metric no run of the scene has (the slip of a scene that does not rotate) is no column.
-    std::vector<Column> cols = columns();
-    std::erase_if(cols, [&](const Column& c) {
-      return c.metric && std::none_of(rows.begin(), rows.end(), [&](const Result* r) { return !c.metric->get(*r).is_null(); });
-    });
-    put("## Scene `{}`\n\n{} balls, dt = {} s, {} steps (`{}`).\n\n", scene, first.n, first.dt, first.steps,
-        display_path(first.scene_source));
-    put("| engine | profile |");
-    for (const auto& c : cols) put(" {} |", c.header);
-    put("\n|---|---|");
-    for (size_t k = 0; k < cols.size(); ++k) put("---|");
-    put("\n");
-    for (const Result* r : rows) {
-      put("| {} {} | {} |", r->engine, r->engine_version, r->profile);
-      // A run that made no step (refused, or crashed at its start) has no figures: "-", not zeros.
-      const bool ran = r->steps_done > 0;
-      for (const auto& c : cols) {
-        std::string cell = ran || &c == &cols.front() ? c.text(*r) : "-";
-        if (c.value && r->status == RunStatus::ok) {
-          double best = HUGE_VAL;
-          for (const Result* o : rows)
-            if (o->status == RunStatus::ok) best = std::min(best, c.value(*o));
-          if (rows.size() > 1 && c.value(*r) == best) cell = "**" + cell + "**";
-        }
-        put(" {} |", cell);
-      }
-      put("\n");
-    }
+    const SceneView view = scene_view(rows);
+    const std::vector<Column> cols = scene_columns(rows, view);
+    put("## Scene `{}`\n\n{}, dt = {} s, {} steps (`{}`){}.\n\n", scene, balls(first.n), first.dt, first.steps,
+        display_path(first.scene_source), view.features ? "; " + features_text(*view.features) : "");
+    put_initial_overlap(put, rows);
+    put_scene_table(put, rows, cols, Place::table, true);
     for (const Result* r : rows)
       if (r->reference.available && r->reference.reference != "exact") {
         put("\nError against {} (a converged run: `exact` cannot run this scene).\n", r->reference.reference);
         break;
       }
-    put("\nBest value in each ranked column in bold (smaller is better; the energy columns are not ranked: with "
-        "restitution below 1 energy is lost by design, and error against the exact reference is what ranks "
-        "accuracy).\n\n");
+    put("\n{}The other columns: [appendix](#appendix-{}); every run's whole result: `{}`.\n\n",
+        view.chaotic ? "Chaotic: every engine parts from the reference, so the horizon (the time it stays within a "
+                       "tenth of a radius of it) ranks accuracy here, and the final error (in the appendix) does not. "
+                     : "",
+        anchor(scene), results_file(in, scene));
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
     put_viewer(put, figures, scene);
@@ -620,14 +860,12 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("| engine | version | profiles | limits that shape its results |\n|---|---|---|---|\n");
   for (const auto& e : engine_order)
     put("| {} | {} | {} | {} |\n", e, versions[e], fmt::join(profiles[e], ", "), table_cell(limits[e]));
-  put("\n## Engine settings\n\nThe effective settings of every run, as each engine reported them.\n\n");
-  std::map<std::string, bool> shown;
-  for (const auto& r : in.results) {
-    const std::string key = r.engine + " " + r.profile + " " + r.settings.dump();
-    if (shown[key]) continue;
-    shown[key] = true;
-    put("- `{}` (profile {}, scene {}): `{}`\n", r.engine, r.profile, r.scene, r.settings.dump());
-  }
+  std::vector<std::string> settings_links;
+  for (const auto& scene : scene_order)
+    settings_links.push_back(fmt::format("[{0}]({0})", results_file(in, scene)));
+  put("\n## Engine settings\n\nThe effective settings of every run, as its engine reported them (every knob, defaults "
+      "included), are the `settings` of its row in the scene's results file: {}.\n",
+      fmt::join(settings_links, ", "));
   const MetricsConfig cfg = in.results.empty() ? MetricsConfig{} : in.results.front().metrics_config;
   put("\n## Glossary\n\n");
   for (const MetricDef& m : metric_catalog())
@@ -650,6 +888,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("- **diverged@k**: the state became non-finite, or the energy exceeded {} times its initial value, at step k; "
       "metrics cover the steps before.\n", cfg.divergence_energy_factor);
   put("\nEvery metric of a run's JSON, with its unit and definition: `ballbench list --metrics`.\n");
+  if (!scene_order.empty()) put_appendix(put, scene_order, by_scene);
   return fmt::to_string(put.out);
 }
 

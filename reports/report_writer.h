@@ -23,6 +23,7 @@ struct ReportInputs {
   std::vector<Result> results;       // every other results/*.json, in file order: the scene's own placement
   std::vector<Result> placements;    // the same files' runs of further placements (seed_offset > 0)
   std::vector<MatchResult> matches;  // results/match-*.json (`ballbench match`), in the suite's order
+  std::map<std::string, std::string> result_files;  // scene -> its results file, relative to the report
   std::vector<SweepResult> sweeps;   // results/sweep-*.json (`ballbench sweep`)
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)

@@ -65,6 +65,20 @@ void expect_one_line_error(const Outcome& o, const std::string& fragment) {
   EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << "more than one line: " << o.err;
 }
 
+// Every command takes --quiet: none refuses it as an unknown option (the bad input after it is what
+// each one reports).
+TEST(Cli, EveryCommandTakesQuiet) {
+  EXPECT_EQ(cli("list --quiet").status, 0);
+  for (const char* command : {"run --scene no-such-scene --engine home", "report --engine no-such-engine",
+                              "sweep --scene no-such-scene --engine home", "stress --scene no-such-scene --engine home",
+                              "match --scene no-such-scene --engine home", "merge --out x no-such-shard.json",
+                              "view no-such-run.json", "regress --baseline no-such-baseline.json"}) {
+    const Outcome o = cli(std::string(command) + " --quiet");
+    EXPECT_EQ(o.status, 2) << command << ": " << o.err;
+    EXPECT_EQ(o.err.find("--quiet"), std::string::npos) << command << ": " << o.err;
+  }
+}
+
 TEST(Cli, MissingSceneFile) {
   expect_one_line_error(cli("run --scene /nonexistent/x.toml --engine home"), "/nonexistent/x.toml: scene file not found");
 }

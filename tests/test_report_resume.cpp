@@ -230,7 +230,8 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
     EXPECT_NE(md.find("**Trajectory viewer**: [figures/" + std::string(scene) + "-viewer.html]"), std::string::npos) << scene;
   }
   EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
-  EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench
+  EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench, and the report says so
+  EXPECT_NE(md.find("**Left out of this report**:\n\n- the scaling and harness overhead sections"), std::string::npos);
 
   // As if the report had stopped during seed-bowl: its file is not there yet.
   fs::remove(results("seed-bowl"));
@@ -297,7 +298,11 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
 TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   const fs::path one = root_ / "shard1", two = root_ / "shard2", merged = root_ / "merged";
   for (const auto& [dir, which] : {std::pair{one, "1/2"}, std::pair{two, "2/2"}}) {
-    ASSERT_EQ(command("report --no-bench --engine " + cheap_engines() + " --seeds 2 --out " + dir.string() + " --shard " + which), 0) << err_;
+    ASSERT_EQ(command("report --quiet --no-bench --engine " + cheap_engines() + " --seeds 2 --out " + dir.string() +
+                      " --shard " + which),
+              0)
+        << err_;
+    EXPECT_EQ(err_, "") << which;  // --quiet: no progress
     EXPECT_FALSE(fs::exists(dir / "REPORT.md")) << which;
   }
   EXPECT_EQ(command("merge --out " + merged.string() + " " + one.string()), 2);
@@ -314,6 +319,10 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
                            "## Stability frontier: `seed-box`", "## Restitution calibration"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_NE(slurp(merged / "results" / "run.json").find("\"shards\""), std::string::npos);
+  // The merge and each shard's machine, parts and command, and what every shard left out.
+  for (const char* want : {"This report: `", " merge --out ", "| | shard 2/2 | shard 1/2 |", "| cpu |", "| parts | ",
+                           "--shard 2/2` |", "**Left out of this report**"})
+    EXPECT_NE(md.find(want), std::string::npos) << want;
 }
 
 }  // namespace

@@ -37,6 +37,41 @@ TEST(SweepPareto, KeepsThePointsNoOtherBeatsInBothTimeAndError) {
   for (size_t k = 0; k < ps.size(); ++k) EXPECT_EQ(ps[k].pareto, want[k]) << k;
 }
 
+TEST(SweepFiles, APointNotMeasuredHasNullErrorsAndCountsAndEmptyCells) {
+  SweepResult s;
+  s.scene = "box";
+  SweepPoint p;
+  p.engine = "lazy", p.profile = "default", p.knob = "dt", p.value = 0.01, p.dt = 0.01;
+  p.status = RunStatus::unsupported, p.measured = false;
+  s.points = {p};
+  const nlohmann::json j = to_json(s);
+  for (const char* key : {"pos_rms", "vel_rms", "energy_rel", "tunnelling", "sticking"})
+    EXPECT_TRUE(j["points"][0][key].is_null()) << key;
+  EXPECT_FALSE(sweep_from_json(j).points[0].measured);
+  EXPECT_NE(sweep_csv(s).find("unsupported,nan,nan,nan,nan,,,,,,0\n"), std::string::npos) << sweep_csv(s);
+}
+
+// Two settings whose timing repeats overlap are equally fast: the front keeps both, whichever
+// median is lower; one faster beyond the noise and as accurate beats the other.
+TEST(SweepPareto, RanksTimingsOnlyBeyondTheNoise) {
+  const auto timed = [](double err, std::vector<double> times) {
+    SweepPoint p;
+    p.engine = "a", p.profile = "default", p.pos_rms = err, p.engine_s = std::move(times);
+    return p;
+  };
+  std::vector<SweepPoint> ps = {timed(0.10, {1.0, 1.2, 1.4}),   // kept
+                                timed(0.10, {1.1, 1.3, 1.5}),   // as accurate, slower median within the noise: kept
+                                timed(0.20, {0.5, 0.6, 0.7}),   // less accurate, faster beyond the noise: kept
+                                timed(0.15, {1.0, 1.1, 1.2}),   // less accurate, faster only within the noise: beaten
+                                timed(0.20, {2.0, 2.1, 2.2})};  // less accurate and slower beyond the noise: beaten
+  mark_pareto(ps);
+  EXPECT_TRUE(ps[0].pareto);
+  EXPECT_TRUE(ps[1].pareto);
+  EXPECT_TRUE(ps[2].pareto);
+  EXPECT_FALSE(ps[3].pareto);
+  EXPECT_FALSE(ps[4].pareto);
+}
+
 TEST(SweepPareto, MedianOfEvenAndOddCounts) {
   EXPECT_EQ(median({3, 1, 2}), 2);
   EXPECT_EQ(median({4, 1, 3, 2}), 2.5);
@@ -155,9 +190,14 @@ TEST_F(SweepCli, ThreeShardsMergedEqualTheWholeSweepButForTiming) {
     EXPECT_EQ(std::tie(p.engine, p.profile, p.knob, p.value, p.dt, p.steps, p.settings, p.status, p.error),
               std::tie(q.engine, q.profile, q.knob, q.value, q.dt, q.steps, q.settings, q.status, q.error))
         << where;
-    EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
-              std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
-        << where;
+    // A point not measured (refused) has no figures in either: null, read back as NaN.
+    EXPECT_EQ(p.measured, q.measured) << where;
+    if (p.measured)
+      EXPECT_EQ(std::tie(p.pos_rms, p.vel_rms, p.energy_rel, p.tunnelling, p.sticking),
+                std::tie(q.pos_rms, q.vel_rms, q.energy_rel, q.tunnelling, q.sticking))
+          << where;
+    else
+      EXPECT_TRUE(std::isnan(p.pos_rms) && std::isnan(q.pos_rms)) << where;
     EXPECT_EQ(q.engine_s.size(), q.status == RunStatus::ok ? 1u : 0u) << where;  // a refused point is not timed
   }
   EXPECT_TRUE(fs::exists(dir_ / "merged.csv"));

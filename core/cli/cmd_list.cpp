@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "progress.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "metrics/catalog.h"
@@ -73,6 +74,7 @@ void add_list(CLI::App& app) {
   auto settings = std::make_shared<std::string>();
   cmd->add_option("--settings", *settings, "print ENGINE's settings instead: key, default, values, unit, what it does")
       ->type_name("ENGINE");
+  add_quiet(cmd, Progress::quiet);
   cmd->callback([metrics, settings] {
     // A stop request ends a wait for an engine's handshake at once (interrupt.h), and the command
     // with the signal's status.

@@ -80,7 +80,7 @@ void add_match(CLI::App& app) {
   cmd->add_option("--shard", a->shard,
                   "search only shard I of N of the engine and profile pairs (I/N; join the shards' JSON files "
                   "with `ballbench merge`)");
-  cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
+  add_quiet(cmd, a->options.quiet);
   cmd->callback([a] { match(*a); });
 }
 

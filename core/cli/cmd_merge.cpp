@@ -9,10 +9,12 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "progress.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "match.h"
+#include "run_engines.h"
 #include "sweep_result.h"
 
 namespace ballbench::cli {
@@ -153,8 +155,13 @@ void merge_reports(const MergeArgs& a) {
       move_file_into_place(tmp, target, "a merged result file");
       copied.push_back(name);
     }
+  // The plan is the shards'; the machines, commands and dates are each shard's (shards), and the
+  // merge's own (merge). A merged record has no machine of its own: no shard's stands for all.
   nlohmann::json context = first.context;
-  context.erase("shard");
+  for (const char* k : {"shard", "ran", "left_out", "cpu", "cores", "os", "compiler", "build_type", "flags", "command", "date"})
+    context.erase(k);
+  const nlohmann::json merging = run_context();
+  context["merge"] = {{"command", merging.at("command")}, {"date", merging.at("date")}};
   context["shards"] = nlohmann::json::array();
   for (const auto& s : shards) context["shards"].push_back(s.context);
   write_file_atomically((results / "run.json").string(), context.dump(2) + "\n", "the run record");
@@ -189,6 +196,7 @@ void add_merge(CLI::App& app) {
   cmd->add_option("shards", a->shards, "every shard's sweep JSON file, or every shard's report folder")->required();
   cmd->add_option("--out", a->out, "the merged sweep's JSON file, or the merged report's folder")->required();
   cmd->add_option("--csv", a->csv, "sweeps: the merged CSV (default: --out with .csv)");
+  add_quiet(cmd, Progress::quiet);
   cmd->callback([a] { merge(*a); });
 }
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "progress.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -201,7 +202,7 @@ void regress(const RegressArgs& a) {
     for (const Result& r : run_all(scene, engines, "", options, true, Isolation{true, a.timeout_s}))
       runs.push_back(record(r));
     if (interrupt_signal()) break;
-    fmt::print(stderr, "regress: ran {}\n", scene.name);
+    if (!Progress::quiet) fmt::print(stderr, "regress: ran {}\n", scene.name);
   }
   // A suite cut short is compared with nothing and written nowhere.
   exit_if_interrupted(fmt::format("the suite was cut short after {} run(s): nothing compared{}", runs.size(),
@@ -272,6 +273,7 @@ void add_regress(CLI::App& app) {
   cmd->add_flag("--update", a->update, "rewrite the baseline from this run (after an intended change)")->excludes(set);
   cmd->add_option("--timeout", a->timeout_s, "seconds each run may take before it is killed (default 120)")
       ->check(kPositiveNumber);
+  add_quiet(cmd, Progress::quiet);
   cmd->callback([a] { regress(*a); });
 }
 

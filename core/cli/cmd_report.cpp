@@ -23,6 +23,7 @@
 #include "interrupt.h"
 #include "match.h"
 #include "report_suite.h"
+#include "progress.h"
 #include "registry.h"
 #include "restitution_calibration.h"
 #include "report_writer.h"
@@ -55,7 +56,14 @@ struct ReportArgs {
   int seeds = 0;             // placements of each seed scene; 0: the suite's
   std::string engines = "all";  // the engines compared (parse_engine_list)
   std::string suites;           // the suites file (default: report_suites_file())
+  bool quiet = false;           // no progress on stderr (what is skipped or left out is still said)
 };
+
+// A progress line on stderr, unless --quiet.
+template <class... Args>
+void progress_line(fmt::format_string<Args...> f, Args&&... args) {
+  if (!Progress::quiet) fmt::print(stderr, f, std::forward<Args>(args)...);
+}
 
 // The report's parts in run order, each a results file (or, for "bench", the step and harness
 // benchmarks together, so their ratios come from one machine). A shard runs the parts it takes.
@@ -118,15 +126,18 @@ std::string default_bench_binary(const std::string& name) {
 // --benchmark_out, the processes' outputs joined); its console table goes to stderr as progress.
 // `found` says whether an output holds what the filter asked for. A missing binary is reported and
 // the section skipped ("`section` skipped: ..."); a filter whose run failed or found nothing is
-// reported and left out, and the other filters' results stand.
-void run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
+// reported and left out, and the other filters' results stand. Returns what was left out, for the
+// report to say (one line each).
+std::vector<std::string> run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
                double budget_s, const std::string& path, const std::string& section,
                const std::function<bool(const BenchResults&)>& found) {
+  std::vector<std::string> left_out;
   if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
     fmt::print(stderr, "{} skipped: no benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", section, bin);
-    return;
+    return {fmt::format("the {} section: no benchmark binary at {} (built without -DBALLBENCH_BENCH=ON)", section,
+                        fs::path(bin).filename().string())};
   }
-  fmt::print(stderr, "running {} for the {} section\n", bin, section);
+  progress_line("running {} for the {} section\n", bin, section);
   // One process per filter, so a filter that runs one benchmark alone (the 10^6 bowl) has its peak
   // resident set to itself.
   nlohmann::json joined;
@@ -134,8 +145,9 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     const std::string& filter = filters[k];
     const std::string tmp = create_temp_beside(path, "the benchmark output");  // this report's own
     const std::string cmd =
-        fmt::format("'{}' --benchmark_filter='{}' {} --budget_s={} --benchmark_out='{}' --benchmark_out_format=json 1>&2",
-                    bin, filter, min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", budget_s, tmp);
+        fmt::format("'{}' --benchmark_filter='{}' {} --budget_s={} --benchmark_out='{}' --benchmark_out_format=json {}",
+                    bin, filter, min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", budget_s, tmp,
+                    Progress::quiet ? ">/dev/null 2>&1" : "1>&2");
     const int rc = std::system(cmd.c_str());
     // std::system ignores SIGINT while it waits; a benchmark ended by the terminal's SIGINT (or a
     // SIGTERM) is this report's interrupt too, raised here so that interrupt.h sees it.
@@ -143,7 +155,7 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     if (sig == SIGINT || sig == SIGTERM || interrupt_signal()) {
       fs::remove(tmp);
       if (!interrupt_signal()) std::raise(sig);
-      return;
+      return left_out;
     }
     std::string why = rc == 0            ? ""
                       : WIFEXITED(rc)    ? fmt::format("it failed (exit status {})", WEXITSTATUS(rc))
@@ -157,6 +169,7 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
     if (!why.empty()) {  // this filter's part is left out; the others' stand
       fmt::print(stderr, "{}: part skipped: {} --benchmark_filter='{}': {}; its output is in {}\n", section, bin, filter,
                  why, tmp);
+      left_out.push_back(fmt::format("part of the {} section, --benchmark_filter='{}': {}", section, filter, why));
       continue;
     }
     const nlohmann::json part = parse_json_file(tmp, "Google Benchmark JSON");
@@ -166,9 +179,10 @@ void run_bench(const std::string& bin, const std::vector<std::string>& filters, 
   }
   if (joined.is_null()) {
     fmt::print(stderr, "{} skipped: no part of it ran\n", section);
-    return;
+    return left_out;
   }
   write_file_atomically(path, joined.dump(2) + "\n", "the benchmark results");
+  return left_out;
 }
 
 }  // namespace
@@ -215,6 +229,7 @@ void check_report_paths(const ReportArgs& a) {
 
 void report(const ReportArgs& a) {
   install_interrupt_handlers();  // first: a stop request during the handshakes too
+  Progress::quiet = a.quiet;
   if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
     throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
   const std::string results_dir = a.out + "/results";
@@ -245,6 +260,11 @@ void report(const ReportArgs& a) {
                                     "not rewritten",
                                     results_dir, a.out));
   };
+  // What this report leaves out, said in it (run.json's "left_out").
+  std::vector<std::string> left_out;
+  if (a.no_bench)
+    left_out.push_back("the scaling and harness overhead sections, and the pipe's cost: `--no-bench` ran no "
+                       "benchmark");
   if (!a.render_only) {
     fs::create_directories(results_dir);
     // Sweeps, frontiers and matches may leave out engines whose runs are costly: each of their
@@ -258,7 +278,7 @@ void report(const ReportArgs& a) {
     // A part whose complete results are already there is reused (a report that stopped resumes).
     auto reuse = [&](const std::string& path, bool complete) {
       if (a.fresh || !complete) return false;
-      fmt::print(stderr, "reusing {} (--fresh runs it again)\n", path);
+      progress_line("reusing {} (--fresh runs it again)\n", path);
       return true;
     };
     for (const std::string& name : suite.scenes) {
@@ -274,15 +294,15 @@ void report(const ReportArgs& a) {
       // Animated and in the viewer: as many frames as a page of every run holds.
       if (contains(suite.viewer_scenes, name))
         options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
-      std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
+      std::vector<Result> runs = run_all(scene, engines, "all", options, a.quiet, isolation);
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of
       // offset 0).
       options.frames = 0;
       run_further_placements(runs, scene, seeds, [&](int k) { return load_scene(name, k); }, engines, "all", options,
-                             false, isolation);
+                             a.quiet, isolation);
       write_results_file(path, runs);
       stop_if_interrupted();
-      fmt::print(stderr, "ran {}\n", name);
+      progress_line("ran {}\n", name);
     }
     for (const std::string& name : suite.match_scenes) {
       if (!mine("match:" + name)) continue;
@@ -295,10 +315,11 @@ void report(const ReportArgs& a) {
       o.isolation = isolation;
       o.reference = reference_engine();
       o.converged_reference = converged_reference_engine();
+      o.quiet = a.quiet;
       const MatchResult m = run_match(scene, swept, o, run_context());
       write_match_files(m, path, fmt::format("{}/match-{}.csv", results_dir, name));
       stop_if_interrupted();
-      fmt::print(stderr, "matched {}\n", name);
+      progress_line("matched {}\n", name);
     }
     for (const std::string& name : suite.sweep_scenes) {
       if (!mine("sweep:" + name)) continue;
@@ -306,12 +327,13 @@ void report(const ReportArgs& a) {
       if (reuse(path, uninterrupted(path, read_sweep_file))) continue;
       SweepOptions o;
       o.repeats = 5;
+      o.quiet = a.quiet;
       o.reference = reference_engine();
       o.isolation = isolation;
       write_sweep_files(run_sweep(load_scene(name), swept, o, run_context()), path,
                         fmt::format("{}/sweep-{}.csv", results_dir, name));
       stop_if_interrupted();
-      fmt::print(stderr, "swept {}\n", name);
+      progress_line("swept {}\n", name);
     }
     for (const std::string& name : suite.stress_scenes) {
       if (!mine("stress:" + name)) continue;
@@ -321,12 +343,13 @@ void report(const ReportArgs& a) {
       StressOptions o;
       o.profile = "all";
       o.levels = suite.stress_levels;
+      o.quiet = a.quiet;
       o.reference = reference_engine();
       o.isolation = isolation;
       if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
       write_frontier_file(path, run_frontier(scene, swept, o, run_context()));
       stop_if_interrupted();
-      fmt::print(stderr, "stressed {}\n", name);
+      progress_line("stressed {}\n", name);
     }
     if (mine("calibration")) {
       const std::string path = results_dir + "/calibration.json";
@@ -335,7 +358,7 @@ void report(const ReportArgs& a) {
         o.isolation.timeout_s = suite.timeout_s;
         write_calibration_file(path, run_calibration(engines, o, run_context()));
         stop_if_interrupted();
-        fmt::print(stderr, "calibrated restitution\n");
+        progress_line("calibrated restitution\n");
       }
     }
     const std::string bench_path = results_dir + "/bench.json", harness_path = results_dir + "/harness.json";
@@ -343,15 +366,16 @@ void report(const ReportArgs& a) {
       fs::remove(bench_path), fs::remove(harness_path);
     } else if (mine("bench")) {
       const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
+      const auto also = [&](const std::vector<std::string>& lines) { left_out.insert(left_out.end(), lines.begin(), lines.end()); };
       if (!reuse(bench_path, fs::exists(bench_path)))
-        run_bench(bin, suite.bench_filters, suite.bench_min_time, suite.bench_budget_s, bench_path, "scaling",
-                  [](const BenchResults& b) { return !b.rows.empty() || !b.pipe.empty(); });
+        also(run_bench(bin, suite.bench_filters, suite.bench_min_time, suite.bench_budget_s, bench_path, "scaling",
+                       [](const BenchResults& b) { return !b.rows.empty() || !b.pipe.empty(); }));
       stop_if_interrupted();
       // The harness benchmark beside the step benchmark.
       if (!reuse(harness_path, fs::exists(harness_path)))
-        run_bench((fs::path(bin).parent_path() / "ballbench_harness_benchmark").string(), {suite.harness_filter},
-                  std::nullopt, suite.bench_budget_s, harness_path, "harness overhead",
-                  [](const BenchResults& b) { return !b.harness.empty(); });
+        also(run_bench((fs::path(bin).parent_path() / "ballbench_harness_benchmark").string(), {suite.harness_filter},
+                       std::nullopt, suite.bench_budget_s, harness_path, "harness overhead",
+                       [](const BenchResults& b) { return !b.harness.empty(); }));
       stop_if_interrupted();
     }
     nlohmann::json context = run_context();
@@ -362,7 +386,13 @@ void report(const ReportArgs& a) {
     context["parts"] = parts;
     context["engines"] = nlohmann::json::object();  // name -> version: shards of one report agree
     for (const auto& e : engine_registry()) context["engines"][e.info.name] = e.info.version;
-    if (!shard.all()) context["shard"] = {{"index", shard.index}, {"count", shard.count}};
+    if (!shard.all()) {
+      context["shard"] = {{"index", shard.index}, {"count", shard.count}};
+      nlohmann::json& ran = context["ran"] = nlohmann::json::array();
+      for (size_t k = 0; k < parts.size(); ++k)
+        if (shard.takes(k)) ran.push_back(parts[k]);
+    }
+    context["left_out"] = left_out;
     write_file_atomically(results_dir + "/run.json", context.dump(2) + "\n", "the run record");
   }
   if (!shard.all()) {
@@ -417,6 +447,7 @@ void add_report(CLI::App& app) {
                   "machine each; `ballbench merge --out DIR FOLDER...` joins the shards' --out folders and renders "
                   "REPORT.md")
       ->excludes(render_only);
+  add_quiet(cmd, a->quiet);
   cmd->callback([a] { report(*a); });
 }
 

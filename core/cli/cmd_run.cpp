@@ -216,7 +216,7 @@ void add_run(CLI::App& app) {
                   "keep about N evenly spaced frames of every ball's position in the JSON (scenes of at most 1000 "
                   "balls), for `ballbench view`")
       ->check(kPositiveCount);
-  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  add_quiet(cmd, a->quiet);
   cmd->add_flag("--no-reference", a->no_reference,
                 "do not run `exact` alongside to measure the error against it (it runs by default)");
   auto* timeout = cmd->add_option("--timeout", a->isolation.timeout_s,

@@ -72,7 +72,7 @@ void add_stress(CLI::App& app) {
                       ->check(kPositiveNumber);
   cmd->add_flag("--no-isolation", a->no_isolation, "run engines in this process (a crash then ends the whole run)")
       ->excludes(timeout);
-  cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
+  add_quiet(cmd, a->options.quiet);
   cmd->callback([a] { stress(*a); });
 }
 

@@ -86,7 +86,7 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--shard", a->shard,
                   "run only shard I of N of the sweep's points (I/N, e.g. 2/3; join the shards' JSON files with "
                   "`ballbench merge`); default: all");
-  cmd->add_flag("--quiet", a->options.quiet, "no progress on stderr");
+  add_quiet(cmd, a->options.quiet);
   cmd->callback([a] { sweep(*a); });
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "progress.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -62,6 +63,7 @@ void add_view(CLI::App& app) {
   auto* cmd = app.add_subcommand("view", "write the trajectory viewer page (HTML) for a run file of `run --frames N --json`");
   cmd->add_option("RESULTS", a->results, "a JSON file written by `ballbench run --frames N --json FILE`")->required();
   cmd->add_option("--out", a->out, "the page to write (default: RESULTS with .html for .json)")->check(kOutputFile);
+  add_quiet(cmd, Progress::quiet);
   cmd->callback([a] { view(*a); });
 }
 

@@ -18,6 +18,10 @@ void add_match(CLI::App& app);
 void add_merge(CLI::App& app);
 void add_view(CLI::App& app);
 
+// Every command's --quiet, declared here once: no progress on stderr (errors, and what a command
+// skips or leaves out, are still said).
+CLI::Option* add_quiet(CLI::App* cmd, bool& quiet);
+
 // Renders OUT/REPORT.md and OUT/figures from OUT/results (`report`, and `merge` of report shards).
 void render_report_folder(const std::string& out);
 

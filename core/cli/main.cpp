@@ -22,6 +22,8 @@ void exit_if_interrupted(const std::string& kept) {
   throw CheckFailed{128 + sig};
 }
 
+CLI::Option* add_quiet(CLI::App* cmd, bool& quiet) { return cmd->add_flag("--quiet", quiet, "no progress on stderr"); }
+
 }  // namespace ballbench::cli
 
 int main(int argc, char** argv) {

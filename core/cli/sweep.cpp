@@ -128,6 +128,7 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
     p.settings = r.settings;
     p.status = r.status;
     p.error = r.error;
+    p.measured = r.measured();
     if (options.reference) {
       p.pos_rms = r.reference.pos_rms_final, p.vel_rms = r.reference.vel_rms_final;
       p.energy_rel = r.reference.energy_rel_max;

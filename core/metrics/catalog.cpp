@@ -52,8 +52,9 @@ MetricDef field(std::string key, std::string unit, std::function<std::string(con
   return m;
 }
 
-MetricDef& shown(MetricDef& m, std::string column, std::string heading, bool ranked) {
-  m.column = std::move(column), m.heading = std::move(heading), m.ranked = ranked;
+MetricDef& shown(MetricDef& m, std::string column, std::string heading, bool ranked,
+                 MeaningfulOn meaningful = MeaningfulOn::every_scene) {
+  m.column = std::move(column), m.heading = std::move(heading), m.ranked = ranked, m.meaningful = meaningful;
   return m;
 }
 
@@ -78,7 +79,7 @@ std::vector<MetricDef> build_catalog() {
                              fixed("max over samples of |E - E0| / E0 (none when E0 = 0). Restitution below 1 loses "
                                    "energy by design, so compare engines on the same scene, not against zero"),
                              [](auto& r) -> auto& { return r.metrics.energy.max_rel_drift; }));
-    shown(m, "energy drift (max rel)", "E drift", false).regress = kReal;
+    shown(m, "energy drift (max rel)", "E drift", false, MeaningfulOn::elastic_scenes).regress = kReal;
   }
   {
     MetricDef m;
@@ -88,7 +89,7 @@ std::vector<MetricDef> build_catalog() {
       const auto& e = r.metrics.energy;
       return e.initial > 0 ? json(e.final / e.initial) : json(nullptr);
     };
-    shown(add(std::move(m)), "E final / E0", "", false);
+    shown(add(std::move(m)), "E final / E0", "", false, MeaningfulOn::inelastic_scenes);
   }
   add(field("energy.max_abs_drift", "J", fixed("max over samples of |E - E0|"),
             [](auto& r) -> auto& { return r.metrics.energy.max_abs_drift; }))
@@ -106,7 +107,7 @@ std::vector<MetricDef> build_catalog() {
                              fixed("max over samples of |P - P0|. Conserved only in open space without gravity; walls "
                                    "and gravity change it"),
                              [](auto& r) -> auto& { return r.metrics.momentum.max_abs_drift; }));
-    shown(m, "momentum drift (max abs)", "P drift", false).regress = kReal;
+    shown(m, "momentum drift (max abs)", "P drift", false, MeaningfulOn::open_space_without_gravity).regress = kReal;
   }
   add(field("angular_momentum.centre", "m",
             fixed("c, the fixed point angular momentum is taken about: the container's centre, or the initial centre "
@@ -124,7 +125,8 @@ std::vector<MetricDef> build_catalog() {
                              fixed("max over samples of |L - L0|. Friction trades orbit for spin and keeps the sum: "
                                    "conserved in open space without gravity at any friction; walls and gravity change it"),
                              [](auto& r) -> auto& { return r.metrics.angular_momentum.max_abs_drift; }));
-    shown(m, "angular momentum drift (max abs)", "L drift", false).regress = kReal;
+    shown(m, "angular momentum drift (max abs)", "L drift", false, MeaningfulOn::open_space_without_gravity).regress =
+        kReal;
   }
 
   // Slip (metrics/slip.h): only for scenes that rotate and have walls.
@@ -196,19 +198,22 @@ std::vector<MetricDef> build_catalog() {
                   fixed("the deepest overlap over every contact in every sample, divided by the radius (the smaller "
                         "one for a pair)"),
                   [](auto& r) -> auto& { return r.metrics.penetration_max; })),
-        "penetration max", "pen.max", true)
+        "penetration max", "pen.max", true, MeaningfulOn::no_scene)
       .regress = kReal;
   shown(add(field("penetration.mean", "", fixed("the mean of the same over every overlapping contact in every sample"),
                   [](auto& r) -> auto& { return r.metrics.penetration_mean; })),
-        "penetration mean", "", true)
+        "penetration mean", "", true, MeaningfulOn::no_scene)
       .regress = kReal;
-  add(field("penetration.initial", "",
-            fixed("penetration max of the first sample alone: how deep the placement starts overlapping"),
-            [](auto& r) -> auto& { return r.metrics.penetration_initial; }));
-  add(field("penetration.after_start", "",
-            fixed("penetration max over every sample after the first: how deep the engine lets balls sink (the "
-                  "accuracy spec's `overlap`)"),
-            [](auto& r) -> auto& { return r.metrics.penetration_after_start; }));
+  shown(add(field("penetration.initial", "",
+                  fixed("penetration max of the first sample alone: how deep the placement starts overlapping, the "
+                        "same for every engine"),
+                  [](auto& r) -> auto& { return r.metrics.penetration_initial; })),
+        "initial overlap", "", false, MeaningfulOn::no_scene);
+  shown(add(field("penetration.after_start", "",
+                  fixed("penetration max over every sample after the first: how deep the engine lets balls sink (the "
+                        "accuracy spec's `overlap`)"),
+                  [](auto& r) -> auto& { return r.metrics.penetration_after_start; })),
+        "penetration after start", "", true);
 
   // Whole-run figures of the final state.
   add(field("jitter", "m/s",
@@ -267,6 +272,17 @@ json::json_pointer pointer(const std::string& key) {
 
 }  // namespace
 
+bool meaningful_on(MeaningfulOn where, const SceneFeatures& f) {
+  switch (where) {
+    case MeaningfulOn::every_scene: return true;
+    case MeaningfulOn::elastic_scenes: return f.elastic;
+    case MeaningfulOn::inelastic_scenes: return !f.elastic;
+    case MeaningfulOn::open_space_without_gravity: return !f.walls && !f.gravity;
+    case MeaningfulOn::no_scene: return false;
+  }
+  return true;
+}
+
 const std::vector<MetricDef>& metric_catalog() {
   static const std::vector<MetricDef> catalog = build_catalog();
   return catalog;
@@ -282,7 +298,7 @@ std::string metric_text(const json& v) {
 
 void put_metrics(const Result& r, json& j) {
   for (const MetricDef& m : metric_catalog())
-    if (!m.key.empty()) j[pointer(m.key)] = m.get(r);
+    if (!m.key.empty()) j[pointer(m.key)] = r.measured() ? m.get(r) : json(nullptr);
 }
 
 void take_metrics(const json& j, Result& r) {

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "metrics/metrics.h"
+#include "scene.h"
 
 namespace ballbench {
 
@@ -21,6 +22,18 @@ struct Result;
 struct Tolerance {
   double rel = 0, abs = 0;
 };
+
+// The scenes on which a metric with a report column means something: there it is in the scene's
+// table, elsewhere in the scene's appendix (a momentum drift where walls and gravity push the balls
+// says nothing of the engine).
+enum class MeaningfulOn {
+  every_scene,
+  elastic_scenes,       // restitution 1: energy should be conserved
+  inelastic_scenes,     // restitution below 1: energy is lost by design
+  open_space_without_gravity,  // nothing outside the balls acts on them: momentum should be conserved
+  no_scene,             // detail behind another column: the appendix only
+};
+bool meaningful_on(MeaningfulOn where, const SceneFeatures& f);
 
 struct MetricDef {
   // Dotted path in the result JSON, also the metric's name in the baseline: "energy.final"; empty
@@ -33,6 +46,7 @@ struct MetricDef {
   std::string column;   // its column in the report's per-scene table, or "" for none
   std::string heading;  // its column in `ballbench run`'s table, or "" for none
   bool ranked = false;  // smaller is better: the report marks the best run in bold
+  MeaningfulOn meaningful = MeaningfulOn::every_scene;  // where the report's scene table shows its column
   std::optional<Tolerance> regress;  // compared by `ballbench regress`; none: not compared
   // The value of a run (null where the run has none: a drift of zero energy, the slip of a scene
   // that does not rotate), and how a value read back from JSON sets it (never called with null).
@@ -46,7 +60,8 @@ const std::vector<MetricDef>& metric_catalog();
 // figures, vectors as (x, y), null as "-".
 std::string metric_text(const nlohmann::json& value);
 
-// Writes every metric of `r` into `j` at its key (creating the enclosing objects).
+// Writes every metric of `r` into `j` at its key (creating the enclosing objects): null, each of
+// them, for a run that was not measured (Result::measured).
 void put_metrics(const Result& r, nlohmann::json& j);
 // Sets every metric of `r` found in `j`; a metric missing or null there keeps its default (result
 // files written before it existed).

@@ -38,4 +38,10 @@ void ReferenceErrorTracker::reference_failed(long step, const std::string& why) 
   m_.reference_error = why;
 }
 
+HorizonStatus horizon_status(const ReferenceErrorSummary& e) {
+  return e.horizon ? HorizonStatus::exceeded : HorizonStatus::within;
+}
+
+const char* horizon_status_text(HorizonStatus s) { return s == HorizonStatus::exceeded ? "exceeded" : "within"; }
+
 }  // namespace ballbench

@@ -26,6 +26,14 @@ struct ReferenceErrorSummary {
   std::string reference_error;
 };
 
+// What a null horizon means is told apart in the results' JSON by "horizon_status": `exceeded` (the
+// horizon holds the time), `within` (the error stayed within the tolerance at every sample
+// compared: the whole run, or up to reference_failed_step). A run without a reference has no
+// "error_vs_reference" at all.
+enum class HorizonStatus { exceeded, within };
+HorizonStatus horizon_status(const ReferenceErrorSummary& e);
+const char* horizon_status_text(HorizonStatus s);
+
 class ReferenceErrorTracker {
  public:
   // The horizon tolerance is a tenth of the mean radius: a ball that far off is visibly elsewhere.
