@@ -300,7 +300,7 @@ void report(const ReportArgs& a) {
       if (std::find(suite.unreferenced.begin(), suite.unreferenced.end(), name) == suite.unreferenced.end())
         use_reference(options);
       // The thesis's scenes, animated and in the viewer: as many frames as a page of every run holds.
-      if (name.starts_with("seed-"))
+      if (scene.animated)
         options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
       std::vector<Result> runs = run_all(scene, engines, "all", options, false, isolation);
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of
