@@ -9,15 +9,9 @@
 
 #include <fmt/format.h>
 
-#include "box2d/box2d_engine.h"
-#include "bullet/bullet_engine.h"
-#include "chipmunk/chipmunk_engine.h"
+#include "adapter_engines.h"
 #include "data_file.h"
 #include "input_error.h"
-#if BALLBENCH_HAS_LAMMPS
-#include "lammps/lammps_engine.h"
-#endif
-#include "ode/ode_engine.h"
 #include "process/engines_file.h"
 #include "process/process_engine.h"
 #include "solver/exact.h"
@@ -27,19 +21,13 @@
 namespace ballbench {
 namespace {
 
+// Our solvers, then the adapters (each folder's CMakeLists.txt registers its own).
 const std::vector<EngineEntry>& builtin_engines() {
-  static const std::vector<EngineEntry> engines = {
-      home_seed_engine(),
-      home_engine(),
-      exact_engine(),
-      box2d_engine(),
-      bullet_engine(),
-      chipmunk_engine(),
-#if BALLBENCH_HAS_LAMMPS  // adapters/lammps/CMakeLists.txt: only where liblammps is found
-      lammps_engine(),
-#endif
-      ode_engine(),
-  };
+  static const std::vector<EngineEntry> engines = [] {
+    std::vector<EngineEntry> all = {home_seed_engine(), home_engine(), exact_engine()};
+    for (EngineEntry& e : adapter_engines()) all.push_back(std::move(e));
+    return all;
+  }();
   return engines;
 }
 

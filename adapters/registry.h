@@ -1,6 +1,6 @@
 #pragma once
 // Every engine the harness knows: our own solvers and the adapters (adding one is one folder under
-// adapters/ and one line in registry.cpp), then the external engines of the engines files
+// adapters/ whose CMakeLists.txt registers it: adapters/CMakeLists.txt), then the external engines of the engines files
 // (adapters/process/engines_file.h): the project's engines.toml and one a user passes with
 // --engines. The registry is built once, on first use; an external engine's process is started
 // for its handshake only when its entry is first looked up.

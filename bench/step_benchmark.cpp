@@ -49,56 +49,6 @@
 namespace ballbench::bench {
 namespace {
 
-// Largest ball count per engine: home-seed is O(n^2) by design; the rest stop at 10^5 except
-// home, which the scaling target takes to 10^6.
-// ODE's stock profile uses its hash space, whose cost per ball grows with n (adapters/ode/README.md:
-// 49 us per ball-step at 10^4): 10^5 would take minutes per benchmark.
-int max_balls(const std::string& engine, const std::string& profile) {
-  if (engine == "home-seed") return 1000;
-  // Engines in other processes (adapters/process/, the Node engines): 10^3, as each costs a process
-  // start and tens of microseconds per ball-step, which the report's bench run would pay many times.
-  if (!is_builtin_engine(engine)) return 1000;
-  if (engine == "home") return 1'000'000;
-  // LAMMPS steps thousands of DEM sub-steps per step (adapters/lammps/README.md): 10^4 at most, where
-  // one step already takes seconds.
-  if (engine == "lammps") return 10'000;
-  if (engine == "ode" && profile == "stock") return 10'000;
-  return 100'000;
-}
-
-// Settings a benchmark gives an engine on top of its profile: LAMMPS refuses the scaled scenes'
-// speeds under its default sub-step cap (5000 per step; the gas needs 8 000 - 9 000), so its rows raise
-// the cap to time them; a bowl whose free fall needs more than that is refused with the figure.
-nlohmann::json bench_settings(const std::string& engine) {
-  if (engine == "lammps") return {{"max_substeps", 20'000}};
-  return nlohmann::json::object();
-}
-
-// Largest ball count of the piled scenes (the settled pile, and the fluid, which piles up) per
-// engine: ODE's tuned profile steps with dWorldStep, a dense LCP over every contact, whose cost
-// grows with the cube of the contacts (a settled pile of 100 balls: 87 ms a step; of 1000: no step
-// within minutes), and the budget is checked between steps.
-// The fluid starts apart and diverges for ODE within 20 steps at 1000 balls, so that count stays.
-int max_piled_balls(const std::string& engine, const std::string& profile, int largest, int ode_tuned_largest) {
-  if (engine == "ode" && profile == "tuned") return ode_tuned_largest;
-  return std::min(largest, max_balls(engine, profile));
-}
-
-// Largest ball count of the scaled gas and bowl: none for home's soft profile, whose rows are the
-// piles' (it refuses the gas, which has no gravity; the bowl early in its pour is the default
-// profile's case).
-int max_free_balls(const std::string& engine, const std::string& profile) {
-  if (engine == "home" && profile == "soft") return 0;
-  return max_balls(engine, profile);
-}
-
-// Largest settled pile: 10^4 balls, and 10^6 for home's soft profile, the path for piles, which the
-// settled target takes there.
-int max_settled_balls(const std::string& engine, const std::string& profile) {
-  if (engine == "home" && profile == "soft") return 1'000'000;
-  return max_piled_balls(engine, profile, 10'000, 100);
-}
-
 // Current resident set (bytes), from /proc/self/statm.
 double resident_bytes() {
   long pages = 0, resident = 0;
@@ -274,25 +224,24 @@ void register_benchmarks() {
     benchmark::AddCustomContext("engine." + e.info.name, e.info.version);
     for (const auto& profile : e.info.profiles)
       for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
-        for (int n = 10; n <= max_free_balls(e.info.name, profile); n *= 10)
+        for (int n = 10; n <= e.info.bench.for_profile(profile).free_balls; n *= 10)
           add(fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n), &e, profile,
-              kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, bench_settings(e.info.name))
+              kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, e.info.bench.settings)
               ->MinTime(0.2);
   }
-  // A pile at rest (settled_pile.h), 10^2 .. 10^4 balls for every engine (home's soft profile to
-  // 10^6), and the fluid, 10^3 .. 10^5 (home-seed to 10^3). Not `exact`: an event-driven solver
-  // without a resting contact model, it does not finish a step of a pile at rest (100 balls: no
-  // step in 100 s).
+  // A pile at rest (settled_pile.h) from 10^2 balls, and the fluid from 10^3, each to the engine's
+  // sizes (EngineInfo::bench).
   for (const auto& e : engine_registry())
     for (const auto& profile : e.info.profiles) {
-      // Not engines in other processes, nor LAMMPS: settling a pile takes them most of the budget (see
-      // max_balls), and the fluid's 300 steps of thousands of sub-steps each far more.
-      if (e.info.name == "exact" || e.info.costly_runs) continue;
-      for (int n = 100; n <= max_settled_balls(e.info.name, profile); n *= 10)
+      // Not engines whose every run is costly (engines in other processes, LAMMPS): settling a pile
+      // takes them most of the budget, and the fluid's 300 steps of thousands of sub-steps each far more.
+      if (e.info.costly_runs) continue;
+      const BenchSizes& sizes = e.info.bench.for_profile(profile);
+      for (int n = 100; n <= sizes.settled_balls; n *= 10)
         add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n,
             {.settle = true}, nlohmann::json::object())
             ->MinTime(0.2);
-      for (int n = 1000; n <= max_piled_balls(e.info.name, profile, 100'000, 1000); n *= 10)
+      for (int n = 1000; n <= sizes.fluid_balls; n *= 10)
         add(fmt::format("step/{}/{}/fluid/{}", e.info.name, profile, n), &e, profile, fluid_scene, n,
             {.warm_up = 0, .check_divergence = true},
             nlohmann::json::object())

@@ -2,6 +2,7 @@
 // The one door between the harness and a solver: our own solvers and every adapter implement it.
 // An engine never reports metrics; the harness computes them from the states it reads back.
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -98,6 +99,25 @@ struct SettingInfo {
   std::string doc;               // one line
 };
 
+// How large the step benchmark (bench/step_benchmark.cpp) makes each kind of scene for an engine:
+// ball counts go up by tenfold to these (0: the engine has no rows of that kind). An engine's
+// limits are its own: what its cost per ball-step or its solver allows in a benchmark's budget.
+struct BenchSizes {
+  int free_balls = 100'000;    // the scaled gas and bowl, from 10
+  int fluid_balls = 100'000;   // the fluid (it piles up), from 1000
+  int settled_balls = 10'000;  // a pile at rest, from 100
+};
+
+struct BenchLimits {
+  BenchSizes sizes;                                // every profile's, unless listed below
+  std::map<std::string, BenchSizes> profile_sizes;  // profiles that differ
+  nlohmann::json settings = nlohmann::json::object();  // added to the profile in the gas and bowl rows
+  const BenchSizes& for_profile(const std::string& profile) const {
+    const auto it = profile_sizes.find(profile);
+    return it == profile_sizes.end() ? sizes : it->second;
+  }
+};
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
@@ -112,6 +132,7 @@ struct EngineInfo {
   // Each run costs far more than its steps: a process to start, thousands of DEM sub-steps per
   // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
   bool costly_runs = false;
+  BenchLimits bench;  // the step benchmark's sizes and settings for it
   // Why the engine cannot run a scene that its capabilities allow, judged from the scene alone
   // (say, friction under gravity among several balls, where `exact` has no closed form), or "";
   // unsupported_reason puts "NAME cannot run scene 'S': " before it.

@@ -29,7 +29,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
     throw InputError(fmt::format("{}: no suite [{}] (suites: {})", path, name, fmt::join(names, ", ")));
   }
   TableReader r(*t, path, name);
-  r.check_keys({"scenes", "viewer_scenes", "unreferenced", "match_scenes", "match_budget_s", "sweep_scenes",
+  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget_s", "sweep_scenes",
                 "stress_scenes", "stress_levels", "seeds", "bench_filters", "bench_min_time", "bench_budget_s",
                 "harness_filter", "timeout_s", "costly_engines"});
   ReportSuite s;
@@ -54,9 +54,8 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
     return int(v);
   };
   s.scenes = scenes("scenes");
-  s.viewer_scenes = scenes("viewer_scenes");
   s.unreferenced = scenes("unreferenced");
-  for (const char* key : {"viewer_scenes", "unreferenced"})
+  for (const char* key : {"unreferenced"})
     for (const auto& v : r.strings(key, {}))
       if (std::find(s.scenes.begin(), s.scenes.end(), v) == s.scenes.end())
         r.fail(r.node(key), key, fmt::format("'{}' is not one of the suite's scenes", v));

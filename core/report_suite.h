@@ -9,7 +9,6 @@ namespace ballbench {
 struct ReportSuite {
   std::string name;                         // "quick", "full"
   std::vector<std::string> scenes;          // a comparison table each, every engine and profile
-  std::vector<std::string> viewer_scenes;   // of those, animated and in the trajectory viewer
   std::vector<std::string> unreferenced;    // of those, run without a reference
   std::vector<std::string> match_scenes;    // equal accuracy and its work-precision fronts
   double match_budget_s = 90;               // one engine and profile's search (s)

@@ -59,6 +59,7 @@ struct Scene {
   RequestedMetrics metrics;
   SceneAccuracy accuracy;      // its [accuracy] table, on top of its class's default spec (accuracy_spec.h)
   bool allow_overlap = false;  // balls may start overlapping (the thesis's random placement does)
+  bool animated = false;       // the report animates its runs and puts them in the viewer (the thesis's scenes)
   Container container;
   Eigen::VectorXd radius;      // (n, m)
   Eigen::VectorXd mass;        // (n, kg)

@@ -355,7 +355,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
   top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction", "inertia",
-                  "allow_overlap", "container", "ball", "random", "lattice", "metrics", "accuracy", "settings"});
+                  "allow_overlap", "animated", "container", "ball", "random", "lattice", "metrics", "accuracy", "settings"});
 
   Scene s;
   s.source = source;
@@ -394,6 +394,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
                            did_you_mean(inertia, std::vector<std::string>{"disk", "sphere"})));
   }
   s.allow_overlap = top.boolean("allow_overlap", false);
+  s.animated = top.boolean("animated", false);
 
   if (const toml::node* c = top.node("container")) {
     if (!c->is_table()) top.fail(c, "container", "expected a table [container]");

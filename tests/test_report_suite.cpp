@@ -52,8 +52,8 @@ TEST_F(BadSuite, EachProblemIsOneLineNamingTheField) {
   EXPECT_NE(error_of("[quick]\nscenez = []\n").find(":2: quick.scenez: unknown key"), std::string::npos);
   EXPECT_NE(error_of("[quick]\nmatch_budget_s = -1\n").find("quick.match_budget_s: must be above 0, got -1"),
             std::string::npos);
-  EXPECT_NE(error_of("[quick]\nscenes = [\"pile\"]\nviewer_scenes = [\"seed-box\"]\n")
-                .find("quick.viewer_scenes: 'seed-box' is not one of the suite's scenes"),
+  EXPECT_NE(error_of("[quick]\nscenes = [\"pile\"]\nunreferenced = [\"seed-box\"]\n")
+                .find("quick.unreferenced: 'seed-box' is not one of the suite's scenes"),
             std::string::npos);
   EXPECT_NE(error_of("[quick]\nscenes = \"seed-box\"\n").find("quick.scenes: expected an array of strings, got a string"),
             std::string::npos);

@@ -87,6 +87,11 @@ EngineEntry lammps_engine() {
   info.caps.any_restitution = true;  // hooke's restitution does not depend on the impact speed (no threshold)
   info.caps.deterministic = true;
   info.costly_runs = true;
+  // Thousands of DEM sub-steps per step (README.md): 10^4 balls at most, where one step already
+  // takes seconds. The scaled scenes' speeds need more sub-steps than the default cap (5000 per
+  // step; the gas 8 000 - 9 000), so its rows raise the cap; a bowl whose fall needs more is refused.
+  info.bench.sizes = {.free_balls = 10'000, .fluid_balls = 10'000, .settled_balls = 10'000};
+  info.bench.settings = {{"max_substeps", 20'000}};
   info.profiles = {"hooke", "hertz"};
   info.settings = lammps_settings_table().describe();
   info.sweep_knobs = {{"contact_steps", nlohmann::json::array({20, 50, 100})},

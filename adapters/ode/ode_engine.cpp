@@ -269,6 +269,13 @@ EngineEntry ode_engine() {
   info.caps.continuous_collision = false;  // discrete overlap tests only: fast balls tunnel
   info.caps.deterministic = true;          // single-threaded stepping, fixed insertion order
   info.profiles = {kProfiles[0], kProfiles[1]};
+  // Stock uses the hash space, whose cost per ball grows with n (README.md: 49 us per ball-step at
+  // 10^4), so 10^5 would take minutes per benchmark. Tuned steps with dWorldStep, a dense LCP over
+  // every contact, whose cost grows with the cube of the contacts (a settled pile of 100 balls: 87 ms
+  // a step; of 1000: no step within minutes); the fluid starts apart and diverges within 20 steps at
+  // 1000 balls, so that count stays.
+  info.bench.profile_sizes["stock"] = {.free_balls = 10'000, .fluid_balls = 10'000, .settled_balls = 10'000};
+  info.bench.profile_sizes["tuned"] = {.free_balls = 100'000, .fluid_balls = 1000, .settled_balls = 100};
   // The iterative stepper's sweeps, and the exact (big-matrix) stepper against it. ODE has no CCD.
   info.settings = ode_settings_table().describe();
   info.sweep_knobs = {{"quickstep_iterations", {5, 20, 80}}, {"stepper", {"step", "quickstep"}}};

@@ -105,6 +105,9 @@ EngineEntry broken_entry(const ProcessEngineSpec& spec, const std::string& why) 
   e.info.summary = fmt::format("external engine process ({})", spec.source);
   e.info.profiles = {"default"};
   e.info.costly_runs = true;
+  // Each costs a process start and tens of microseconds per ball-step, which the report's bench run
+  // would pay many times: the step benchmark stops at 10^3 balls.
+  e.info.bench.sizes = {.free_balls = 1000, .fluid_balls = 1000, .settled_balls = 1000};
   // A registered engine that cannot run here (say, Node is not installed) is listed as unavailable
   // and its rows are unsupported; one named on the command line is a failed row with the reason.
   if (!spec.name.empty()) e.info.unavailable = why;

@@ -124,6 +124,7 @@ Handshake ProtocolClient::hello_reply(bool stop_on_interrupt) {
       throw std::runtime_error(fmt::format("'precision' is '{}', not \"double\" or \"float\"", excerpt(precision)));
     float_precision_ = precision == "float";
     h.info.costly_runs = true;  // every run starts the engine's process (a Node engine: 0.1 to 0.4 s)
+    h.info.bench.sizes = {.free_balls = 1000, .fluid_balls = 1000, .settled_balls = 1000};  // as process_engine.cpp's
     h.settings_keys = strings_from(j.value("settings_keys", nlohmann::json::array()), "settings_keys", true);
     const nlohmann::json knobs = j.contains("sweep_knobs") ? j["sweep_knobs"] : nlohmann::json::array();
     if (!knobs.is_array()) throw std::runtime_error("'sweep_knobs' is not a list");

@@ -291,8 +291,8 @@ void report(const ReportArgs& a) {
       // The error against `exact` (or a converged run) in every row, but for the heaps.
       if (!contains(suite.unreferenced, name))
         use_reference(options);
-      // Animated and in the viewer: as many frames as a page of every run holds.
-      if (contains(suite.viewer_scenes, name))
+      // A scene marked `animated` (the thesis's): in the viewer and a GIF, as many frames as a page of every run holds.
+      if (scene.animated)
         options.frames = viewer_frames(scene, static_cast<int>(run_count(engines, "all")));
       std::vector<Result> runs = run_all(scene, engines, "all", options, a.quiet, isolation);
       // Further placements, for the ensemble table: without frames (the animation and the viewer are of

@@ -175,6 +175,7 @@ EngineEntry home_seed_engine() {
   info.caps.friction = false;  // frictionless disks: no rotation
   info.caps.continuous_collision = false;
   info.settings = home_seed_settings_table().describe();
+  info.bench.sizes = {.free_balls = 1000, .fluid_balls = 1000, .settled_balls = 1000};  // O(n^2) by design
   return {info, [](const Scene& scene, const std::string&, const nlohmann::json& overrides) {
             HomeSeedSettings s;
             home_seed_settings_table().read(overrides, s);
