@@ -1,7 +1,6 @@
 #include "accuracy_section.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -92,9 +91,9 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     const std::string label = run_label(oc.engine, oc.profile);
     if (!oc.reached) continue;
     if (ext)
-      md += fmt::format("- **{}** costs {} ns: **{} cheaper** than the cheapest external engine that meets the spec "
+      md += fmt::format("- **{}** costs {} ns: {} than the cheapest external engine that meets the spec "
                         "({}, {} ns at {}).\n",
-                        label, cost_text(oc.cost_ns), ratio_text(ext->cost_ns / oc.cost_ns),
+                        label, cost_text(oc.cost_ns), cheaper_text(ext->cost_ns / oc.cost_ns),
                         run_label(ext->engine, ext->profile), cost_text(ext->cost_ns),
                         configuration_text(m.tries[ext->found]));
     else
@@ -141,23 +140,15 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   return "";
 }
 
-std::string ratio_text(double r) {
-  if (!(r > 0) || !std::isfinite(r)) return "n/a";
-  if (r >= 10) return fmt::format("{:.0f}x", r);
-  if (r >= 0.1) return fmt::format("{:.2g}x", r);
-  return fmt::format("1/{:.0f}x", 1 / r);
+
+std::string cheaper_text(double ratio) {
+  return ratio >= 1 ? fmt::format("**{} cheaper**", ratio_text(ratio))
+                    : fmt::format("**{} costlier**", ratio_text(1 / ratio));
 }
 
 std::string accuracy_heading(const std::string& scene) { return fmt::format("Equal accuracy: `{}`", scene); }
 
-std::string accuracy_anchor(const std::string& scene) {
-  std::string out;
-  for (unsigned char c : accuracy_heading(scene)) {
-    if (std::isalnum(c) || c == '-' || c == '_') out += char(std::tolower(c));
-    else if (c == ' ') out += '-';
-  }
-  return out;
-}
+std::string accuracy_anchor(const std::string& scene) { return heading_anchor(accuracy_heading(scene)); }
 
 std::string accuracy_section(const ReportInputs& in, const std::vector<Figure>& figures) {
   std::string md;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "match_result.h"
+#include "ratio_text.h"
 #include "report_writer.h"
 
 namespace ballbench {
@@ -24,8 +25,8 @@ MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc);
 // at every step size down to dt/64").
 std::string miss_text(const MatchResult& m, const MatchOutcome& oc);
 
-// "48x", "2.1x", "1/330x": how many times the first costs the second, readable below 1.
-std::string ratio_text(double ratio);
+// "**48x cheaper**" for the other's cost over ours at 48, "**3.0x costlier**" at 1/3.
+std::string cheaper_text(double ratio);
 
 // The heading of a scene's equal-accuracy section and its anchor (GitHub's rule: lower case, spaces
 // to '-', punctuation dropped), for links from the summary.

@@ -21,6 +21,7 @@
 #include "ensemble.h"
 #include "friction_section.h"
 #include "accuracy_section.h"
+#include "ratio_text.h"
 #include "summary_section.h"
 #include "ordered_set.h"
 #include "runner.h"
@@ -87,19 +88,11 @@ struct Column {
   std::function<std::optional<double>(const Result&)> value;  // null: not ranked; nullopt: this run not ranked
   const MetricDef* metric = nullptr;  // a metric of the catalog: left out where no run has it
   Place place = Place::table;
-  bool timing = false;  // ranked only among sound runs (a run that tunnels or sticks is no faster for it)
 };
 
 // Was the run compared with a reference other than itself? (The reference's own zero error is not
 // a result to rank.)
 bool compared(const Result& r) { return r.reference.available && r.engine != r.reference.reference; }
-
-// A run whose timing can be ranked: it ran every step, nothing passed through a wall or a ball and
-// nothing stuck.
-bool sound(const Result& r) {
-  const auto& m = r.metrics;
-  return r.status == RunStatus::ok && m.tunnelling_wall + m.tunnelling_pair + m.sticking_wall + m.sticking_pair == 0;
-}
 
 // What decides a scene's columns, from its runs.
 struct SceneView {
@@ -168,9 +161,9 @@ std::vector<Column> columns(const SceneView& view) {
                    return r.reference.horizon ? -*r.reference.horizon : -std::numeric_limits<double>::max();
                  },
                  nullptr, view.chaotic || view.horizon_exceeded ? Place::table : Place::appendix});
-  Column per_ball{"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); },
-                  [](const Result& r) { return std::optional(r.ns_per_ball_step); }};
-  per_ball.timing = true;
+  // Not ranked: at the scene's own step the engines compute to different accuracies; the
+  // equal-accuracy sections rank cost.
+  Column per_ball{"ns/ball-step", [](const Result& r) { return fmt::format("{:.1f}", r.ns_per_ball_step); }, nullptr};
   Column per_step{"ns/step", [](const Result& r) { return fmt::format("{:.0f}", r.ns_per_step); }, nullptr};
   per_step.place = Place::appendix;
   out.push_back(std::move(per_ball));
@@ -192,10 +185,9 @@ std::vector<Column> scene_columns(const std::vector<const Result*>& rows, const 
   return cols;
 }
 
-// The run's value in a ranked column, if its rank means something: it ended ok and was measured
-// (a timing: and was sound).
+// The run's value in a ranked column, if its rank means something: it ended ok and was measured.
 std::optional<double> rank_value(const Column& c, const Result& r) {
-  if (!c.value || r.status != RunStatus::ok || !r.measured() || (c.timing && !sound(r))) return std::nullopt;
+  if (!c.value || r.status != RunStatus::ok || !r.measured()) return std::nullopt;
   const std::optional<double> v = c.value(r);
   return v && !std::isnan(*v) ? v : std::nullopt;
 }
@@ -248,17 +240,8 @@ std::string features_text(const SceneFeatures& f) {
 
 constexpr const char* kBestNote =
     "bold marks the best value of a column where a ranking means something (smaller is better; a later horizon is "
-    "better), among the runs that ended ok, and only where they differ; ns/ball-step only among the runs that "
-    "neither tunnelled nor got stuck. n/a: not measured (the run made no step) or not defined for that run.";
-
-// The heading's anchor as a code host makes it: lower case, punctuation dropped, spaces as '-'.
-std::string anchor(const std::string& scene) {
-  std::string out;
-  for (char c : scene)
-    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') out += static_cast<char>(std::tolower(c));
-    else if (c == ' ') out += '-';
-  return out;
-}
+    "better), among the runs that ended ok, and only where they differ; ns/ball-step is not ranked: at the "
+    "scene's own step the engines reach different accuracies (the equal-accuracy sections compare cost). n/a: not measured (the run made no step) or not defined for that run.";
 
 // The scene's results file, relative to the report.
 std::string results_file(const ReportInputs& in, const std::string& scene) {
@@ -422,13 +405,6 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
         *r->pipe_ns_per_ball_step, r->ns_per_ball_step, p ? fmt::format("{:.0f}", p->ns_per_ball_step) : kNoData);
   }
   put("\nns per ball-step. Source: `results/bench.json`.\n\n");
-}
-
-// A ratio as a reader takes it in: "48x", "2.5x", and below 0.1 its inverse, "1/330x" (not "0.0x").
-std::string ratio_text(double r) {
-  if (!(r > 0) || !std::isfinite(r)) return kNoData;
-  if (r < 0.1) return fmt::format("1/{:.0f}x", 1 / r);
-  return r >= 10 ? fmt::format("{:.0f}x", r) : r >= 1 ? fmt::format("{:.1f}x", r) : fmt::format("{:.2f}x", r);
 }
 
 // Balls from which a benchmark's memory per ball is the balls' (see put_scaling).
@@ -828,7 +804,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
         view.chaotic ? "Chaotic: every engine parts from the reference, so the horizon (the time it stays within a "
                        "tenth of a radius of it) ranks accuracy here, and the final error (in the appendix) does not. "
                      : "",
-        anchor(scene), results_file(in, scene));
+        heading_anchor(scene), results_file(in, scene));
     for (const Result* r : rows) put("- **{}**: {}.\n", run_label(*r), verdict(*r));
     put("\n");
     put_viewer(put, figures, scene);
@@ -890,6 +866,14 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   put("\nEvery metric of a run's JSON, with its unit and definition: `ballbench list --metrics`.\n");
   if (!scene_order.empty()) put_appendix(put, scene_order, by_scene);
   return fmt::to_string(put.out);
+}
+
+std::string heading_anchor(const std::string& heading) {
+  std::string out;
+  for (char c : heading)
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') out += static_cast<char>(std::tolower(c));
+    else if (c == ' ') out += '-';
+  return out;
 }
 
 }  // namespace ballbench

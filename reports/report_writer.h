@@ -49,6 +49,9 @@ struct Figure {
 // Reads a results folder written by `ballbench report`.
 ReportInputs read_report_inputs(const std::string& results_dir);
 
+// A Markdown heading's anchor as a code host makes it: lower case, punctuation dropped, spaces as '-'.
+std::string heading_anchor(const std::string& heading);
+
 std::string render_report(const ReportInputs& in, const std::vector<Figure>& figures = {});
 
 }  // namespace ballbench

@@ -63,7 +63,7 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
     const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
     std::string ratio = "n/a";
-    if (ours && ext) ratio = fmt::format("**{} cheaper**", ratio_text(ext->cost_ns / ours->cost_ns));
+    if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
     else if (ours) ratio = "only ours met it";
     else if (ext) ratio = "ours did not meet it";
     md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,

@@ -77,7 +77,7 @@ TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
 TEST(AccuracySection, RatiosReadBelowOne) {
   EXPECT_EQ(ratio_text(48.1), "48x");
   EXPECT_EQ(ratio_text(2.14), "2.1x");
-  EXPECT_EQ(ratio_text(0.5), "0.5x");
+  EXPECT_EQ(ratio_text(0.5), "0.50x");
   EXPECT_EQ(ratio_text(1.0 / 330), "1/330x");
   EXPECT_EQ(ratio_text(0), "n/a");
   EXPECT_EQ(accuracy_anchor("seed-box"), "equal-accuracy-seed-box");

@@ -212,11 +212,11 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   o.knobs = false;
   o.quiet = true;
   o.isolation.enabled = false;
-  const cli::MatchResult m = cli::run_match(scene, {&find_engine("home"), &find_engine("home-seed")}, o, {});
+  const MatchResult m = cli::run_match(scene, {&find_engine("home"), &find_engine("home-seed")}, o, {});
   ASSERT_EQ(m.outcomes.size(), 4u);  // home: default, events, soft; home-seed
-  const cli::MatchOutcome& home = m.outcomes[0];
+  const MatchOutcome& home = m.outcomes[0];
   ASSERT_TRUE(home.reached) << m.tries.at(std::max(0, home.best)).why_not;
-  const cli::MatchTry& found = m.tries[home.found];
+  const MatchTry& found = m.tries[home.found];
   EXPECT_TRUE(found.met);
   EXPECT_EQ(found.halvings, 0);
   EXPECT_EQ(home.cost_repeats.size(), 2u);
@@ -227,7 +227,7 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   ro.profile = found.profile;
   EXPECT_TRUE(judge(o.spec, run_engine(again, find_engine("home"), ro)).met);
 
-  const cli::MatchOutcome& seed = m.outcomes[3];
+  const MatchOutcome& seed = m.outcomes[3];
   EXPECT_EQ(seed.engine, "home-seed");
   EXPECT_FALSE(seed.reached);
   EXPECT_EQ(seed.found, -1);
@@ -238,7 +238,7 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   EXPECT_DOUBLE_EQ(seed.finest_dt, 0.005);
 
   // The JSON holds every try and reads back to the same outcomes.
-  const cli::MatchResult back = cli::match_from_json(cli::to_json(m));
+  const MatchResult back = match_from_json(to_json(m));
   EXPECT_EQ(back.tries.size(), m.tries.size());
   EXPECT_EQ(back.outcomes[3].best, seed.best);
   EXPECT_EQ(back.spec.to_json(), m.spec.to_json());
@@ -257,7 +257,7 @@ TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {
   }
   const auto merged = run_cli(fmt::format("merge {0}/m1.json {0}/m2.json --out {0}/m.json", dir.string()));
   ASSERT_EQ(merged.status, 0) << merged.err;
-  const cli::MatchResult m = cli::read_match_file((dir / "m.json").string());
+  const MatchResult m = read_match_file((dir / "m.json").string());
   EXPECT_EQ(m.outcomes.size(), 3u);
   EXPECT_EQ(m.shard_count, 1);
   std::ifstream csv(dir / "m.csv");

@@ -123,10 +123,9 @@ TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
   const std::string md =
       render_report(inputs({fast_but_broken, diverged, refused, run("a", "bowl", bowl, 10), run("b", "bowl", bowl, 20)}));
   const std::string scene = section(md, "## Scene `bowl`");
-  // The fastest sound run is the fastest; a run that tunnels or diverged is not.
-  EXPECT_NE(scene.find("**10.0**"), std::string::npos) << scene;
-  EXPECT_EQ(scene.find("**1.0**"), std::string::npos) << scene;
-  EXPECT_EQ(scene.find("**0.5**"), std::string::npos) << scene;
+  // Timings at the scene's own step are not ranked (the engines reach different accuracies there):
+  // no run is "fastest", least of all one that tunnels or diverged.
+  for (const char* t : {"**10.0**", "**1.0**", "**0.5**", "**20.0**"}) EXPECT_EQ(scene.find(t), std::string::npos) << t;
   // Wall tunnelling and sticking are 0 in every ok run: no best among equals; the pair tunnelling
   // ranks the runs that did not tunnel above the one that did.
   EXPECT_NE(scene.find("| a 1 | default | ok | 0.5 | 0 | **0** | 0 | 0 |"), std::string::npos) << scene;
