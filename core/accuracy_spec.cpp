@@ -54,7 +54,7 @@ std::string AccuracySpec::text() const {
   std::vector<std::string> parts;
   for (const SpecTermDef& d : spec_terms())
     if (const auto& b = (*this)[d.term])
-      parts.push_back(fmt::format("{} {} {:g}{}{}", d.key, d.at_least ? ">=" : "<=", *b, *d.unit ? " " : "", d.unit));
+      parts.push_back(fmt::format("{} {} {:.3g}{}{}", d.key, d.at_least ? ">=" : "<=", *b, *d.unit ? " " : "", d.unit));
   return parts.empty() ? "no bound" : fmt::format("{}", fmt::join(parts, ", "));
 }
 

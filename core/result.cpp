@@ -226,6 +226,7 @@ namespace {
 nlohmann::json result_shape() {
   Result r;
   r.status = RunStatus::diverged;  // with its step
+  r.steps_done = 1;                 // a run that made steps writes every figure it measured
   r.engine_process_s = 0;
   r.events.emplace_back();
   r.events.back().j = 1;  // a pair's

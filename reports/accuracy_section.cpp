@@ -127,7 +127,7 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   if (oc.best < 0) return "no configuration ran";
   const MatchTry& b = m.tries[oc.best];
   const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
-  const std::string stop = oc.stopped.find("budget") != std::string::npos ? fmt::format(" ({})", oc.stopped) : "";
+  const std::string stop = oc.stopped.find("budget") != std::string::npos ? ", out of budget" : "";
   switch (v) {
     case MatchVerdict::met: return "";
     case MatchVerdict::unsupported: return "unsupported";

@@ -64,7 +64,7 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
     std::string ratio = "n/a";
     if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
-    else if (ours) ratio = "only ours met it";
+    else if (ours) ratio = "no external engine met it in its budget";
     else if (ext) ratio = "ours did not meet it";
     md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
                       m.spec.text(), found_text(m, ext), found_text(m, ours), ratio, most_accurate_at_dt(m));
@@ -75,7 +75,10 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     if (!failed.empty())
       misses.push_back(fmt::format("- [`{}`](#{}): {}.", m.scene, accuracy_anchor(m.scene), fmt::join(failed, "; ")));
   }
-  if (!misses.empty()) md += fmt::format("\nDid not meet the spec at any step size tried:\n\n{}\n", fmt::join(misses, "\n"));
+  if (!misses.empty())
+    md += fmt::format("\nDid not meet the spec at any configuration tried (the nearest miss; \"out of budget\": the "
+                      "search's time ran out first):\n\n{}\n",
+                      fmt::join(misses, "\n"));
   for (const Figure& f : figures)
     if (f.kind == "fronts") md += fmt::format("\n![every scene's work-precision front]({})\n\n*{}*\n", f.file, f.caption);
   md += "\n";

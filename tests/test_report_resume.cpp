@@ -314,7 +314,8 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "run.json", "seed-box.json", "seed-bowl.json",
                                           "slide-to-roll.json", "spin-drop.json", "rough-box.json", "rough-pile.json",
                                           "smooth-pile.json", "stress-seed-box.json",
-                                          "sweep-seed-box.csv", "sweep-seed-box.json"}));
+                                          "sweep-seed-box.csv", "sweep-seed-box.json", "match-seed-box.json",
+                                          "match-seed-box.csv", "match-seed-bowl.json", "match-seed-bowl.csv"}));
   const std::string md = slurp(merged / "REPORT.md");
   for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",
                            "## Stability frontier: `seed-box`", "## Restitution calibration"})

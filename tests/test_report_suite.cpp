@@ -47,7 +47,7 @@ class BadSuite : public ::testing::Test {
 
 TEST_F(BadSuite, EachProblemIsOneLineNamingTheField) {
   EXPECT_NE(error_of("[quick]\nscenes = [\"seed-box\"]\nmatch_scenes = [\"seed-boxx\"]\n")
-                .find(":3: quick.match_scenes[0]: 'seed-boxx' is not a built-in scene (did you mean 'seed-box'?)"),
+                .find(":3: quick.match_scenes[0]: 'seed-boxx' is not a built-in scene, did you mean 'seed-box'?"),
             std::string::npos);
   EXPECT_NE(error_of("[quick]\nscenez = []\n").find(":2: quick.scenez: unknown key"), std::string::npos);
   EXPECT_NE(error_of("[quick]\nmatch_budget_s = -1\n").find("quick.match_budget_s: must be above 0, got -1"),
