@@ -14,8 +14,16 @@ namespace ballbench {
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
 
+std::string step_text(int halvings) { return halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << halvings); }
+
+std::string figure_text(const nlohmann::json& v) {
+  if (!v.is_number()) return "n/a";
+  const double x = v.get<double>();
+  return x == std::floor(x) && std::abs(x) < 1e9 ? fmt::format("{:.0f}", x) : fmt::format("{:.3g}", x);
+}
+
 std::string configuration_text(const MatchTry& t) {
-  std::string s = t.halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << t.halvings);
+  std::string s = step_text(t.halvings);
   if (!t.knob.empty()) s += fmt::format(", {}={}", t.knob, json_text(t.value));
   return s;
 }

@@ -1,7 +1,7 @@
 #pragma once
-// What `ballbench match` found (match.h searches): every configuration tried and each engine and
-// profile's outcome, with their JSON and CSV. The report reads these files for its equal-accuracy
-// tables and work-precision fronts.
+// The outcome of an equal-accuracy search (match.h runs it): every configuration tried and each
+// engine and profile's result, with their JSON and CSV, which the report reads for its
+// equal-accuracy tables and work-precision fronts.
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,6 +84,13 @@ std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec);
 
 // The cheapest outcome of engines of `role` ("ours", "external") that met the spec, or none.
 const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role);
+
+// "dt", "dt/8": the step of a try that halved the scene's step `halvings` times.
+std::string step_text(int halvings);
+
+// A spec term's figure as the tables print it: whole numbers whole, others in three figures, "n/a"
+// where it was not measured.
+std::string figure_text(const nlohmann::json& figure);
 
 // "dt/8, iterations=20": a try's step size and the knob set on top of its profile.
 std::string configuration_text(const MatchTry& t);

@@ -10,14 +10,6 @@
 namespace ballbench {
 namespace {
 
-std::string step_text(int halvings) { return halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << halvings); }
-
-std::string figure_text(const nlohmann::json& v) {
-  if (!v.is_number()) return "n/a";
-  const double x = v.get<double>();
-  return x == std::floor(x) && std::abs(x) < 1e9 ? fmt::format("{:.0f}", x) : fmt::format("{:.3g}", x);
-}
-
 // The figure of the spec's term that is furthest from its bound in try `t`, as "overlap 0.034".
 std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
   std::string worst;

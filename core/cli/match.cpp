@@ -192,11 +192,6 @@ class Search {
 
 
 
-std::string figure_text(const nlohmann::json& v) {
-  if (v.is_null()) return "-";
-  const double x = v.get<double>();
-  return x == std::floor(x) && std::abs(x) < 1e9 ? fmt::format("{:.0f}", x) : fmt::format("{:.3g}", x);
-}
 
 }  // namespace
 

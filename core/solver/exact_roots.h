@@ -43,8 +43,8 @@ struct Quartic {
   double ddf(double t) const { return (12 * c4 * t + 6 * c3) * t + 2 * c2; }
 };
 
-// First tau in [0, horizon] with f(tau) <= 0 and f decreasing (Bannerman et al. 2014, section 4:
-// the event of a general overlap function). `noise`: |f'(0)| up to this counts as zero; a touching
+// First tau in [0, horizon] with f(tau) <= 0 and f decreasing: the event of a general overlap
+// function, as in Bannerman, Lue and Lue's event detection for DEM, section 4. `noise`: |f'(0)| up to this counts as zero; a touching
 // pair (f(0) <= cap) closing no faster may creep on until f = -cap, where only `fine` (round-off)
 // counts as zero. `pressed`: the relative acceleration pushes the pair together (exact_world.h's
 // pressed). kNever if there is none.

@@ -1,7 +1,7 @@
 #pragma once
 // Lemke's complementary pivoting for the linear complementarity problem
 //   w = A lambda + b >= 0,  lambda >= 0,  lambda . w = 0
-// (Cottle, Pang & Stone, "The Linear Complementarity Problem", 1992, section 4.4): exact up to
+// (Cottle, Pang and Stone, "The Linear Complementarity Problem", section 4.4): exact up to
 // round-off where projected Gauss-Seidel stalls (exact's cluster settling: contact normals nearly
 // opposite, in wedges and arches). Plain arrays in and out; the tableau lives in caller-owned
 // scratch, so a warm caller allocates nothing.
