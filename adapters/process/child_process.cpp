@@ -46,9 +46,11 @@ std::string join_argv(const std::vector<std::string>& argv) { return fmt::format
 // The process groups of the children started and not yet ended, with the process that started
 // each (a fork inherits the list, not the children). A run's child process ends by quick_exit
 // (isolated_run.cpp), without destructors: its engines' groups, helpers included, end with it.
+// Never destroyed: engines held by static objects (the registry's process pools) end at exit,
+// after any function-local static would be gone.
 std::vector<std::pair<pid_t, pid_t>>& live_groups() {
-  static std::vector<std::pair<pid_t, pid_t>> groups;  // (owner, group)
-  return groups;
+  static auto* groups = new std::vector<std::pair<pid_t, pid_t>>;  // (owner, group)
+  return *groups;
 }
 
 void kill_live_groups() {
