@@ -15,6 +15,7 @@
 #include <cstring>
 #include <functional>
 #include <optional>
+#include <set>
 #include <thread>
 
 #include <fmt/format.h>
@@ -25,6 +26,7 @@
 
 // The child talks to the parent through a pipe in lines of text:
 //   progress DONE TOTAL      now and then (run_engine's progress callback, every 1% of the steps)
+//   group +PGID / -PGID      an engine process's group started / ended (note_engine_group)
 //   result JSON              the Result (to_json, on one line), last
 //   input_error MESSAGE      run_engine threw InputError (bad settings): rethrown here
 //   error MESSAGE            any other exception escaped run_engine
@@ -43,6 +45,9 @@ std::string one_line(std::string s) {
   return s;
 }
 
+// In a run's child process: its end of the pipe to the parent (note_engine_group); -1 elsewhere.
+int g_parent_pipe = -1;
+
 // write() until everything is out; a dead parent ends the child by SIGPIPE, which is fine.
 void send(int fd, const std::string& text) {
   const char* p = text.data();
@@ -58,6 +63,7 @@ void send(int fd, const std::string& text) {
 [[noreturn]] void child_main(int fd, const Scene& scene, const EngineEntry& entry, RunOptions options,
                              const IsolationOptions& isolation) {
   std::string message;
+  g_parent_pipe = fd;
   try {
     std::optional<TrajectoryCsv> trajectory;
     if (!isolation.trajectory_path.empty())
@@ -107,6 +113,9 @@ class ChildWatcher {
       }
       out_.reaped = true;
     }
+    // A child that ended normally ended its engines' groups itself (quick_exit's handler).
+    if (!(WIFEXITED(out_.wait_status) && WEXITSTATUS(out_.wait_status) == 0))
+      for (const int group : engine_groups_) ::kill(-group, SIGKILL);
     return out_;
   }
 
@@ -156,7 +165,13 @@ class ChildWatcher {
       const std::string line = inbox_.substr(start, end - start);
       const size_t space = line.find(' ');
       const std::string kind = line.substr(0, space), body = space == std::string::npos ? "" : line.substr(space + 1);
-      if (kind == "progress") {
+      if (kind == "group") {
+        int group = 0;
+        if (std::sscanf(body.c_str() + (body.empty() ? 0 : 1), "%d", &group) == 1 && group > 0) {
+          if (body[0] == '+') engine_groups_.insert(group);
+          else engine_groups_.erase(group);
+        }
+      } else if (kind == "progress") {
         long done = 0, total = 0;
         if (std::sscanf(body.c_str(), "%ld %ld", &done, &total) == 2) {
           out_.last_done = done;
@@ -193,6 +208,7 @@ class ChildWatcher {
   Clock::time_point deadline_;
   std::string inbox_;
   ChildOutcome out_;
+  std::set<int> engine_groups_;  // the child's engine process groups still live
 };
 
 Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
@@ -236,6 +252,10 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
 }
 
 }  // namespace
+
+void note_engine_group(int group, bool live) {
+  if (g_parent_pipe >= 0) send(g_parent_pipe, fmt::format("group {}{}\n", live ? '+' : '-', group));
+}
 
 std::string signal_description(int sig) {
   static const std::pair<int, const char*> names[] = {

@@ -27,6 +27,12 @@ struct IsolationOptions {
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
                            const IsolationOptions& isolation);
 
+// An engine process's group started (live) or ended, called by whatever starts engine processes.
+// In a run's child process it is told to the parent, which ends the groups still live when the
+// child dies without ending them (killed at the time limit, crashed): an engine dies with the
+// child (PR_SET_PDEATHSIG), a helper in its group would not. Elsewhere it does nothing.
+void note_engine_group(int group, bool live);
+
 // "SIGSEGV (segmentation fault)": the signal's name and what it means.
 std::string signal_description(int sig);
 

@@ -272,5 +272,38 @@ TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {
   fs::remove_all(dir);
 }
 
+// The ratio line against a target: met, short by how much, undecided without an external point.
+TEST(MatchCli, TheRatioLineSaysWhetherTheTargetWasMet) {
+  MatchResult m;
+  m.scene = "pile", m.n = 500, m.dt = 0.01;
+  m.spec[SpecTerm::overlap] = 0.01;
+  for (const char* engine : {"home", "chipmunk"}) {
+    MatchTry t;
+    t.engine = engine, t.profile = "default", t.dt = 0.01, t.met = true;
+    t.figures = {{"overlap", 0.005}};
+    m.tries.push_back(t);
+  }
+  MatchOutcome ours{.engine = "home", .profile = "default", .role = role_name(EngineRole::ours), .reached = true,
+                    .found = 0, .cost_ns = 100};
+  MatchOutcome theirs{.engine = "chipmunk", .profile = "default", .role = role_name(EngineRole::external),
+                      .reached = true, .found = 1, .cost_ns = 500};
+  m.outcomes = {ours, theirs};
+  const auto printed = [&](std::optional<double> target) {
+    ::testing::internal::CaptureStdout();
+    cli::print_match(m, target);
+    return ::testing::internal::GetCapturedStdout();
+  };
+  EXPECT_NE(printed(4).find("5.0x cheaper than the cheapest external engine that met the spec"), std::string::npos)
+      << printed(4);
+  EXPECT_NE(printed(4).find("500 ns) (target 4x: met)"), std::string::npos)
+      << printed(4);
+  EXPECT_NE(printed(10).find("(target 10x: not met, 2.0x short)"), std::string::npos) << printed(10);
+  EXPECT_EQ(printed(std::nullopt).find("target"), std::string::npos);
+  m.outcomes[1].reached = false, m.outcomes[1].found = -1, m.outcomes[1].best = 1;
+  EXPECT_NE(printed(10).find("no external engine met the spec (target 10x: undecided within the budget)"),
+            std::string::npos)
+      << printed(10);
+}
+
 }  // namespace
 }  // namespace ballbench

@@ -456,7 +456,12 @@ case "$filter" in
 esac
 )";
   std::filesystem::permissions(bin, std::filesystem::perms::owner_all);
-  const Outcome o = cli("report --out " + (dir / "out").string() + " --engine home --bench-binary " + bin.string());
+  // One small table and the benchmark parts: what the test is about, in seconds.
+  const auto suites = dir / "suites.toml";
+  std::ofstream(suites) << "[quick]\nscenes = [\"two-ball-1\"]\nmatch_scenes = []\nsweep_scenes = []\n"
+                           "stress_scenes = []\nbench_filters = [\"^step/home/default/gas/1000$\", \"^pipe/\"]\n";
+  const Outcome o = cli("report --out " + (dir / "out").string() + " --engine home --suites " + suites.string() +
+                        " --bench-binary " + bin.string());
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.err.find("scaling: part skipped: " + bin.string() + " --benchmark_filter='^pipe/': it failed (exit status 3)"),
             std::string::npos)

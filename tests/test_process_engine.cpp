@@ -595,6 +595,25 @@ TEST(ProcessEngine, AHelperOfAnIsolatedRunDoesNotOutliveTheCommand) {
   if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
 
+// A run killed at its time limit ends without its quick_exit handler: its parent ends the engine
+// groups the run's child said were live, the helper's with them.
+TEST(ProcessEngine, AHelperOfARunKilledAtItsTimeLimitDoesNotOutliveTheCommand) {
+  const std::string pid_file =
+      (std::filesystem::temp_directory_path() / ("bb_helper_hang." + std::to_string(::getpid()))).string();
+  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 --timeout 3 "
+                                                 "--engine 'process:python3 " + kMisbehaving + " helper-hang " +
+                                                 pid_file + "'");
+  EXPECT_EQ(o.status, 1) << o.err;
+  EXPECT_TRUE(has(o.out, "timed_out") || has(o.out, "timed out")) << o.out;
+  std::ifstream in(pid_file);
+  long pid = 0;
+  ASSERT_TRUE(in >> pid);
+  std::filesystem::remove(pid_file);
+  const bool alive = still_running(pid);
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
+  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
+}
+
 TEST(EnginesFile, RefusesAFolderAndTheNameAll) {
   try {
     read_engines_file(std::filesystem::temp_directory_path().string());

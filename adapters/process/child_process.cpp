@@ -123,6 +123,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   static const bool at_exit = std::at_quick_exit(kill_live_groups) == 0;
   (void)at_exit;
   live_groups().emplace_back(owner_, pid_);
+  note_engine_group(pid_, true);
 }
 
 ChildProcess::~ChildProcess() {
@@ -144,6 +145,7 @@ ChildProcess::~ChildProcess() {
   // What the engine started in its process group (a helper that kept its output open) ends with it.
   if (pid_ > 0) ::kill(-pid_, SIGKILL);
   std::erase(live_groups(), std::pair{owner_, pid_});
+  if (pid_ > 0) note_engine_group(pid_, false);
   close_fd(out_), close_fd(err_);
 }
 

@@ -2,6 +2,7 @@
 // --spec), each engine and profile's cheapest configuration that meets the spec (match.h); one
 // table, our solver's ratio to the cheapest external engine, and JSON and CSV of every try.
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -24,6 +25,7 @@ struct MatchArgs {
   std::string scene, engines, json, csv, shard;
   std::vector<std::string> spec;
   bool no_knobs = false;
+  std::optional<double> target;
   MatchOptions options;
 };
 
@@ -46,7 +48,7 @@ void match(MatchArgs& a) {
   check_json_and_csv(scene, a.json, a.csv, "the match's");
   const MatchResult m = run_match(scene, engines, a.options, run_context());
   write_match_files(m, a.json, a.csv);
-  print_match(m);
+  print_match(m, a.target);
   fmt::print("wrote {} and {}\n", a.json, a.csv);
   exit_if_interrupted(fmt::format("{} tries written to {} and {}", m.tries.size(), a.json, a.csv));
 }
@@ -72,6 +74,10 @@ void add_match(CLI::App& app) {
                   "timing runs of each found configuration beside its measuring run; the median is reported "
                   "(default 2)")
       ->check(CLI::Range(0, 100));
+  cmd->add_option("--target", a->target,
+                  "a ratio our solver's cost should beat the cheapest external engine's by; the output says whether "
+                  "it did and by how much it fell short")
+      ->check(kPositiveNumber);
   cmd->add_flag("--no-knobs", a->no_knobs, "search the step size only, not the engines' own knobs");
   cmd->add_option("--json", a->json, "JSON output (default match-SCENE.json)");
   cmd->add_option("--csv", a->csv, "CSV of every try (default: the JSON path with .csv)");

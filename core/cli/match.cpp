@@ -218,7 +218,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
   return m;
 }
 
-void print_match(const MatchResult& m) {
+void print_match(const MatchResult& m, std::optional<double> target) {
   fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
   fmt::print("cost: the engine's own step time per ball per scene step (dt = {:g} s), median of the found "
              "configuration's runs; engines in another process time their own steps (pipe-inclusive beside it)\n",
@@ -245,17 +245,23 @@ void print_match(const MatchResult& m) {
   }
   // Our solver against the cheapest external engine that met the spec.
   const MatchOutcome* cheapest = cheapest_reached(m, role_name(EngineRole::external));
+  const auto against_target = [&](double ratio) {
+    if (!target) return std::string();
+    if (ratio >= *target) return fmt::format(" (target {:g}x: met)", *target);
+    return fmt::format(" (target {:g}x: not met, {:.1f}x short)", *target, *target / ratio);
+  };
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::ours)) continue;
     const std::string label = run_label(oc.engine, oc.profile);
     if (!oc.reached)
-      fmt::print("{}: did not meet the spec\n", label);
+      fmt::print("{}: did not meet the spec{}\n", label, target ? fmt::format(" (target {:g}x: not met)", *target) : "");
     else if (!cheapest)
-      fmt::print("{}: {} ns; no external engine met the spec\n", label, cost_text(oc.cost_ns));
+      fmt::print("{}: {} ns; no external engine met the spec{}\n", label, cost_text(oc.cost_ns),
+                 target ? fmt::format(" (target {:g}x: undecided within the budget)", *target) : "");
     else
-      fmt::print("{}: {:.1f}x cheaper than the cheapest external engine that met the spec ({}, {} ns)\n", label,
+      fmt::print("{}: {:.1f}x cheaper than the cheapest external engine that met the spec ({}, {} ns){}\n", label,
                  cheapest->cost_ns / oc.cost_ns, run_label(cheapest->engine, cheapest->profile),
-                 cost_text(cheapest->cost_ns));
+                 cost_text(cheapest->cost_ns), against_target(cheapest->cost_ns / oc.cost_ns));
   }
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.command.empty()) continue;

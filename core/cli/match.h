@@ -6,6 +6,7 @@
 // top of the profile) from two halvings coarser than that, refined while it can still be cheaper
 // than the best found: a step half as long costs at least kHalvingCostFloor times as much per scene
 // step.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,7 +49,8 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
                       const nlohmann::json& context);
 
 // The table: one row per engine and profile, then our solver's ratio to the cheapest external
-// engine that met the spec, then each row's reproducing command.
-void print_match(const MatchResult& m);
+// engine that met the spec (against `target`, a ratio, where given), then each row's reproducing
+// command.
+void print_match(const MatchResult& m, std::optional<double> target = std::nullopt);
 
 }  // namespace ballbench::cli

@@ -4,7 +4,7 @@ and at step 3 it does what argv[1] names. For a scene that rotates its states ca
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
 Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-escape" (a name
 with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
-stdout, its pid written to argv[2]), "float-t" and "float-t-undeclared" (the time summed in
+stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 3), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
 "unsupported" (refuses every scene as unsupported), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
@@ -23,7 +23,7 @@ def send(reply, block=b""):
     out.flush()
 
 
-if mode == "helper":  # starts a helper that keeps stdout open, and says its pid in argv[2]
+if mode in ("helper", "helper-hang"):  # starts a helper that keeps stdout open, and says its pid in argv[2]
     import subprocess
     helper = subprocess.Popen(["sleep", "600"])
     with open(sys.argv[2], "w") as f:
@@ -71,7 +71,7 @@ for line in sys.stdin.buffer:
                 sys.stderr.write("Traceback: the misbehaving engine fell over\n")
                 sys.stderr.flush()
                 sys.exit(3)
-            if mode == "hang":
+            if mode in ("hang", "helper-hang"):
                 time.sleep(3600)
             if mode == "garbage":
                 out.write(b"this is not json\n")
