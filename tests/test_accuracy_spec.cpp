@@ -244,6 +244,26 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   EXPECT_EQ(back.spec.to_json(), m.spec.to_json());
 }
 
+// A knob that changes nothing on this scene (home's overlap, on the event-driven path a gas takes)
+// gives the profile's own trajectory: it is tried once and never found, however its timing falls.
+TEST(Match, AKnobThatChangesNothingIsNeverTheFinding) {
+  const Scene scene = load_scene("two-ball-1");
+  cli::MatchOptions o;
+  o.spec = scene_spec(scene);
+  o.profile = "default";
+  o.max_halvings = 0;
+  o.repeats = 0;
+  o.quiet = true;
+  o.isolation.enabled = false;
+  const MatchResult m = cli::run_match(scene, {&find_engine("home")}, o, {});
+  ASSERT_EQ(m.outcomes.size(), 1u);
+  ASSERT_TRUE(m.outcomes[0].reached);
+  EXPECT_EQ(m.tries[m.outcomes[0].found].knob, "");
+  int knob_tries = 0;
+  for (const MatchTry& t : m.tries) knob_tries += !t.knob.empty();
+  EXPECT_EQ(knob_tries, 3);  // overlap = 0.005, 0.0025, 0.001: each once
+}
+
 TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {
   const fs::path dir = fs::temp_directory_path() / "ballbench-match-cli";
   fs::remove_all(dir);

@@ -213,6 +213,11 @@ TEST(Cli, IntegerSettingsDoNotWrap) {
                         "out of range");
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set home.substeps=-4294967295"),
                         "out of range");
+  // A whole number written as a float is that number: its range is what is wrong, not its form.
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set home.substeps=1e12"), "out of range");
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set home.substeps=2.5"),
+                        "expected a whole number");
+  EXPECT_EQ(cli("run --scene seed-box --engine home --no-reference --steps 2 --set home.substeps=8.0").status, 0);
 }
 
 TEST(Cli, FrictionIsRefusedByEnginesWithoutRotation) {

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -97,9 +98,14 @@ class Search {
         oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
         if (interrupt_signal()) oc.stopped = "an interrupt";
         if (tr.status == RunStatus::ok) cost = tr.cost_ns, cost_at = k;
+        // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
+        // a path that has none): it is never a finding, at any step.
+        if (c == 0 && tr.status == RunStatus::ok) as_is_trajectory_[k] = last_trajectory_;
+        if (c > 0 && tr.status == RunStatus::ok && !last_trajectory_.empty() && as_is_trajectory_.count(k) &&
+            as_is_trajectory_[k] == last_trajectory_)
+          break;
         if (tr.met) {
-          // A knob replaces the profile as it is only when it is cheaper beyond timing noise: a
-          // knob that changes nothing (a stiffness on a path that has none) is not a finding.
+          // A knob replaces the profile as it is only when it is cheaper beyond timing noise.
           const double margin = c == 0 || oc.found < 0 || !out_.tries[oc.found].knob.empty() ? 1 : kKnobCostMargin;
           if (tr.cost_ns < best_cost_ * margin) best_cost_ = tr.cost_ns, oc.found = t;
           if (c == 0) met_at = k;
@@ -153,6 +159,7 @@ class Search {
     t.cost_ns = cost_per_scene_step(r.engine_process_s.value_or(r.engine_s), scene_);
     if (r.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(r.engine_s, scene_);
     t.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
+    last_trajectory_ = r.checksum_trajectory;
     out_.tries.push_back(std::move(t));
     return int(out_.tries.size()) - 1;
   }
@@ -184,6 +191,8 @@ class Search {
   MatchResult& out_;
   Clock::time_point start_;
   double best_cost_ = std::numeric_limits<double>::infinity();
+  std::string last_trajectory_;                  // the last try's trajectory checksum
+  std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
 
   double budget_left() const {
     return o_.budget_s - std::chrono::duration<double>(Clock::now() - start_).count();
