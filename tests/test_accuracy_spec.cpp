@@ -17,6 +17,7 @@
 #include "runner.h"
 #include "scene_loader.h"
 #include "solver/home_method.h"
+#include "spec_option.h"
 #include "spec_verdict.h"
 
 namespace ballbench {
@@ -262,6 +263,34 @@ TEST(Match, AKnobThatChangesNothingIsNeverTheFinding) {
   int knob_tries = 0;
   for (const MatchTry& t : m.tries) knob_tries += !t.knob.empty();
   EXPECT_EQ(knob_tries, 3);  // overlap = 0.005, 0.0025, 0.001: each once
+}
+
+// `--spec` asks the scene for an accuracy: home's default profile builds itself for it (a stiffer
+// spring, more substeps), and match's reproducing lines carry it so `run` builds the same.
+TEST(MatchCli, TheSpecAskedForIsWhatHomeBuildsForAndWhatTheCommandsCarry) {
+  Scene pile = load_scene("pile");
+  const auto home_settings = [&] { return find_engine("home").create(pile, "default", {})->settings(); };
+  const auto by_default = home_settings();
+  EXPECT_DOUBLE_EQ(cli::ask_scene_for(pile, {"overlap=0.005"})[SpecTerm::overlap].value(), 0.005);
+  const auto asked = home_settings();
+  EXPECT_DOUBLE_EQ(asked["overlap"].get<double>(), 0.005);
+  EXPECT_GT(asked["substeps"].get<int>(), by_default["substeps"].get<int>());
+  EXPECT_THROW(cli::ask_scene_for(pile, {"overlap=none", "tunnelling=none", "rest_speed=none"}), InputError);
+
+  const fs::path dir = fs::temp_directory_path() / ("ballbench-match-spec." + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string scene = (dir / "small-pile.toml").string();
+  std::ofstream(scene) << kSmallPile;
+  const auto r = run_cli("match --scene " + scene + " --engine home --profile default --max-halvings 0 --no-knobs "
+                         "--quiet --spec overlap=0.005 --json " + (dir / "m.json").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const MatchResult m = read_match_file((dir / "m.json").string());
+  ASSERT_EQ(m.outcomes.size(), 1u);
+  EXPECT_NE(m.outcomes[0].command.find(" --spec overlap=0.005"), std::string::npos) << m.outcomes[0].command;
+  const auto bad = run_cli("run --scene pile --engine home --steps 1 --spec overlap=-1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("--spec overlap=-1"), std::string::npos) << bad.err;
+  fs::remove_all(dir);
 }
 
 TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {

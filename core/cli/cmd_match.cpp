@@ -15,6 +15,7 @@
 #include "progress.h"
 #include "registry.h"
 #include "scene_loader.h"
+#include "spec_option.h"
 #include "sweep_result.h"
 #include "validators.h"
 
@@ -32,13 +33,12 @@ struct MatchArgs {
 void match(MatchArgs& a) {
   install_interrupt_handlers();  // first: a stop request during the handshakes too
   Progress::quiet = a.options.quiet;
-  const Scene scene = load_scene(a.scene);
+  Scene scene = load_scene(a.scene);
   limit_handshake_seconds(a.options.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
-  a.options.spec = scene_spec(scene);
-  apply_spec_texts(a.options.spec, a.spec, "--spec");
-  if (a.options.spec.empty()) throw InputError("--spec: every term dropped: a spec needs at least one bound");
+  a.options.spec = ask_scene_for(scene, a.spec);
+  a.options.spec_texts = a.spec;
   a.options.knobs = !a.no_knobs;
   a.options.reference = reference_engine();
   a.options.converged_reference = converged_reference_engine();
@@ -64,7 +64,8 @@ void add_match(CLI::App& app) {
   cmd->add_option("--profile", a->options.profile, "settings profile, comma-separated profiles, or all (default: all)");
   cmd->add_option("--spec", a->spec,
                   "spec terms over the scene's own, KEY=VALUE, comma-separated (overlap, tunnelling, sticking, "
-                  "rest_speed, energy_drift, energy_error, horizon, rolling; VALUE none drops a term)")
+                  "rest_speed, energy_drift, energy_error, horizon, rolling; VALUE none drops a term); the scene "
+                  "asks every engine for it (home's default profile builds itself for it)")
       ->delimiter(',');
   cmd->add_option("--max-halvings", a->options.max_halvings, "finest step tried: dt / 2^this (default 6)")
       ->check(CLI::Range(0, 20));

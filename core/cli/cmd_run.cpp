@@ -17,6 +17,7 @@
 #include "registry.h"
 #include "run_engines.h"
 #include "scene_loader.h"
+#include "spec_option.h"
 #include "validators.h"
 
 namespace ballbench::cli {
@@ -25,6 +26,7 @@ namespace {
 struct RunArgs {
   std::string scene, engines, json, trajectory, profile;
   std::optional<double> dt, duration;
+  std::vector<std::string> spec;
   std::optional<long> steps;
   std::vector<std::string> sets;
   bool quiet = false;
@@ -127,6 +129,7 @@ void run(const RunArgs& a) {
   Scene scene = load_scene(a.scene);
   limit_handshake_seconds(a.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
+  ask_scene_for(scene, a.spec);
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;
   if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
@@ -158,7 +161,7 @@ void run(const RunArgs& a) {
   run_further_placements(results, scene, a.seeds,
                          [&](int k) {
                            Scene placed = load_scene(a.scene, k);
-                           placed.dt = scene.dt, placed.duration = scene.duration;
+                           placed.dt = scene.dt, placed.duration = scene.duration, placed.accuracy = scene.accuracy;
                            return placed;
                          },
                          engines, a.profile, options, a.quiet, a.isolation);
@@ -191,6 +194,10 @@ void add_run(CLI::App& app) {
   cmd->add_option("--scene", a->scene, "built-in scene name or path to a .toml scene file")->required();
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, or all")->required();
   cmd->add_option("--dt", a->dt, "step size in seconds (overrides the scene's)")->check(kPositiveNumber);
+  cmd->add_option("--spec", a->spec,
+                  "the accuracy the scene asks for, KEY=VALUE terms over its own, comma-separated (as for match); "
+                  "home's default profile builds itself for it")
+      ->delimiter(',');
   auto* steps = cmd->add_option("--steps", a->steps, "number of steps (at most 1e9)")->check(kStepCount);
   cmd->add_option("--duration", a->duration, "simulated seconds (overrides the scene's)")
       ->check(kPositiveNumber)

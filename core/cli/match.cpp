@@ -54,13 +54,14 @@ double cost_per_scene_step(double engine_s, const Scene& scene) {
   return engine_s * 1e9 / (std::max(1, scene.n()) * double(std::max(1L, scene.steps())));
 }
 
-std::string run_command(const Scene& scene, const MatchTry& t, bool reference) {
+std::string run_command(const Scene& scene, const MatchTry& t, const MatchOptions& o) {
   // A built-in scene by its name, any other by its file; the step in the fewest digits that read
   // back as it (fmt's shortest round trip).
   const bool builtin = scene.source == scenario_dir() + "/" + scene.name + ".toml";
   std::string cmd = fmt::format("ballbench run --scene {} --engine {} --profile {} --dt {}",
                                 builtin || scene.source.empty() ? scene.name : scene.source, t.engine, t.profile, t.dt);
-  if (!reference) cmd += " --no-reference";
+  if (!o.spec.needs_reference()) cmd += " --no-reference";
+  if (!o.spec_texts.empty()) cmd += fmt::format(" --spec {}", fmt::join(o.spec_texts, ","));
   // Judged at the scene's step times, as the search judged it.
   if (t.halvings > 0) cmd += fmt::format(" --sample-every {}", 1 << t.halvings);
   if (!t.knob.empty()) cmd += fmt::format(" --set {}.{}={}", t.engine, t.knob, json_text(t.value));
@@ -124,7 +125,7 @@ class Search {
       oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
     const int shown = oc.reached ? oc.found : oc.best;
-    if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown], o_.spec.needs_reference());
+    if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown], o_);
     return oc;
   }
 

@@ -34,6 +34,7 @@ inline constexpr double kKnobCostMargin = 0.85;
 struct MatchOptions {
   std::string profile = "all";  // as for `run --profile`
   AccuracySpec spec;
+  std::vector<std::string> spec_texts;  // the --spec terms over the scene's own, for the reproducing commands
   int max_halvings = 6;         // dt / 2^k for k = 0 .. this
   double budget_s = 600;        // wall time for one engine and profile's search (s)
   int repeats = 2;              // timing runs of the found configuration beside its measuring run
