@@ -578,40 +578,37 @@ TEST(ProcessEngine, AHelperTheEngineStartedDoesNotOutliveIt) {
   EXPECT_FALSE(alive) << "helper " << pid << " outlived its engine";
 }
 
+// `ballbench run FLAGS` with the misbehaving engine in `mode` (one that starts a helper); the
+// command's outcome, after checking that the helper did not outlive it.
+testing::CliOutcome run_with_a_helper(const std::string& flags, const std::string& mode) {
+  const std::string pid_file =
+      (std::filesystem::temp_directory_path() / ("bb_" + mode + "." + std::to_string(::getpid()))).string();
+  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 " + flags +
+                                                 " --engine 'process:python3 " + kMisbehaving + " " + mode + " " +
+                                                 pid_file + "'");
+  std::ifstream in(pid_file);
+  long pid = 0;
+  EXPECT_TRUE(in >> pid) << "the engine wrote no helper pid";
+  std::filesystem::remove(pid_file);
+  const bool alive = pid > 0 && still_running(pid);
+  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
+  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
+  return o;
+}
+
 // The same through `ballbench run`, whose runs are in child processes that end without destructors:
 // the helper of the run's engine, and of the engine the handshake started, end with the command.
 TEST(ProcessEngine, AHelperOfAnIsolatedRunDoesNotOutliveTheCommand) {
-  const std::string pid_file =
-      (std::filesystem::temp_directory_path() / ("bb_helper_cli." + std::to_string(::getpid()))).string();
-  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 --engine "
-                                                 "'process:python3 " + kMisbehaving + " helper " + pid_file + "'");
+  const testing::CliOutcome o = run_with_a_helper("", "helper");
   EXPECT_EQ(o.status, 0) << o.err;
-  std::ifstream in(pid_file);
-  long pid = 0;
-  ASSERT_TRUE(in >> pid);
-  std::filesystem::remove(pid_file);
-  const bool alive = still_running(pid);
-  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
-  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
 
 // A run killed at its time limit ends without its quick_exit handler: its parent ends the engine
 // groups the run's child said were live, the helper's with them.
 TEST(ProcessEngine, AHelperOfARunKilledAtItsTimeLimitDoesNotOutliveTheCommand) {
-  const std::string pid_file =
-      (std::filesystem::temp_directory_path() / ("bb_helper_hang." + std::to_string(::getpid()))).string();
-  const testing::CliOutcome o = testing::run_cli("run --quiet --no-reference --scene seed-box --steps 5 --timeout 3 "
-                                                 "--engine 'process:python3 " + kMisbehaving + " helper-hang " +
-                                                 pid_file + "'");
+  const testing::CliOutcome o = run_with_a_helper("--timeout 3", "helper-hang");
   EXPECT_EQ(o.status, 1) << o.err;
   EXPECT_TRUE(has(o.out, "timed_out") || has(o.out, "timed out")) << o.out;
-  std::ifstream in(pid_file);
-  long pid = 0;
-  ASSERT_TRUE(in >> pid);
-  std::filesystem::remove(pid_file);
-  const bool alive = still_running(pid);
-  EXPECT_FALSE(alive) << "helper " << pid << " outlived the command";
-  if (alive) ::kill(static_cast<pid_t>(pid), SIGKILL);
 }
 
 TEST(EnginesFile, RefusesAFolderAndTheNameAll) {
