@@ -59,12 +59,13 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
   md += "| scene (class) | spec | cheapest external engine that meets it | ours | ours against it | most accurate at "
         "the scene's dt |\n|---|---|---|---|---|---|\n";
   std::vector<std::string> misses;
+  bool undecided = false;  // a row where ours met the spec and no external engine did within its budget
   for (const MatchResult& m : in.matches) {
     const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
     const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
     std::string ratio = "n/a";
     if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
-    else if (ours) ratio = "no external engine met it in its budget";
+    else if (ours) ratio = "no external engine met it in its budget", undecided = true;
     else if (ext) ratio = "ours did not meet it";
     md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
                       m.spec.text(), found_text(m, ext), found_text(m, ours), ratio, most_accurate_at_dt(m));
@@ -75,6 +76,11 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     if (!failed.empty())
       misses.push_back(fmt::format("- [`{}`](#{}): {}.", m.scene, accuracy_anchor(m.scene), fmt::join(failed, "; ")));
   }
+  if (undecided)
+    md += "\nWhere no external engine met the spec within its search's budget, the ratio waits on longer "
+          "searches (the external engines need their finest steps there): `ballbench match --scene SCENE --budget "
+          "600 --target 10` runs one, and [core/solver/PERFORMANCE.md](../core/solver/PERFORMANCE.md#where-the-"
+          "targets-stand) holds those measured.\n";
   if (!misses.empty())
     md += fmt::format("\nDid not meet the spec at any configuration tried (the nearest miss; \"out of budget\": the "
                       "search's time ran out first):\n\n{}\n",

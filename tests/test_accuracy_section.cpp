@@ -56,6 +56,16 @@ TEST(AccuracySection, TheSummaryAnswersWithTheRatioAndTheMisses) {
   EXPECT_NE(md.find("home-seed (diverged at every step down to dt/64)"), std::string::npos) << md;
   const std::string misses = md.substr(md.find("Did not meet"));
   EXPECT_EQ(misses.find("home ("), std::string::npos) << misses;  // what met the spec is not a miss
+  EXPECT_EQ(md.find("longer searches"), std::string::npos) << md;  // an external engine met it: no pointer
+
+  // No external engine met it within its budget: the row says so and points to the longer searches.
+  MatchResult undecided = pile();
+  for (MatchOutcome& oc : undecided.outcomes)
+    if (oc.role == role_name(EngineRole::external)) oc.reached = false, oc.best = std::max(oc.found, oc.best), oc.found = -1;
+  in.matches = {undecided};
+  const std::string md2 = summary_section(in, {});
+  EXPECT_NE(md2.find("| no external engine met it in its budget |"), std::string::npos) << md2;
+  EXPECT_NE(md2.find("PERFORMANCE.md#where-the-targets-stand"), std::string::npos) << md2;
 }
 
 TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
