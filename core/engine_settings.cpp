@@ -33,17 +33,23 @@ void SettingsReader::get(const char* key, double& value) {
 
 void SettingsReader::get(const char* key, int& value) {
   if (const auto* v = find(key)) {
-    // A whole number written as a float (16.0, or 1e9 from `--set`) is that number.
-    const bool whole_float = v->is_number_float() && std::isfinite(v->get<double>()) &&
-                             v->get<double>() == std::floor(v->get<double>());
-    if (!v->is_number_integer() && !whole_float) fail(key, fmt::format("expected a whole number, got {}", v->dump()));
-    // get<int>() would wrap a 64-bit number silently (4294967297 becomes 1).
-    const bool float_big = whole_float && std::fabs(v->get<double>()) > 2147483647.0;
-    const auto wide = float_big ? 0LL : whole_float ? static_cast<long long>(v->get<double>()) : v->get<long long>();
-    const bool unsigned_big = v->is_number_unsigned() && v->get<unsigned long long>() > 2147483647ULL;
-    if (float_big || unsigned_big || wide > std::numeric_limits<int>::max() || wide < std::numeric_limits<int>::min())
+    const auto out_of_range = [&] {
       fail(key, fmt::format("{} is out of range (a whole number from {} to {})", v->dump(),
                             std::numeric_limits<int>::min(), std::numeric_limits<int>::max()));
+    };
+    // A whole number written as a float (16.0, or 1e9 from `--set`) is that number.
+    if (v->is_number_float()) {
+      const double d = v->get<double>();
+      if (!std::isfinite(d) || d != std::floor(d)) fail(key, fmt::format("expected a whole number, got {}", v->dump()));
+      if (std::fabs(d) > std::numeric_limits<int>::max()) out_of_range();
+      value = static_cast<int>(d);
+      return;
+    }
+    if (!v->is_number_integer()) fail(key, fmt::format("expected a whole number, got {}", v->dump()));
+    // get<int>() would wrap a 64-bit number silently (4294967297 becomes 1).
+    const auto wide = v->get<long long>();
+    const bool unsigned_big = v->is_number_unsigned() && v->get<unsigned long long>() > 2147483647ULL;
+    if (unsigned_big || wide > std::numeric_limits<int>::max() || wide < std::numeric_limits<int>::min()) out_of_range();
     value = static_cast<int>(wide);
   }
 }

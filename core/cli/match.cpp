@@ -102,8 +102,10 @@ class Search {
         // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
         // a path that has none): it is never a finding, at any step.
         if (c == 0 && tr.status == RunStatus::ok) as_is_trajectory_[k] = last_trajectory_;
-        if (c > 0 && tr.status == RunStatus::ok && !last_trajectory_.empty() && as_is_trajectory_.count(k) &&
-            as_is_trajectory_[k] == last_trajectory_)
+        if (const auto as_is = as_is_trajectory_.find(k); c > 0 && tr.status == RunStatus::ok &&
+                                                             !last_trajectory_.empty() &&
+                                                             as_is != as_is_trajectory_.end() &&
+                                                             as_is->second == last_trajectory_)
           break;
         if (tr.met) {
           // A knob replaces the profile as it is only when it is cheaper beyond timing noise.
@@ -255,19 +257,21 @@ void print_match(const MatchResult& m, std::optional<double> target) {
   }
   // Our solver against the cheapest external engine that met the spec.
   const MatchOutcome* cheapest = cheapest_reached(m, role_name(EngineRole::external));
-  const auto against_target = [&](double ratio) {
+  // The ratio against --target: none where ours did not meet the spec, 0 where no external did.
+  const auto against_target = [&](std::optional<double> ratio) {
     if (!target) return std::string();
-    if (ratio >= *target) return fmt::format(" (target {:g}x: met)", *target);
-    return fmt::format(" (target {:g}x: not met, {:.1f}x short)", *target, *target / ratio);
+    if (!ratio) return fmt::format(" (target {:g}x: not met)", *target);
+    if (*ratio == 0) return fmt::format(" (target {:g}x: undecided within the budget)", *target);
+    if (*ratio >= *target) return fmt::format(" (target {:g}x: met)", *target);
+    return fmt::format(" (target {:g}x: not met, {:.1f}x short)", *target, *target / *ratio);
   };
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::ours)) continue;
     const std::string label = run_label(oc.engine, oc.profile);
     if (!oc.reached)
-      fmt::print("{}: did not meet the spec{}\n", label, target ? fmt::format(" (target {:g}x: not met)", *target) : "");
+      fmt::print("{}: did not meet the spec{}\n", label, against_target(std::nullopt));
     else if (!cheapest)
-      fmt::print("{}: {} ns; no external engine met the spec{}\n", label, cost_text(oc.cost_ns),
-                 target ? fmt::format(" (target {:g}x: undecided within the budget)", *target) : "");
+      fmt::print("{}: {} ns; no external engine met the spec{}\n", label, cost_text(oc.cost_ns), against_target(0.0));
     else
       fmt::print("{}: {:.1f}x cheaper than the cheapest external engine that met the spec ({}, {} ns){}\n", label,
                  cheapest->cost_ns / oc.cost_ns, run_label(cheapest->engine, cheapest->profile),
