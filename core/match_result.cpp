@@ -63,6 +63,17 @@ const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& ro
   return best;
 }
 
+const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role) {
+  const MatchOutcome* nearest = nullptr;
+  double nearest_miss = 0;
+  for (const MatchOutcome& oc : m.outcomes) {
+    if (oc.reached || oc.role != role || oc.best < 0) continue;
+    const double d = miss(m.tries[oc.best], m.spec);
+    if (std::isfinite(d) && (!nearest || d < nearest_miss)) nearest = &oc, nearest_miss = d;
+  }
+  return nearest;
+}
+
 nlohmann::json to_json(const MatchResult& m) {
   nlohmann::json tries = nlohmann::json::array(), outcomes = nlohmann::json::array();
   for (const MatchTry& t : m.tries)

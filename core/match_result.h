@@ -85,6 +85,10 @@ std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec);
 // The cheapest outcome of engines of `role` ("ours", "external") that met the spec, or none.
 const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role);
 
+// Of the outcomes of engines of `role` that did not meet the spec, the one whose nearest try came
+// closest (the smallest miss), or none: the engine to name where none met it.
+const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role);
+
 // "dt", "dt/8": the step of a try that halved the scene's step `halvings` times.
 std::string step_text(int halvings);
 

@@ -41,8 +41,16 @@ std::string most_accurate_at_dt(const MatchResult& m) {
                      equal.size() > shown ? fmt::format(" and {} more", equal.size() - shown) : "");
 }
 
-std::string found_text(const MatchResult& m, const MatchOutcome* oc) {
-  if (!oc) return "none";
+// The cheapest of `role` that met the spec; where none did, the nearest miss, so the reader still
+// has a name and a figure.
+std::string found_text(const MatchResult& m, EngineRole role) {
+  const MatchOutcome* oc = cheapest_reached(m, role_name(role));
+  if (!oc) {
+    const MatchOutcome* near = nearest_unreached(m, role_name(role));
+    return near ? fmt::format("none; nearest: {} ({})", run_label(near->engine, near->profile),
+                              miss_text(m, *near))
+                : "none";
+  }
   return fmt::format("{}, {}: {} ns", run_label(oc->engine, oc->profile), configuration_text(m.tries[oc->found]),
                      cost_text(oc->cost_ns));
 }
@@ -65,10 +73,10 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
     std::string ratio = "n/a";
     if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
-    else if (ours) ratio = "no external engine met it in its budget", undecided = true;
+    else if (ours) ratio = "undecided", undecided = true;
     else if (ext) ratio = "ours did not meet it";
     md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
-                      m.spec.text(), found_text(m, ext), found_text(m, ours), ratio, most_accurate_at_dt(m));
+                      m.spec.text(), found_text(m, EngineRole::external), found_text(m, EngineRole::ours), ratio, most_accurate_at_dt(m));
     std::vector<std::string> failed;
     for (const MatchOutcome& oc : m.outcomes)
       if (!oc.reached && verdict_of(m, oc) != MatchVerdict::unsupported)
