@@ -28,6 +28,7 @@
 #include <fmt/format.h>
 
 #include "fork_join.h"
+#include "metrics/meter_set.h"
 #include "registry.h"
 #include "runner.h"
 #include "scaled_scene.h"
@@ -81,18 +82,20 @@ void tunnelling_benchmark(benchmark::State& state, int n) {
   long passthroughs = 0;
   double total_s = 0;
   for (auto _ : state) {
-    MetricsAccumulator metrics(scene, {});
+    MeterSet metrics(scene, {});
     State prev = states[0], cur;
     double seconds = 0;
     for (long k = 1; k <= kSteps; ++k) {
       cur = states[k];
       const auto t0 = std::chrono::steady_clock::now();
-      const bool ok = metrics.observe_motion(prev, cur);
+      metrics.motion(prev, cur);
+      const bool ok = !metrics.stop_after_motion();
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       benchmark::DoNotOptimize(ok);
       std::swap(prev, cur);
     }
-    passthroughs = metrics.summary().tunnelling_pair + metrics.summary().tunnelling_wall;
+    const MetricValues values = metrics.values();
+    passthroughs = values.count("tunnelling.pair") + values.count("tunnelling.wall");
     state.SetIterationTime(seconds);
     total_s += seconds;
   }

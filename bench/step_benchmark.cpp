@@ -78,7 +78,7 @@ const Scene& bowl_scene(int n) { return shared_scaled_scene(SceneKind::Bowl, n);
 const Scene& fluid_scene(int n) { return shared_scaled_scene(SceneKind::Fluid, n); }
 
 // A centre beyond a wall by more than the largest diameter: the runner's divergence rule
-// (MetricsAccumulator::left_container), which `ballbench run` reports as diverged.
+// (the tunnelling meter's stop, core/metrics/tunnelling_metric.cpp), which `ballbench run` reports as diverged.
 bool left_the_box(const Scene& scene, const State& s) {
   if (scene.container.kind != ContainerKind::Box) return false;
   const double d = 2 * scene.radius.maxCoeff();

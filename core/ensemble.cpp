@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "metrics/catalog.h"
+
 namespace ballbench {
 namespace {
 
@@ -40,20 +42,18 @@ Interval bootstrap_mean(const std::vector<double>& values) {
 }
 
 const std::vector<EnsembleMetric>& ensemble_metrics() {
-  static const std::vector<EnsembleMetric> metrics = {
-      {"E drift", [](const Result& r) { return r.metrics.energy.max_rel_drift; }},
-      {"pos.err", [](const Result& r) -> std::optional<double> {
-         if (r.reference.reference.empty()) return std::nullopt;
-         return r.reference.pos_rms_final;
-       }},
-      {"tunnelling", [](const Result& r) -> std::optional<double> {
-         return r.metrics.tunnelling_wall + r.metrics.tunnelling_pair;
-       }},
-      {"sticking", [](const Result& r) -> std::optional<double> { return r.metrics.sticking_wall + r.metrics.sticking_pair; }},
-      {"pen.max", [](const Result& r) -> std::optional<double> { return r.metrics.penetration_max; }},
-      {"ns/ball-step", [](const Result& r) -> std::optional<double> { return r.ns_per_ball_step; }},
-  };
+  static const std::vector<EnsembleMetric> metrics = [] {
+    std::vector<EnsembleMetric> out;
+    for (const MetricDef& m : metric_catalog())
+      if (!m.ensemble.empty()) out.push_back({m.ensemble, &m});
+    return out;
+  }();
   return metrics;
+}
+
+std::optional<double> EnsembleMetric::read(const Result& r) const {
+  const nlohmann::json v = def->get(r);
+  return v.is_number() ? std::optional(v.get<double>()) : std::nullopt;
 }
 
 std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, const std::string& ours) {

@@ -21,11 +21,14 @@ struct Interval {
 // Percentile bootstrap of the mean (2000 resamples); an empty input gives n = 0.
 Interval bootstrap_mean(const std::vector<double>& values);
 
-// A metric an ensemble summarises: its name (the column) and how to read it from a result (none
-// where the run did not measure it).
+struct MetricDef;
+
+// A metric an ensemble summarises: a catalog row with an ensemble column (metrics/catalog.h).
 struct EnsembleMetric {
-  std::string name;
-  std::optional<double> (*read)(const Result&);
+  std::string name;  // the column
+  const MetricDef* def;
+  // Its figure in a result: none where the run did not measure it.
+  std::optional<double> read(const Result& r) const;
 };
 const std::vector<EnsembleMetric>& ensemble_metrics();
 

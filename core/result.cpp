@@ -13,6 +13,7 @@
 #include "json_layout.h"
 #include "json_value.h"
 #include "metrics/catalog.h"
+#include "metrics/meter_set.h"
 
 namespace ballbench {
 namespace {
@@ -233,8 +234,7 @@ nlohmann::json result_shape() {
   r.reference.available = true;
   r.reference.horizon = 0;
   r.reference.reference_failed_step = 0;
-  r.speed_ks = r.speed_ks_critical = r.jitter = r.angle_of_repose = 0;
-  r.rolling = {0, 0, 0};
+  r.metrics = resting_values();  // every metric as its meter writes it: numbers, counts, [x, y] vectors
   r.skipped = {""};
   auto& s = r.series;
   s.t = s.energy = s.com_x = s.com_y = s.pos_err = s.frame_t = s.radius = {0};

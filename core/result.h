@@ -11,7 +11,8 @@
 #include <array>
 
 #include "metrics/events.h"
-#include "metrics/metrics.h"
+#include "metrics/metric_values.h"
+#include "metrics/metrics_config.h"
 #include "metrics/reference_error.h"
 #include "run_status.h"
 #include "scene.h"
@@ -50,25 +51,13 @@ struct Result {
   // and "ns_per_ball_step_pipe" (engine_s per ball-step), present only for such engines.
   std::optional<double> engine_process_s;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
-  MetricsSummary metrics;
+  // Every metric of the run's states by catalog key (metrics/catalog.h), as its meters measured
+  // them; none for a metric its scene does not call for, or a run not measured.
+  MetricValues metrics;
   // Where and when: the run's first kEventsKept tunnelling and sticking events (metrics/events.h),
   // in the order counted; metrics' counts are the totals.
   std::vector<Event> events;
   ReferenceErrorSummary reference;  // error against `exact`, when it ran alongside
-  // Kolmogorov-Smirnov statistic of the final speeds against the Rayleigh law, and its 1% critical
-  // value; only for scenes where it means something (metrics/speed_distribution.h).
-  std::optional<double> speed_ks, speed_ks_critical;
-  // Jitter: RMS speed of the final state (m/s), for scenes with gravity and walls, where balls
-  // should come to rest (a pile); none elsewhere.
-  std::optional<double> jitter;
-  // Scenes that ask for `rolling` (metrics/rolling.h): the ball's final velocity along x (m/s) and
-  // the closed forms it is judged against (from the scene); none elsewhere.
-  struct Rolling {
-    std::optional<double> speed, expected_speed, expected_time_to_roll;
-  } rolling;
-  // Scenes that ask for `angle_of_repose` (metrics/angle_of_repose.h): the final heap's (degrees);
-  // none elsewhere, or where no flank could be measured.
-  std::optional<double> angle_of_repose;
   std::vector<std::string> skipped;  // metrics not computed for this scene, each with the reason
   // Sampled every ~steps / RunOptions::series_points steps, for figures: time (s), energy (J),
   // centre of mass (m), position RMS error against the reference (m; empty without one), the

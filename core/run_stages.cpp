@@ -8,9 +8,6 @@
 
 #include "input_error.h"
 #include "interrupt.h"
-#include "metrics/angle_of_repose.h"
-#include "metrics/rolling.h"
-#include "metrics/speed_distribution.h"
 #include "trajectory_csv.h"
 
 namespace ballbench {
@@ -49,7 +46,7 @@ void record(RunContext& c, long k) {
   }
   if (k % c.series_every != 0 && k != c.r.steps) return;
   series.t.push_back(state.t);
-  series.energy.push_back(c.metrics->summary().energy.final);
+  series.energy.push_back(c.metrics->now("energy.final").value_or(0.0));
   const Eigen::Vector2d com = state.pos.transpose() * scene.mass / scene.mass.sum();
   series.com_x.push_back(com.x()), series.com_y.push_back(com.y());
   if (c.reference) series.pos_err.push_back(c.error->summary().pos_rms_final);
@@ -59,7 +56,7 @@ void record(RunContext& c, long k) {
 // The sampled metrics, the figures and the checksums see the state of step k.
 void sample(RunContext& c, long k) {
   c.sampled = k;
-  c.metrics->observe(c.state);
+  c.metrics->sample(c.state);
   record(c, k);
   c.final_sum = state_checksum(c.state), c.trajectory_sum = chain_checksum(c.trajectory_sum, c.final_sum);
 }
@@ -107,23 +104,19 @@ bool advance(RunContext& c, long k) {
     return stop(c, RunStatus::failed, k,
                 fmt::format("step {}: the engine read back no angular velocities and angles", k));
   r.out_of_plane_max = std::max(r.out_of_plane_max, c.engine->out_of_plane());
-  if (!c.metrics->observe_motion(c.state, c.next))  // tunnelling, every step, and finiteness in one sweep
-    return stop(c, RunStatus::diverged, k, fmt::format("non-finite position or velocity at step {}", k));
-  // A ball out of the box: no figure of the run means anything from here; like a non-finite
-  // state, the run ends with the state before.
-  if (c.metrics->left_container())
-    return stop(c, RunStatus::diverged, k,
-                fmt::format("a ball left the container (beyond a wall by more than its diameter) at step {}", k));
+  // Tunnelling, every step, with finiteness and leaving the box in the same sweep: after a state
+  // that is not finite or a ball out of the box, the run ends with the state before.
+  c.metrics->motion(c.state, c.next);
+  if (const auto why = c.metrics->stop_after_motion())
+    return stop(c, RunStatus::diverged, k, fmt::format("{} at step {}", *why, k));
   std::swap(c.state, c.next);
   step_reference(c, k, true);
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
   if (k % c.every == 0 || k == r.steps) {
     sample(c, k);
-    if (c.metrics->energy_blew_up())
-      return stop(c, RunStatus::diverged, k,
-                  fmt::format("energy above {} x its initial value at step {}",
-                              c.options.metrics.divergence_energy_factor, k));
+    if (const auto why = c.metrics->stop_after_sample())
+      return stop(c, RunStatus::diverged, k, fmt::format("{} at step {}", *why, k));
   }
   return true;
 }
@@ -261,36 +254,10 @@ void final_metrics(RunContext& c) {
   const Scene& scene = c.scene;
   const State& state = c.state;
   Result& r = c.r;
-  r.metrics = c.metrics->summary();
+  c.metrics->final_state(state);
+  c.metrics->write(r.metrics);
   r.events = c.metrics->events();
-  if (speed_distribution_applies(scene)) {
-    r.speed_ks = rayleigh_ks_statistic(state);
-    r.speed_ks_critical = rayleigh_ks_critical(scene.n());
-  } else {
-    r.skipped.push_back(
-        "speed distribution (Rayleigh KS): only for elastic, gravity-free, equal-mass scenes of >= 100 balls");
-  }
-  if (scene.features().gravity && scene.features().walls)
-    r.jitter = std::sqrt(state.vel.rowwise().squaredNorm().mean());
-  else
-    r.skipped.push_back("jitter (final RMS speed): only for scenes with gravity and walls, where balls come to rest");
-  if (scene.metrics.rolling) {
-    const RollingClosedForm closed = rolling_closed_form(scene);
-    r.rolling.speed = state.vel(0, 0);
-    r.rolling.expected_speed = closed.speed;
-    r.rolling.expected_time_to_roll = closed.time_to_roll;
-  }
-  if (scene.metrics.angle_of_repose) {
-    r.angle_of_repose = angle_of_repose(state, scene);
-    if (!r.angle_of_repose)
-      r.skipped.push_back(fmt::format("{}: no flank of the final heap had {} columns within [{:g} H, {:g} H] of its "
-                                      "height H (a layer spread flat, or a column standing)",
-                                      kReposeUnmeasuredNote, kReposeMinColumns, kReposeBandLow, kReposeBandHigh));
-  }
-  if (scene.features().gravity || scene.features().walls)
-    r.skipped.push_back("momentum drift is reported but not judged: walls and gravity change momentum");
-  if (!r.metrics.slip.measured)
-    r.skipped.push_back("slip and time to roll: only for scenes that rotate and have walls");
+  for (std::string& note : c.metrics->notes()) r.skipped.push_back(std::move(note));
   if (!c.options.reference) r.skipped.push_back("error against the reference: no reference ran (--no-reference)");
   if (c.error) {
     r.reference = c.error->summary();

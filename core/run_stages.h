@@ -18,7 +18,7 @@
 #include <string>
 
 #include "engine.h"
-#include "metrics/metrics.h"
+#include "metrics/meter_set.h"
 #include "metrics/reference_error.h"
 #include "result.h"
 #include "run_status.h"
@@ -56,8 +56,9 @@ struct RunContext {
   double ref_dt = 0;
   std::optional<Scene> converged_scene;  // the scene at a converged run's step
 
-  // set_up_sampling: the metrics, and the steps at which they, the figures and the frames sample.
-  std::optional<MetricsAccumulator> metrics;
+  // set_up_sampling: the meters of the metrics the scene calls for, and the steps at which they,
+  // the figures and the frames sample.
+  std::optional<MeterSet> metrics;
   long every = 1;         // the metrics' sample spacing, a multiple of the stride
   long series_every = 1;  // figures' spacing, a multiple of `every`
   long frame_every = 0;   // frames' spacing (0: no frames)
@@ -97,9 +98,9 @@ void step_loop(RunContext& c);
 // Samples the last good state when the run ended between samples (steps_done past `sampled`).
 void sample_last(RunContext& c);
 
-// Reads: the final state, the metrics, the reference's tracker. Writes: r.metrics, r.events, the
-// final-state metrics (speed distribution, jitter, rolling, angle of repose), r.reference, the
-// skipped notes, r.series.final_pos and the checksums.
+// Reads: the final state, the meters, the reference's tracker. Writes: r.metrics (the final-state
+// meters see the last good state first), r.events, r.reference, the skipped notes,
+// r.series.final_pos and the checksums.
 void final_metrics(RunContext& c);
 
 // Reads: engine_s, harness_start, r.steps_done. Writes: r.engine_s, r.engine_process_s,

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine.h"
-#include "metrics/metrics.h"
+#include "metrics/metrics_config.h"
 #include "result.h"
 #include "scene.h"
 

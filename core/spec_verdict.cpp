@@ -12,13 +12,13 @@ namespace ballbench {
 
 std::optional<double> spec_figure(SpecTerm t, const Result& r) {
   if (r.steps_done < 1) return std::nullopt;
-  const MetricsSummary& m = r.metrics;
+  const MetricValues& m = r.metrics;
   switch (t) {
-    case SpecTerm::overlap: return m.penetration_after_start;
-    case SpecTerm::tunnelling: return double(m.tunnelling_wall + m.tunnelling_pair);
-    case SpecTerm::sticking: return double(m.sticking_wall + m.sticking_pair);
-    case SpecTerm::rest_speed: return r.jitter;
-    case SpecTerm::energy_drift: return m.energy.max_rel_drift;
+    case SpecTerm::overlap: return m.number("penetration.after_start");
+    case SpecTerm::tunnelling: return double(m.count("tunnelling.wall") + m.count("tunnelling.pair"));
+    case SpecTerm::sticking: return double(m.count("sticking.wall") + m.count("sticking.pair"));
+    case SpecTerm::rest_speed: return m.number("jitter");
+    case SpecTerm::energy_drift: return m.number("energy.max_rel_drift");
     case SpecTerm::energy_error:
       if (!r.reference.available) return std::nullopt;
       return r.reference.energy_rel_max;
@@ -29,8 +29,11 @@ std::optional<double> spec_figure(SpecTerm t, const Result& r) {
         return (r.reference.reference_failed_step >= 0 ? r.reference.reference_failed_step : r.steps_done) * r.dt;
       return *r.reference.horizon;
     case SpecTerm::rolling:
-      if (!r.rolling.speed || !r.rolling.expected_speed || *r.rolling.expected_speed == 0) return std::nullopt;
-      return std::abs(*r.rolling.speed - *r.rolling.expected_speed) / std::abs(*r.rolling.expected_speed);
+      {
+        const auto speed = m.number("rolling.speed"), expected = m.number("rolling.expected_speed");
+        if (!speed || !expected || *expected == 0) return std::nullopt;
+        return std::abs(*speed - *expected) / std::abs(*expected);
+      }
   }
   return std::nullopt;
 }

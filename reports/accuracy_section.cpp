@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "markdown_cell.h"
 #include "result.h"
 
 namespace ballbench {
@@ -24,16 +25,6 @@ std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
     if (ratio > worst_ratio) worst_ratio = ratio, worst = fmt::format("{} {}", d.key, figure_text(f));
   }
   return worst;
-}
-
-std::string markdown_cell(std::string s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += ' ';
-    else out += c;
-  }
-  return out;
 }
 
 void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {

@@ -103,11 +103,12 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   const std::string base = slug(scene) + "-energy";
   std::string first, others, reference;
   for (const Result* r : runs) {
-    if (r->series.t.empty() || r->metrics.energy.initial <= 0) continue;
+    const double e0 = r->metrics.value("energy.initial");
+    if (r->series.t.empty() || e0 <= 0) continue;
     const std::string data = base + "-" + slug(run_label(*r)) + ".dat";
     std::ofstream f(dir / data);
     for (size_t k = 0; k < r->series.t.size(); ++k)
-      f << r->series.t[k] << ' ' << r->series.energy[k] / r->metrics.energy.initial << '\n';
+      f << r->series.t[k] << ' ' << r->series.energy[k] / e0 << '\n';
     const std::string item = fmt::format("'{}' with lines lw 2 {} title {}", data, line_style(r->engine, r->profile),
                                          quoted(run_label(*r)));
     std::string& panel = run_style(r->engine, r->profile).dash == 1 ? first : others;

@@ -50,11 +50,13 @@ std::string source_text(const Result& r) {
 void put_rolling(Markdown& put, const std::string& scene, const std::vector<const Result*>& rows) {
   const Result* any = nullptr;
   for (const Result* r : rows)
-    if (r->rolling.expected_speed) any = r;
+    if (r->metrics.has("rolling.expected_speed")) any = r;
   put("### `{}`: rolling against the closed form\n\n", scene);
   put("`{}`; closed forms from the scene (core/metrics/rolling.h): it ends rolling at **{:.4g} m/s**{}.\n\n",
-      source_text(*any), *any->rolling.expected_speed,
-      any->rolling.expected_time_to_roll ? fmt::format(" from t = **{:.3f} s**", *any->rolling.expected_time_to_roll) : "");
+      source_text(*any), any->metrics.value("rolling.expected_speed"),
+      any->metrics.has("rolling.expected_time_to_roll")
+          ? fmt::format(" from t = **{:.3f} s**", any->metrics.value("rolling.expected_time_to_roll"))
+          : "");
   put("The time to roll is the first sample from which the ball rolls (slip below the roll tolerance), so it lies "
       "up to a step after the closed form; `never`: still slipping at the end.\n\n");
   put("| engine | profile | status | final speed (m/s) | vs closed form | time to roll (s) | vs closed form | slip at end "
@@ -64,18 +66,18 @@ void put_rolling(Markdown& put, const std::string& scene, const std::vector<cons
       put("| {0} | {1} | {2} | {3} | {3} | {3} | {3} | {3} |\n", r->engine, r->profile, status_text(*r), kNoData);
       continue;
     }
-    const auto& roll = r->rolling;
+    const MetricValues& m = r->metrics;
+    const auto speed = m.number("rolling.speed"), expected = m.number("rolling.expected_speed");
+    const auto expected_time = m.number("rolling.expected_time_to_roll"), t = m.number("slip.time_to_roll");
     std::string speed_error = kNoData, time_error = kNoData;
-    if (roll.speed && roll.expected_speed && *roll.expected_speed != 0)
-    {
-      const double rel = 100 * (*roll.speed - *roll.expected_speed) / std::abs(*roll.expected_speed);
+    if (speed && expected && *expected != 0) {
+      const double rel = 100 * (*speed - *expected) / std::abs(*expected);
       speed_error = std::abs(rel) < 0.005 ? "0.00%" : fmt::format("{:+.2f}%", rel);  // no "-0.00%"
     }
-    const auto& t = r->metrics.slip.time_to_roll;
-    if (t && roll.expected_time_to_roll) time_error = fmt::format("{:+.3f} s", *t - *roll.expected_time_to_roll);
-    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_none(roll.speed, "{:.4f}"),
-        speed_error, t ? fmt::format("{:.2f}", *t) : "never", time_error,
-        r->metrics.slip.measured ? fmt::format("{:.2g}", r->metrics.slip.final_max) : kNoData);
+    if (t && expected_time) time_error = fmt::format("{:+.3f} s", *t - *expected_time);
+    const auto slip = m.number("slip.final_max");
+    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_none(speed, "{:.4f}"),
+        speed_error, t ? fmt::format("{:.2f}", *t) : "never", time_error, slip ? fmt::format("{:.2g}", *slip) : kNoData);
   }
   put("\n");
 }
@@ -108,12 +110,13 @@ void put_repose(Markdown& put, const std::vector<std::string>& scenes,
       }
       const Result& r = **it;
       if (!ran(r) || r.status != RunStatus::ok) {
-        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.angle_of_repose, "{:.1f}"))
+        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.metrics.number("angle_of_repose"), "{:.1f}"))
                    : std::string(run_status_text(r.status)));
         if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], cell(r.error)));
         continue;
       }
-      put(" {} |", r.angle_of_repose ? fmt::format("{:.1f}", *r.angle_of_repose) : "none");
+      const auto angle = r.metrics.number("angle_of_repose");
+      put(" {} |", angle ? fmt::format("{:.1f}", *angle) : "none");
     }
     put("\n");
   }
@@ -131,11 +134,11 @@ std::string friction_section(const std::vector<Result>& results, const std::vect
   for (const std::string& scene : scene_order)
     for (const Result& r : results) {
       if (r.scene != scene) continue;
-      if (r.rolling.expected_speed) add_once(rolling, scene);
+      if (r.metrics.has("rolling.expected_speed")) add_once(rolling, scene);
       const bool unmeasured = std::any_of(r.skipped.begin(), r.skipped.end(), [](const std::string& note) {
         return note.starts_with(kReposeUnmeasuredNote);
       });
-      if (r.angle_of_repose || unmeasured) add_once(repose, scene);
+      if (r.metrics.has("angle_of_repose") || unmeasured) add_once(repose, scene);
     }
   if (rolling.empty() && repose.empty()) return "";
   const auto rows = [&](const std::string& scene) {

@@ -16,6 +16,7 @@
 #include "data_file.h"
 #include "input_error.h"
 #include "json_value.h"
+#include "markdown_cell.h"
 #include "metrics/catalog.h"
 #include "no_data.h"
 #include "ensemble.h"
@@ -29,20 +30,13 @@
 namespace ballbench {
 namespace {
 
-// Text for a markdown table cell: a `|` would end the cell.
-std::string table_cell(const std::string& text) {
-  std::string out;
-  for (char c : text) c == '|' ? out += "\\|" : out += c;
-  return out;
-}
-
 // A built-in scene as `scenarios/NAME.toml`, whatever folder the results were made in.
 std::string display_path(const std::string& source) {
   const std::filesystem::path p(source);
   return p.parent_path().filename() == "scenarios" ? "scenarios/" + p.filename().string() : source;
 }
 
-std::string times(int n) { return n == 1 ? "once" : fmt::format("{} times", n); }
+std::string times(long n) { return n == 1 ? "once" : fmt::format("{} times", n); }
 
 std::string verdict(const Result& r) {
   if (!r.measured() || r.status == RunStatus::unsupported || r.status == RunStatus::failed ||
@@ -52,16 +46,17 @@ std::string verdict(const Result& r) {
   std::vector<std::string> parts;
   if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   const auto& m = r.metrics;
-  const int tunnels = m.tunnelling_wall + m.tunnelling_pair, sticks = m.sticking_wall + m.sticking_pair;
+  const long tunnel_wall = m.count("tunnelling.wall"), tunnel_pair = m.count("tunnelling.pair");
+  const long stick_wall = m.count("sticking.wall"), stick_pair = m.count("sticking.pair");
+  const long tunnels = tunnel_wall + tunnel_pair, sticks = stick_wall + stick_pair;
   parts.push_back(tunnels ? fmt::format("tunnelled {} ({} through walls, {} through balls)", times(tunnels),
-                                        m.tunnelling_wall, m.tunnelling_pair)
+                                        tunnel_wall, tunnel_pair)
                           : "no tunnelling");
-  parts.push_back(sticks ? fmt::format("got stuck {} ({} in walls, {} in balls)", times(sticks), m.sticking_wall,
-                                       m.sticking_pair)
+  parts.push_back(sticks ? fmt::format("got stuck {} ({} in walls, {} in balls)", times(sticks), stick_wall, stick_pair)
                          : "no sticking");
   // Only where energy should be kept: with restitution below 1 the loss is the scene's physics.
-  if (m.energy.max_rel_drift && r.scene_features && r.scene_features->elastic)
-    parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *m.energy.max_rel_drift));
+  if (const auto drift = m.number("energy.max_rel_drift"); drift && r.scene_features && r.scene_features->elastic)
+    parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *drift));
   if (r.measured()) parts.push_back(fmt::format("{:.0f} ns per ball-step", r.ns_per_ball_step));
   return fmt::format("{}", fmt::join(parts, "; "));
 }
@@ -131,7 +126,8 @@ std::vector<Column> columns(const SceneView& view) {
        nullptr}};
   for (const MetricDef& m : metric_catalog()) {
     if (m.column.empty()) continue;
-    const bool shown = view.features ? meaningful_on(m.meaningful, *view.features) : m.meaningful != MeaningfulOn::no_scene;
+    const bool shown =
+        view.features ? meaningful_on(m.meaningful, *view.features, view.chaotic) : m.meaningful != MeaningfulOn::no_scene;
     Column c{m.column,
              [&m](const Result& r) {
                const nlohmann::json v = m.get(r);
@@ -222,7 +218,7 @@ void put_scene_table(MarkdownBuffer& put, const std::vector<const Result*>& rows
       std::string cell = r->measured() || c == cols.front() ? c->text(*r) : kNoData;
       if (bold)
         if (const auto best = best_value(*c, rows); best && rank_value(*c, *r) == best) cell = "**" + cell + "**";
-      put(" {} |", table_cell(cell));
+      put(" {} |", markdown_cell(cell));
     }
     put("\n");
   }
@@ -254,7 +250,7 @@ std::string results_file(const ReportInputs& in, const std::string& scene) {
 void put_initial_overlap(MarkdownBuffer& put, const std::vector<const Result*>& rows) {
   std::vector<double> initial;
   for (const Result* r : rows)
-    if (r->measured()) initial.push_back(r->metrics.penetration_initial);
+    if (r->measured()) initial.push_back(r->metrics.value("penetration.initial"));
   if (initial.empty()) return;
   const auto [lo, hi] = std::minmax_element(initial.begin(), initial.end());
   if (*hi <= rows.front()->metrics_config.contact_tolerance) return;
@@ -326,7 +322,7 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
   for (const SweepPoint* p : front) {
     const auto [lo, hi] = std::minmax_element(p->engine_s.begin(), p->engine_s.end());
     put("| {} | {} | {} | {} | {:.3g} [{:.3g}, {:.3g}] | {:.0f} | {:.3g} | {:.3g} | {} | {} |\n", p->engine, p->profile,
-        table_cell(setting_text(*p)), p->dt, 1e3 * p->engine_s_median(), 1e3 * *lo, 1e3 * *hi, p->ns_median(),
+        markdown_cell(setting_text(*p)), p->dt, 1e3 * p->engine_s_median(), 1e3 * *lo, 1e3 * *hi, p->ns_median(),
         p->pos_rms, p->energy_rel, p->tunnelling, p->sticking);
   }
   // An engine and profile that refused the scene at every point is named once, with its reason.
@@ -342,7 +338,7 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
       failed.push_back(fmt::format("{} {}: {}{}", run_label(p.engine, p.profile), setting_text(p), run_status_text(p.status),
                                    p.error.empty() ? "" : " (" + p.error + ")"));
   if (!failed.empty()) put("\nPoints that did not complete: {}.\n", fmt::join(failed, "; "));
-  for (const auto& [label, why] : refused) put("\n{} refused the scene at every point: {}.\n", label, table_cell(why));
+  for (const auto& [label, why] : refused) put("\n{} refused the scene at every point: {}.\n", label, markdown_cell(why));
   put("\n");
 }
 
@@ -370,10 +366,10 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
       for (const FrontierRow& r : f.rows)
         if (run_label(r.engine, r.profile) == e && r.knob == k) {
           if (refused(r))
-            put(" {} |", table_cell(r.failed_next));
+            put(" {} |", markdown_cell(r.failed_next));
           else
             put(" {} ({}) |", r.factor == 0 ? "none" : fmt::format("{:.4g}", r.base * r.factor),
-                r.failed_next.empty() ? "passed every level" : "next: " + table_cell(r.failed_next));
+                r.failed_next.empty() ? "passed every level" : "next: " + markdown_cell(r.failed_next));
         }
     put("\n");
   }
@@ -507,7 +503,7 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
     std::vector<std::string> failures;
     for (const BenchRow& r : bench.rows)
       if (r.scene == scene && !r.error.empty())
-        failures.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, table_cell(r.error)));
+        failures.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, markdown_cell(r.error)));
     if (!failures.empty()) put("\nFailed: {}.\n", fmt::join(failures, "; "));
     for (const BenchRow& r : bench.pour)
       if (r.scene == scene && role_of(in, r.engine) == EngineRole::ours && r.error.empty() && r.steps_per_s)
@@ -533,7 +529,15 @@ void put_ensemble(MarkdownBuffer& put, const ReportInputs& in, const std::string
   for (const Result& r : runs)
     if (ours.empty() && role_of(in, r.engine) == EngineRole::ours) ours = run_label(r);
   const auto rows = summarise_ensemble(runs, ours);
+  // The columns that mean something on this scene, as in its table: no energy drift where
+  // restitution is below 1, no final error where every engine parts from the reference.
+  std::vector<const Result*> all;
+  for (const Result& r : runs) all.push_back(&r);
+  const SceneView view = scene_view(all);
+  std::vector<size_t> shown;
   const auto& metrics = ensemble_metrics();
+  for (size_t k = 0; k < metrics.size(); ++k)
+    if (!view.features || meaningful_on(metrics[k].def->meaningful, *view.features, view.chaotic)) shown.push_back(k);
   put("Over {} random placements (the scene's seeds offset by 0 .. {}; the table above is offset 0): each metric's mean "
       "over the runs that ended ok, with its 95% confidence interval (percentile bootstrap, 2000 resamples). {}\n\n",
       seeds.size(), seeds.size() - 1,
@@ -543,13 +547,13 @@ void put_ensemble(MarkdownBuffer& put, const ReportInputs& in, const std::string
                                  "not significantly different.",
                                  ours));
   put("| engine | ok |");
-  for (const auto& m : metrics) put(" {} |", m.name);
+  for (size_t k : shown) put(" {} |", metrics[k].name);
   put("\n|---|---:|");
-  for (size_t k = 0; k < metrics.size(); ++k) put("---|");
+  for (size_t k = 0; k < shown.size(); ++k) put("---|");
   put("\n");
   for (const EnsembleRow& row : rows) {
     put("| {} | {} |", row.label, row.placements);
-    for (size_t k = 0; k < metrics.size(); ++k)
+    for (size_t k : shown)
       if (!row.metrics[k]) {
         put(" {} |", kNoData);
       } else {
@@ -596,7 +600,7 @@ void put_calibration(MarkdownBuffer& put, const CalibrationResult& c) {
   for (const CalibrationPoint& p : c.points)
     if (!p.measured() && p.status != RunStatus::unsupported && !p.error.empty())
       notes.push_back(fmt::format("{} {} e {} at {} m/s: {}", run_label(p.engine, p.profile), p.contact, p.requested,
-                                  p.speed, table_cell(p.error)));
+                                  p.speed, markdown_cell(p.error)));
   if (!notes.empty()) put("Not measured: {}.\n\n", fmt::join(notes, "; "));
 }
 
@@ -643,7 +647,7 @@ void put_machines(MarkdownBuffer& put, const nlohmann::json& run) {
   if (!shards.is_array() || shards.empty()) {
     put("| | |\n|---|---|\n");
     for (const char* k : kFields)
-      if (run.contains(k)) put("| {} | {} |\n", k, table_cell(json_text(run[k])));
+      if (run.contains(k)) put("| {} | {} |\n", k, markdown_cell(json_text(run[k])));
     return;
   }
   put("Merged from {} shards, each run on its own (`report --shard I/N`; the report's parts dealt round-robin), "
@@ -657,7 +661,7 @@ void put_machines(MarkdownBuffer& put, const nlohmann::json& run) {
   put("\n");
   const auto row = [&](const char* name, const std::function<std::string(const nlohmann::json&)>& cell) {
     put("| {} |", name);
-    for (const auto& s : shards) put(" {} |", table_cell(cell(s)));
+    for (const auto& s : shards) put(" {} |", markdown_cell(cell(s)));
     put("\n");
   };
   for (const char* k : kFields)
@@ -820,7 +824,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   }
   put("| engine | version | profiles | limits that shape its results |\n|---|---|---|---|\n");
   for (const auto& e : engine_order)
-    put("| {} | {} | {} | {} |\n", e, versions[e], fmt::join(profiles[e], ", "), table_cell(limits[e]));
+    put("| {} | {} | {} | {} |\n", e, versions[e], fmt::join(profiles[e], ", "), markdown_cell(limits[e]));
   std::vector<std::string> settings_links;
   for (const auto& scene : scene_order)
     settings_links.push_back(fmt::format("[{0}]({0})", results_file(in, scene)));

@@ -53,7 +53,6 @@ nlohmann::json run_json(const Result& r) {
     if (e.j >= 0) j["j"] = e.j;
     events.push_back(std::move(j));
   }
-  const MetricsSummary& m = r.metrics;
   const RunStyle style = run_style(r.engine, r.profile);
   return {{"label", label(r)},
           {"engine", r.engine},
@@ -66,13 +65,13 @@ nlohmann::json run_json(const Result& r) {
           {"frames", std::move(frames)},
           {"t", r.series.t},
           {"energy", std::move(energy)},
-          {"e0", m.energy.initial},
+          {"e0", r.metrics.value("energy.initial")},
           {"events", std::move(events)},
           {"totals",
-           {{"tunnel-wall", m.tunnelling_wall},
-            {"tunnel-pair", m.tunnelling_pair},
-            {"stick-wall", m.sticking_wall},
-            {"stick-pair", m.sticking_pair}}}};
+           {{"tunnel-wall", r.metrics.count("tunnelling.wall")},
+            {"tunnel-pair", r.metrics.count("tunnelling.pair")},
+            {"stick-wall", r.metrics.count("sticking.wall")},
+            {"stick-pair", r.metrics.count("sticking.pair")}}}};
 }
 
 std::vector<std::string> track_colours() {

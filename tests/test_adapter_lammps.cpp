@@ -146,10 +146,10 @@ TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
     o.profile = profile;
     const Result r = run_engine(s, find_engine("lammps"), o);
     ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-    ASSERT_TRUE(r.metrics.energy.max_rel_drift);
-    const double drift = std::abs(r.metrics.energy.final - r.metrics.energy.initial) / r.metrics.energy.initial;
+    ASSERT_TRUE(r.metrics.number("energy.max_rel_drift"));
+    const double drift = std::abs(r.metrics.value("energy.final") - r.metrics.value("energy.initial")) / r.metrics.value("energy.initial");
     std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %d\n", profile,
-                drift, *r.metrics.energy.max_rel_drift, r.metrics.tunnelling_wall);
+                drift, *r.metrics.number("energy.max_rel_drift"), r.metrics.count("tunnelling.wall"));
     EXPECT_LT(drift, 1e-4) << profile;
   }
 }
@@ -240,22 +240,22 @@ TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
   const Result two = run_engine(s, find_engine("lammps"), o);
   ASSERT_EQ(one.status, RunStatus::ok) << one.error;
   ASSERT_EQ(two.status, RunStatus::ok) << two.error;
-  EXPECT_EQ(two.metrics.samples, 5);  // steps 0, 5, 10, 15, 20
+  EXPECT_EQ(two.metrics.count("samples"), 5);  // steps 0, 5, 10, 15, 20
   EXPECT_EQ(two.metrics_config.sample_every, 5);
   EXPECT_NE(std::find_if(two.skipped.begin(), two.skipped.end(),
                          [](const std::string& note) { return note.rfind(kStrideNote, 0) == 0; }),
             two.skipped.end());
   const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); };
-  EXPECT_TRUE(near(one.metrics.energy.final, two.metrics.energy.final))
-      << one.metrics.energy.final << " vs " << two.metrics.energy.final;
-  EXPECT_TRUE(near(one.metrics.energy.max_abs_drift, two.metrics.energy.max_abs_drift));
-  EXPECT_TRUE(near(one.metrics.momentum.final.x(), two.metrics.momentum.final.x()));
-  EXPECT_TRUE(near(one.metrics.momentum.final.y(), two.metrics.momentum.final.y()));
-  EXPECT_TRUE(near(one.metrics.penetration_max, two.metrics.penetration_max));
-  EXPECT_EQ(one.metrics.tunnelling_wall + one.metrics.tunnelling_pair, two.metrics.tunnelling_wall + two.metrics.tunnelling_pair);
-  EXPECT_EQ(one.metrics.sticking_wall + one.metrics.sticking_pair, two.metrics.sticking_wall + two.metrics.sticking_pair);
-  std::printf("lammps 2 ranks vs 1: energy %.17g vs %.17g, checksums %s\n", two.metrics.energy.final,
-              one.metrics.energy.final, one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
+  EXPECT_TRUE(near(one.metrics.value("energy.final"), two.metrics.value("energy.final")))
+      << one.metrics.value("energy.final") << " vs " << two.metrics.value("energy.final");
+  EXPECT_TRUE(near(one.metrics.value("energy.max_abs_drift"), two.metrics.value("energy.max_abs_drift")));
+  EXPECT_TRUE(near(one.metrics.vec("momentum.final").x(), two.metrics.vec("momentum.final").x()));
+  EXPECT_TRUE(near(one.metrics.vec("momentum.final").y(), two.metrics.vec("momentum.final").y()));
+  EXPECT_TRUE(near(one.metrics.value("penetration.max"), two.metrics.value("penetration.max")));
+  EXPECT_EQ(one.metrics.count("tunnelling.wall") + one.metrics.count("tunnelling.pair"), two.metrics.count("tunnelling.wall") + two.metrics.count("tunnelling.pair"));
+  EXPECT_EQ(one.metrics.count("sticking.wall") + one.metrics.count("sticking.pair"), two.metrics.count("sticking.wall") + two.metrics.count("sticking.pair"));
+  std::printf("lammps 2 ranks vs 1: energy %.17g vs %.17g, checksums %s\n", two.metrics.value("energy.final"),
+              one.metrics.value("energy.final"), one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
 }
 
 TEST(LammpsAdapter, IsDeterministic) {

@@ -370,7 +370,7 @@ double seed_box_escapes(const std::string& engine, const std::string& profile) {
   const Scene s = load_scene("seed-box");
   const Result r = run_engine(s, find_engine(engine), o);
   if (r.status != RunStatus::ok) return HUGE_VAL;
-  return r.metrics.tunnelling_wall;
+  return r.metrics.count("tunnelling.wall");
 }
 
 // A friction case's engine, built for its scene; or, when there is none to run, the case's figure:

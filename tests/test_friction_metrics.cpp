@@ -211,11 +211,11 @@ TEST(RequestedMetrics, AreComputedOnlyWhereAsked) {
   RunOptions o;
   const Result roll = run_engine(load_scene("slide-to-roll"), find_engine("box2d"), o);
   ASSERT_EQ(roll.status, RunStatus::ok) << roll.error;
-  ASSERT_TRUE(roll.rolling.speed && roll.rolling.expected_speed && roll.rolling.expected_time_to_roll);
-  EXPECT_NEAR(*roll.rolling.speed, 2.0, 0.005 * 2.0);
-  EXPECT_FALSE(roll.angle_of_repose);
+  ASSERT_TRUE(roll.metrics.number("rolling.speed") && roll.metrics.number("rolling.expected_speed") && roll.metrics.number("rolling.expected_time_to_roll"));
+  EXPECT_NEAR(*roll.metrics.number("rolling.speed"), 2.0, 0.005 * 2.0);
+  EXPECT_FALSE(roll.metrics.number("angle_of_repose"));
   const Result plain = run_engine(load_scene("corridor"), find_engine("box2d"), o);
-  EXPECT_FALSE(plain.rolling.speed || plain.rolling.expected_speed || plain.angle_of_repose);
+  EXPECT_FALSE(plain.metrics.number("rolling.speed") || plain.metrics.number("rolling.expected_speed") || plain.metrics.number("angle_of_repose"));
 }
 
 }  // namespace

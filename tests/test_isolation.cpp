@@ -135,7 +135,7 @@ TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {
   EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_NE(r.error.find("step 5 threw: the test engine gave up"), std::string::npos) << r.error;
   EXPECT_EQ(r.steps_done, 4);  // the metrics of the steps before are kept
-  EXPECT_EQ(r.metrics.samples, 5);
+  EXPECT_EQ(r.metrics.count("samples"), 5);
 }
 
 TEST(Isolation, BadSettingsFoundInTheChildAreTheUsersError) {
@@ -176,7 +176,7 @@ TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
   EXPECT_EQ(results[4].status, RunStatus::ok);
   for (int i : {0, 4}) {
     EXPECT_EQ(results[i].steps_done, n);
-    EXPECT_EQ(results[i].metrics.samples, n + 1);
+    EXPECT_EQ(results[i].metrics.count("samples"), n + 1);
   }
   // One header, then (n + 1) samples x 20 balls for each complete run, none for the others.
   std::ifstream in(csv);
@@ -220,8 +220,8 @@ TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
   EXPECT_TRUE(r.diverged());
   EXPECT_EQ(r.diverged_step, 7);
   EXPECT_EQ(r.steps_done, 6);         // the last good step
-  EXPECT_EQ(r.metrics.samples, 7);    // steps 0..6: the metrics before the bad state
-  EXPECT_TRUE(std::isfinite(r.metrics.energy.final));
+  EXPECT_EQ(r.metrics.count("samples"), 7);    // steps 0..6: the metrics before the bad state
+  EXPECT_TRUE(std::isfinite(r.metrics.value("energy.final")));
   // The final figures come from the last good state, not from the non-finite one.
   ASSERT_FALSE(r.series.final_pos.empty());
   for (const auto& p : r.series.final_pos) EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
@@ -296,7 +296,7 @@ radius = 0.25
 
 TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
   // From step 10 on the speed doubles every step, so the energy quadruples. The bound is 100 x
-  // (E0 + initial kinetic energy) (MetricsConfig::divergence_energy_factor, metrics.cpp), here
+  // (E0 + initial kinetic energy) (MetricsConfig::divergence_energy_factor, energy_metric.cpp), here
   // 200 E0 as there is no gravity; 4^3 = 64 < 200 < 256 = 4^4, so the fourth doubling, at step
   // 13, crosses it.
   const Result r = run_engine(box(), test_engine("grow", Misbehaviour::EnergyGrowth, 10), steps(50));
@@ -304,7 +304,7 @@ TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
   EXPECT_EQ(r.diverged_step, 13);
   EXPECT_EQ(r.steps_done, 13);  // the step that crossed the bound is observed, then the run stops
   EXPECT_NE(r.error.find("energy above 100 x"), std::string::npos) << r.error;
-  EXPECT_GT(r.metrics.energy.final, 100 * r.metrics.energy.initial);
+  EXPECT_GT(r.metrics.value("energy.final"), 100 * r.metrics.value("energy.initial"));
 }
 
 TEST(DivergingRun, OneDivergingEngineLeavesTheOthersRunning) {

@@ -11,7 +11,7 @@
 
 #include "metrics/energy.h"
 #include "metrics/momentum.h"
-#include "metrics/metrics.h"
+#include "metrics/meter_set.h"
 #include "metrics/tunnelling.h"
 #include "overlap.h"
 #include "scene_loader.h"
@@ -62,19 +62,19 @@ TEST(Energy, OfAKnownStateIsExact) {
 
 TEST(Momentum, DriftIsTheLargestChangeOfTheTotal) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
-  m.observe(s.initial);  // P0 = (2, -12)
-  m.observe(state({-1, 0, 1, 1}, {2, 0, 0, -3}));  // P = (2, -9): drift 3
-  m.observe(state({-1, 0, 1, 1}, {2, 0, 0, -4}));  // back to P0
-  EXPECT_DOUBLE_EQ(m.summary().momentum.max_abs_drift, 3.0);
-  EXPECT_DOUBLE_EQ(m.summary().momentum.final.y(), -12.0);
+  MeterSet m(s, {});
+  m.sample(s.initial);  // P0 = (2, -12)
+  m.sample(state({-1, 0, 1, 1}, {2, 0, 0, -3}));  // P = (2, -9): drift 3
+  m.sample(state({-1, 0, 1, 1}, {2, 0, 0, -4}));  // back to P0
+  EXPECT_DOUBLE_EQ(m.values().value("momentum.max_abs_drift"), 3.0);
+  EXPECT_DOUBLE_EQ(m.values().vec("momentum.final").y(), -12.0);
 }
 
 // Steps through `states` as the runner does: the motion of every step, then the sample.
-void feed(MetricsAccumulator& m, const std::vector<State>& states) {
+void feed(MeterSet& m, const std::vector<State>& states) {
   for (size_t k = 0; k < states.size(); ++k) {
-    if (k > 0) m.observe_motion(states[k - 1], states[k]);
-    m.observe(states[k]);
+    if (k > 0) m.motion(states[k - 1], states[k]);
+    m.sample(states[k]);
   }
 }
 
@@ -105,87 +105,87 @@ TEST(AngularMomentum, IsOrbitalPlusSpinAboutTheBoxCentre) {
   const Scene s = two_rough_balls("disk");
   // About (0, 0): (x vy - y vx) m = (-1 * 0 - 0 * 2) * 1 + (1 * -4 - 1 * 0) * 3 = -12;
   // spin k m r^2 w = 0.5 * 0.0625 * (1 * 4 + 3 * -2) = -0.0625.
-  MetricsAccumulator m(s, {});
-  m.observe(s.initial);
-  EXPECT_EQ(m.summary().angular_momentum.centre, Eigen::Vector2d(0, 0));
-  EXPECT_DOUBLE_EQ(m.summary().angular_momentum.initial, -12.0625);
+  MeterSet m(s, {});
+  m.sample(s.initial);
+  EXPECT_EQ(m.values().vec("angular_momentum.centre"), Eigen::Vector2d(0, 0));
+  EXPECT_DOUBLE_EQ(m.values().value("angular_momentum.initial"), -12.0625);
   // Spin traded for orbit at the same total: no drift; then a change of 1 is one.
   State t = s.initial;
   t.vel(0, 1) = 0.0625;  // ball 0 at x = -1: x vy m = -0.0625, what the spins held
   t.w.setZero();
-  m.observe(t);
-  EXPECT_NEAR(m.summary().angular_momentum.max_abs_drift, 0.0, 1e-15);
+  m.sample(t);
+  EXPECT_NEAR(m.values().value("angular_momentum.max_abs_drift"), 0.0, 1e-15);
   t.vel(1, 0) = -1.0;  // - y vx m = -1 * -1 * 3 = +3
-  m.observe(t);
-  EXPECT_NEAR(m.summary().angular_momentum.max_abs_drift, 3.0, 1e-12);
-  EXPECT_NEAR(m.summary().angular_momentum.final, -9.0625, 1e-12);
+  m.sample(t);
+  EXPECT_NEAR(m.values().value("angular_momentum.max_abs_drift"), 3.0, 1e-12);
+  EXPECT_NEAR(m.values().value("angular_momentum.final"), -9.0625, 1e-12);
 }
 
 TEST(Slip, IsZeroForARollingBallAndTimesTheRoll) {
   Scene s = two_rough_balls("disk");
   s.initial.pos.row(0) << 0.0, -4.75;  // on the floor
   s.initial.pos.row(1) << 4.75, 0.0;   // on the right wall
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   State a = s.initial;
   a.vel.row(0) << 2.0, 0.0, a.vel.row(1) << 0.0, 1.0;
   a.w << -8.0 + 0.4, 4.0;  // floor: |-vx - w r| = |-2 + 1.9| = 0.1; right wall: |-vy - w r| = |-1 - 1| = 2
-  m.observe(a);
-  EXPECT_TRUE(m.summary().slip.measured);
-  EXPECT_NEAR(m.summary().slip.final_max, 2.0, 1e-12);
-  EXPECT_FALSE(m.summary().slip.time_to_roll);
+  m.sample(a);
+  EXPECT_TRUE(m.values().has("slip.final_max"));
+  EXPECT_NEAR(m.values().value("slip.final_max"), 2.0, 1e-12);
+  EXPECT_FALSE(m.values().number("slip.time_to_roll"));
   a.t = 0.5, a.w << -8.0, -4.0;  // both roll: floor -2 + 2, wall -1 + 1
-  m.observe(a);
-  EXPECT_EQ(m.summary().slip.final_max, 0.0);
-  ASSERT_TRUE(m.summary().slip.time_to_roll);
-  EXPECT_EQ(*m.summary().slip.time_to_roll, 0.5);
+  m.sample(a);
+  EXPECT_EQ(m.values().value("slip.final_max"), 0.0);
+  ASSERT_TRUE(m.values().number("slip.time_to_roll"));
+  EXPECT_EQ(*m.values().number("slip.time_to_roll"), 0.5);
   a.t = 0.6, a.pos(1, 0) = 0.0;  // ball 1 leaves the wall: its spin no longer counts
   a.w(1) = 100.0;
-  m.observe(a);
-  EXPECT_EQ(*m.summary().slip.time_to_roll, 0.5);
+  m.sample(a);
+  EXPECT_EQ(*m.values().number("slip.time_to_roll"), 0.5);
   a.t = 0.7, a.w(0) = 0.0;  // the floor ball slips again: not rolling
-  m.observe(a);
-  EXPECT_FALSE(m.summary().slip.time_to_roll);
+  m.sample(a);
+  EXPECT_FALSE(m.values().number("slip.time_to_roll"));
   // A scene that does not rotate measures none.
   const Scene still = two_balls();  // the accumulator keeps a reference to its scene
-  MetricsAccumulator plain(still, {});
-  plain.observe(still.initial);
-  EXPECT_FALSE(plain.summary().slip.measured);
+  MeterSet plain(still, {});
+  plain.sample(still.initial);
+  EXPECT_FALSE(plain.values().has("slip.final_max"));
 }
 
 TEST(Tunnelling, AnInjectedWallEscapeCountsOne) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   feed(m, {s.initial, state({-1, 0, 1, -4.9}, {0, 0, 0, 0}),
            state({-1, 0, 1, -5.2}, {0, 0, 0, 0}),    // centre beyond the floor
            state({-1, 0, 1, -5.3}, {0, 0, 0, 0})});  // still beyond: the same escape
-  EXPECT_EQ(m.summary().tunnelling_wall, 1);
+  EXPECT_EQ(m.values().count("tunnelling.wall"), 1);
 }
 
 TEST(Tunnelling, AnInjectedPassThroughCountsOne) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   // Swapped places without ever overlapping in a sample.
   feed(m, {state({-1, 0, 1, 0}, {0, 0, 0, 0}), state({1, 0, -1, 0}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.summary().tunnelling_pair, 1);
-  EXPECT_EQ(m.summary().sticking_pair, 0);
+  EXPECT_EQ(m.values().count("tunnelling.pair"), 1);
+  EXPECT_EQ(m.values().count("sticking.pair"), 0);
 }
 
 TEST(Tunnelling, OnlyTheMotionCounts) {
   // The same two samples fed as samples only (no motion between them): nothing to judge.
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
-  m.observe(state({-1, 0, 1, 0}, {0, 0, 0, 0}));
-  m.observe(state({1, 0, -1, 0}, {0, 0, 0, 0}));
-  EXPECT_EQ(m.summary().tunnelling_pair, 0);
+  MeterSet m(s, {});
+  m.sample(state({-1, 0, 1, 0}, {0, 0, 0, 0}));
+  m.sample(state({1, 0, -1, 0}, {0, 0, 0, 0}));
+  EXPECT_EQ(m.values().count("tunnelling.pair"), 0);
 }
 
 TEST(Tunnelling, AResolvedBounceDoesNotCount) {
   // Relative motion reflected at the contact point: both samples on the outer side of the tangent.
   EXPECT_GE(closest_approach({-0.6, 0.3}, {-0.6, 0.35}), 0.5);
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   feed(m, {state({-0.6, 0, 0, 0.3}, {0, 0, 0, 0}), state({-0.6, 0, 0, 0.35}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.summary().tunnelling_pair, 0);
+  EXPECT_EQ(m.values().count("tunnelling.pair"), 0);
 }
 
 TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
@@ -194,16 +194,16 @@ TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
   // samples, closest approach just inside 98% of it, so its travel is barely above that chord.
   const Scene s = two_balls();  // radius 0.25 each: rs = 0.5
   const double rs = 0.5, b = 0.979 * rs, half = 1.0001 * std::sqrt(rs * rs - b * b);  // d: (-half, b) -> (half, b)
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   feed(m, {state({-half / 2, b / 2, half / 2, -b / 2}, {0, 0, 0, 0}),
            state({half / 2, b / 2, -half / 2, -b / 2}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.summary().tunnelling_pair, 1);
+  EXPECT_EQ(m.values().count("tunnelling.pair"), 1);
   // The same pass just outside 98%: not counted.
-  MetricsAccumulator wide(s, {});
+  MeterSet wide(s, {});
   const double b2 = 0.981 * rs, half2 = 1.0001 * std::sqrt(rs * rs - b2 * b2);
   feed(wide, {state({-half2 / 2, b2 / 2, half2 / 2, -b2 / 2}, {0, 0, 0, 0}),
               state({half2 / 2, b2 / 2, -half2 / 2, -b2 / 2}, {0, 0, 0, 0})});
-  EXPECT_EQ(wide.summary().tunnelling_pair, 0);
+  EXPECT_EQ(wide.values().count("tunnelling.pair"), 0);
 }
 
 // The definition of tunnelling.h (passes_through) over every pair: the reference the search must
@@ -462,16 +462,20 @@ TEST(Tunnelling, APassAtTheEdgeOfBothAllowancesIsListed) {
 
 TEST(Tunnelling, ANonFiniteStateCountsNothing) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
+  MeterSet m(s, {});
   // Ball 1 leaves through the floor and ball 0's velocity turns NaN in the same step.
   const State before = state({-1, 0, 1, -4.9}, {0, 0, 0, 0});
   State after = state({-1, 0, 1, -5.2}, {0, 0, 0, 0});
-  EXPECT_TRUE(m.observe_motion(before, before));
+  const std::string non_finite = "non-finite position or velocity";  // the run stops there
+  m.motion(before, before);
+  EXPECT_FALSE(m.stop_after_motion());
   after.vel(0, 1) = std::nan("");
-  EXPECT_FALSE(m.observe_motion(before, after));
+  m.motion(before, after);
+  EXPECT_EQ(m.stop_after_motion(), non_finite);
   after.vel(0, 1) = 0, after.pos(1, 0) = std::numeric_limits<double>::infinity();
-  EXPECT_FALSE(m.observe_motion(before, after));
-  EXPECT_EQ(m.summary().tunnelling_wall, 0);
+  m.motion(before, after);
+  EXPECT_EQ(m.stop_after_motion(), non_finite);
+  EXPECT_EQ(m.values().count("tunnelling.wall"), 0);
   // On two parts (one ball each): an escape in each part counts twice, a NaN in the first part
   // makes the whole step non-finite.
   TunnellingCheck check(s.radius, s.container, 0.02, 2);
@@ -485,46 +489,46 @@ TEST(Sticking, APairHeldOverlappingKPlusOneSamplesCountsOne) {
   const Scene s = two_balls();
   MetricsConfig cfg;
   cfg.stuck_samples = 3;
-  MetricsAccumulator m(s, cfg);
-  m.observe(s.initial);
+  MeterSet m(s, cfg);
+  m.sample(s.initial);
   const State overlapping = state({0, 0, 0.4, 0}, {0, 0, 0, 0});  // depth 0.1 = 20% of the radius sum
-  for (int k = 0; k < cfg.stuck_samples; ++k) m.observe(overlapping);
-  EXPECT_EQ(m.summary().sticking_pair, 0);  // K samples: not yet stuck
-  m.observe(overlapping);
-  EXPECT_EQ(m.summary().sticking_pair, 1);
-  for (int k = 0; k < 5; ++k) m.observe(overlapping);
-  EXPECT_EQ(m.summary().sticking_pair, 1);  // the same episode
-  m.observe(s.initial);
-  for (int k = 0; k <= cfg.stuck_samples; ++k) m.observe(overlapping);
-  EXPECT_EQ(m.summary().sticking_pair, 2);  // a new episode
+  for (int k = 0; k < cfg.stuck_samples; ++k) m.sample(overlapping);
+  EXPECT_EQ(m.values().count("sticking.pair"), 0);  // K samples: not yet stuck
+  m.sample(overlapping);
+  EXPECT_EQ(m.values().count("sticking.pair"), 1);
+  for (int k = 0; k < 5; ++k) m.sample(overlapping);
+  EXPECT_EQ(m.values().count("sticking.pair"), 1);  // the same episode
+  m.sample(s.initial);
+  for (int k = 0; k <= cfg.stuck_samples; ++k) m.sample(overlapping);
+  EXPECT_EQ(m.values().count("sticking.pair"), 2);  // a new episode
 }
 
 TEST(Sticking, ABallHeldInAWallCountsOne) {
   const Scene s = two_balls();
   MetricsConfig cfg;
   cfg.stuck_samples = 2;
-  MetricsAccumulator m(s, cfg);
-  m.observe(s.initial);
-  for (int k = 0; k < 3; ++k) m.observe(state({-4.9, 0, 1, 1}, {0, 0, 0, 0}));  // 0.15 deep in the left wall
-  EXPECT_EQ(m.summary().sticking_wall, 1);
+  MeterSet m(s, cfg);
+  m.sample(s.initial);
+  for (int k = 0; k < 3; ++k) m.sample(state({-4.9, 0, 1, 1}, {0, 0, 0, 0}));  // 0.15 deep in the left wall
+  EXPECT_EQ(m.values().count("sticking.wall"), 1);
 }
 
 TEST(Penetration, MaxAndMeanAreRelativeToTheRadius) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
-  m.observe(state({0, 0, 0.45, 0}, {0, 0, 0, 0}));   // depth 0.05 -> 0.2
-  m.observe(state({0, 0, 0.4, 0}, {0, 0, 0, 0}));    // depth 0.1 -> 0.4
-  EXPECT_NEAR(m.summary().penetration_max, 0.4, 1e-12);
-  EXPECT_NEAR(m.summary().penetration_mean, 0.3, 1e-12);
+  MeterSet m(s, {});
+  m.sample(state({0, 0, 0.45, 0}, {0, 0, 0, 0}));   // depth 0.05 -> 0.2
+  m.sample(state({0, 0, 0.4, 0}, {0, 0, 0, 0}));    // depth 0.1 -> 0.4
+  EXPECT_NEAR(m.values().value("penetration.max"), 0.4, 1e-12);
+  EXPECT_NEAR(m.values().value("penetration.mean"), 0.3, 1e-12);
 }
 
 TEST(Divergence, EnergyFarAboveTheStartIsABlowUp) {
   const Scene s = two_balls();
-  MetricsAccumulator m(s, {});
-  m.observe(s.initial);
-  EXPECT_FALSE(m.energy_blew_up());
-  m.observe(state({-1, 0, 1, 1}, {1e3, 0, 0, 0}));
-  EXPECT_TRUE(m.energy_blew_up());
+  MeterSet m(s, {});
+  m.sample(s.initial);
+  EXPECT_FALSE(m.stop_after_sample().has_value());
+  m.sample(state({-1, 0, 1, 1}, {1e3, 0, 0, 0}));
+  EXPECT_TRUE(m.stop_after_sample().has_value());
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "bench_results.h"
+#include "metrics/meter_set.h"
 #include "report_writer.h"
 #include "result.h"
 
@@ -30,9 +31,10 @@ Result run(std::string engine, std::string scene, const SceneFeatures& f, double
   r.scene_features = f;
   r.n = 20, r.dt = 0.01, r.steps = r.steps_done = 100;
   r.ns_per_ball_step = ns, r.ns_per_step = 20 * ns;
-  r.metrics.energy.initial = 10, r.metrics.energy.final = 5, r.metrics.energy.max_rel_drift = 0.5;
-  r.metrics.momentum.max_abs_drift = 3;
-  r.metrics.samples = 101;
+  r.metrics = resting_values();  // every metric a run measures, nothing happening
+  r.metrics.set("energy.initial", 10), r.metrics.set("energy.final", 5), r.metrics.set("energy.max_rel_drift", 0.5);
+  r.metrics.set("momentum.max_abs_drift", 3);
+  r.metrics.set("samples", 101);
   return r;
 }
 
@@ -115,7 +117,7 @@ TEST(ReportSections, AChaoticSceneRanksByTheHorizonNotTheFinalError) {
 TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
   const SceneFeatures bowl = features(true, true, false);
   Result fast_but_broken = run("seed", "bowl", bowl, 1);
-  fast_but_broken.metrics.tunnelling_pair = 360;
+  fast_but_broken.metrics.set("tunnelling.pair", 360);
   Result diverged = run("wild", "bowl", bowl, 0.5);
   diverged.status = RunStatus::diverged, diverged.diverged_step = 40, diverged.steps_done = 40;
   Result refused = run("lazy", "bowl", bowl, 0);
@@ -142,8 +144,8 @@ TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
 TEST(ReportSections, ThePlacementsOverlapIsSaidApartFromTheEnginesPenetration) {
   const SceneFeatures box = features(true, false, true);
   std::vector<Result> runs = {run("a", "box", box, 10), run("b", "box", box, 20)};
-  for (Result& r : runs) r.metrics.penetration_initial = r.metrics.penetration_max = 0.472;
-  runs[0].metrics.penetration_after_start = 0.01, runs[1].metrics.penetration_after_start = 0.2;
+  for (Result& r : runs) r.metrics.set("penetration.initial", 0.472), r.metrics.set("penetration.max", 0.472);
+  runs[0].metrics.set("penetration.after_start", 0.01), runs[1].metrics.set("penetration.after_start", 0.2);
   const std::string scene = section(render_report(inputs(runs)), "## Scene `box`");
   EXPECT_NE(scene.find("overlapping by up to 0.472 of a radius (every engine, `penetration.initial`)"),
             std::string::npos)

@@ -20,7 +20,7 @@
 
 #include "cli_runner.h"
 #include "input_error.h"
-#include "metrics/metrics.h"
+#include "metrics/meter_set.h"
 #include "palette.h"
 #include "registry.h"
 #include "result.h"
@@ -94,8 +94,8 @@ mass = 1.0
 )",
                                   "fast.toml");
   const Result r = run_engine(scene, find_engine("chipmunk"), {});
-  ASSERT_EQ(r.metrics.tunnelling_wall, 1) << r.status << " " << r.error;
-  ASSERT_EQ(r.metrics.tunnelling_pair, 1);
+  ASSERT_EQ(r.metrics.count("tunnelling.wall"), 1) << r.status << " " << r.error;
+  ASSERT_EQ(r.metrics.count("tunnelling.pair"), 1);
   ASSERT_EQ(r.events.size(), 2u);
   const Event& wall = r.events[0];
   EXPECT_EQ(wall.kind, EventKind::TunnelWall);
@@ -137,19 +137,19 @@ radius = 0.25
 )",
                                   "two.toml");
   MetricsConfig config;
-  MetricsAccumulator m(scene, config);
+  MeterSet m(scene, config);
   // Overlapping by 0.1 m (20% of the radius sum), not moving: counted at the sample after
   // stuck_samples of them (the first sample is the initial state, step 0).
   State s = two_balls_at(-0.2, 0.2);
-  m.observe(s);
+  m.sample(s);
   for (int k = 1; k <= config.stuck_samples + 2; ++k) {
     State next = s;
     next.t = k * 0.01;
-    m.observe_motion(s, next);
-    m.observe(next);
+    m.motion(s, next);
+    m.sample(next);
     s = next;
   }
-  ASSERT_EQ(m.summary().sticking_pair, 1);
+  ASSERT_EQ(m.values().count("sticking.pair"), 1);
   ASSERT_EQ(m.events().size(), 1u);
   EXPECT_EQ(m.events()[0].kind, EventKind::StickPair);
   EXPECT_EQ(m.events()[0].step, config.stuck_samples);
@@ -158,16 +158,16 @@ radius = 0.25
   EXPECT_EQ(m.events()[0].j, 1);
 
   // A pair swapping places every step: every pass counts, the first kEventsKept are recorded.
-  MetricsAccumulator swaps(scene, config);
+  MeterSet swaps(scene, config);
   State a = two_balls_at(-1.0, 1.0);
   const long steps = static_cast<long>(kEventsKept) + 50;
   for (long k = 1; k <= steps; ++k) {
     State b = two_balls_at(k % 2 ? 1.0 : -1.0, k % 2 ? -1.0 : 1.0);
     b.t = k * 0.01;
-    swaps.observe_motion(a, b);
+    swaps.motion(a, b);
     a = b;
   }
-  EXPECT_EQ(swaps.summary().tunnelling_pair, steps);  // the count stays the total
+  EXPECT_EQ(swaps.values().count("tunnelling.pair"), steps);  // the count stays the total
   ASSERT_EQ(swaps.events().size(), kEventsKept);
   EXPECT_EQ(swaps.events().back().step, static_cast<long>(kEventsKept));
 }
@@ -379,7 +379,7 @@ std::vector<int> rgb(const std::string& colour) {
 // What a panel's title says of its run's events: the count over the whole run, and how many the
 // page lists when it keeps fewer.
 std::string event_note(const Result& r) {
-  const long counted = r.metrics.tunnelling_wall + r.metrics.tunnelling_pair + r.metrics.sticking_wall + r.metrics.sticking_pair;
+  const long counted = r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair") + r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair");
   std::string note = std::to_string(counted) + (counted == 1 ? " event" : " events");
   if (static_cast<long>(r.events.size()) < counted) note += ", " + std::to_string(r.events.size()) + " listed";
   return note;

@@ -66,8 +66,8 @@ CalibrationResult run_calibration(const std::vector<const EngineEntry*>& engines
             CalibrationPoint p{e->info.name, profile, contact, requested, speed, std::nan(""), r.status, false, r.error};
             // Both scenes start with zero momentum along the contact (the wall's frame for one
             // ball), so the kinetic energy is the energy of the approach.
-            if (r.status == RunStatus::ok) p.effective = std::sqrt(std::max(r.metrics.energy.final, 0.0) / r.metrics.energy.initial);
-            if (r.status == RunStatus::ok && r.metrics.tunnelling_wall + r.metrics.tunnelling_pair > 0)
+            if (r.status == RunStatus::ok) p.effective = std::sqrt(std::max(r.metrics.value("energy.final"), 0.0) / r.metrics.value("energy.initial"));
+            if (r.status == RunStatus::ok && r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair") > 0)
               p.tunnelled = true, p.error = "passed through the contact instead of bouncing";
             out.points.push_back(std::move(p));
           }

@@ -144,8 +144,10 @@ void print_table(const std::vector<Result>& results) {
     const auto& e = r.reference;
     fmt::print("{:<18} {:<11} {:>6} {:>8}", printable(run_label(r)), run_status_text(r.status), r.n, r.steps_done);
     for (const MetricDef* m : shown) fmt::print(" {:>10}", metric_text(m->get(r)));
-    fmt::print(" {:>10} {:>9} {:>12.1f} {:>10}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
-               !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never", r.ns_per_ball_step,
+    // A run that made no step measured no time: "-", never a 0.0 that reads as infinitely fast.
+    fmt::print(" {:>10} {:>9} {:>12} {:>10}\n", e.available ? fmt::format("{:.3g}", e.pos_rms_final) : "-",
+               !e.available ? "-" : e.horizon ? fmt::format("{:.3g}", *e.horizon) : "never",
+               r.measured() ? fmt::format("{:.1f}", r.ns_per_ball_step) : "-",
                r.engine_process_s ? fmt::format("{:.1f}", r.engine_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n))
                                   : "-");
   }

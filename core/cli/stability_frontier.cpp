@@ -39,12 +39,12 @@ Scene stressed(const Scene& base, const std::string& knob, double factor) {
 std::string stress_failure(const Result& r, double energy_tolerance) {
   if (r.status != RunStatus::ok) return run_status_text(r.status) + (r.error.empty() ? "" : ": " + r.error);
   auto count = [](int k, const char* what) { return fmt::format("{} {}{}", k, what, k == 1 ? "" : "s"); };
-  if (r.metrics.tunnelling_wall) return count(r.metrics.tunnelling_wall, "wall escape");
-  if (r.metrics.tunnelling_pair) return count(r.metrics.tunnelling_pair, "pair pass-through");
+  if (const long n = r.metrics.count("tunnelling.wall")) return count(n, "wall escape");
+  if (const long n = r.metrics.count("tunnelling.pair")) return count(n, "pair pass-through");
   if (r.reference.available && r.reference.reference_failed_step < 0 && r.reference.energy_rel_max > energy_tolerance)
     return fmt::format("energy off the reference by {:.3g}", r.reference.energy_rel_max);
-  if (r.metrics.energy.initial > 0 && r.metrics.energy.final > (1 + energy_tolerance) * r.metrics.energy.initial)
-    return fmt::format("energy grew to {:.3g} x", r.metrics.energy.final / r.metrics.energy.initial);
+  const double e0 = r.metrics.value("energy.initial"), e1 = r.metrics.value("energy.final");
+  if (e0 > 0 && e1 > (1 + energy_tolerance) * e0) return fmt::format("energy grew to {:.3g} x", e1 / e0);
   return "";
 }
 

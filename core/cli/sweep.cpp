@@ -133,8 +133,8 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
       p.pos_rms = r.reference.pos_rms_final, p.vel_rms = r.reference.vel_rms_final;
       p.energy_rel = r.reference.energy_rel_max;
     }  // else: the reference against itself, error 0 by definition
-    p.tunnelling = r.metrics.tunnelling_wall + r.metrics.tunnelling_pair;
-    p.sticking = r.metrics.sticking_wall + r.metrics.sticking_pair;
+    p.tunnelling = r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair");
+    p.sticking = r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair");
     p.plan_index = static_cast<long>(k);
     // The timing runs: the engine alone, the same steps.
     options.reference = nullptr;

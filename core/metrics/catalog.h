@@ -1,17 +1,19 @@
 #pragma once
 // Every metric a run's states yield, declared once: where it goes in the result JSON, its unit, its
-// definition, how the tables show it and how `ballbench regress` compares it. The result's JSON
-// writer and reader, the regression record and its default tolerances, the report's per-scene
-// columns and glossary, `ballbench run`'s table and `ballbench list --metrics` all derive from
-// metric_catalog(): adding a metric is one entry there (and the code that measures it).
+// definition, how the tables show it and how `ballbench regress` compares it. The rows come from
+// the metric families (metrics/meter.h: each row beside the meter that measures it); the result's
+// JSON writer and reader, the regression record and its default tolerances, the report's per-scene
+// columns and glossary, the seed ensembles' columns, `ballbench run`'s table, `ballbench list
+// --metrics` and docs/results.md's metrics table all derive from metric_catalog().
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "metrics/metrics.h"
+#include "metrics/metrics_config.h"
 #include "scene.h"
 
 namespace ballbench {
@@ -31,9 +33,13 @@ enum class MeaningfulOn {
   elastic_scenes,       // restitution 1: energy should be conserved
   inelastic_scenes,     // restitution below 1: energy is lost by design
   open_space_without_gravity,  // nothing outside the balls acts on them: momentum should be conserved
+  // Scenes whose runs stay near the reference: on a chaotic one every engine parts from it, and the
+  // horizon, not the final error, says how well it did.
+  predictable_scenes,
   no_scene,             // detail behind another column: the appendix only
 };
-bool meaningful_on(MeaningfulOn where, const SceneFeatures& f);
+// `chaotic`: every run compared with the reference parted from it (the report judges it from them).
+bool meaningful_on(MeaningfulOn where, const SceneFeatures& f, bool chaotic = false);
 
 struct MetricDef {
   // Dotted path in the result JSON, also the metric's name in the baseline: "energy.final"; empty
@@ -48,13 +54,34 @@ struct MetricDef {
   bool ranked = false;  // smaller is better: the report marks the best run in bold
   MeaningfulOn meaningful = MeaningfulOn::every_scene;  // where the report's scene table shows its column
   std::optional<Tolerance> regress;  // compared by `ballbench regress`; none: not compared
+  std::string ensemble;  // its column in the seed ensembles' tables (ensemble.h), or "" for none
   // The value of a run (null where the run has none: a drift of zero energy, the slip of a scene
-  // that does not rotate), and how a value read back from JSON sets it (never called with null).
+  // that does not rotate). A row with a key reads the run's MetricValues at it unless it says
+  // otherwise; a row without one says how it derives its figure.
   std::function<nlohmann::json(const Result&)> get;
-  std::function<void(Result&, const nlohmann::json&)> set;
 };
 
 const std::vector<MetricDef>& metric_catalog();
+// A key of the catalog.
+bool is_metric_key(std::string_view key);
+
+// Declaring rows (the metric families' files).
+// Counts and the outcome of a run move only when its behaviour does, never by round-off.
+inline constexpr Tolerance kExact{0.0, 0.0};
+// Real-valued metrics of our double solvers: the same source gives the same bits on every build we
+// make (-ffp-contract=off); 1e-9 leaves room for a compiler reordering a sum, while a change of
+// algorithm or constant moves them far more. The absolute floor is for round-off around zero (the
+// momentum drift of a conserving solver).
+inline constexpr Tolerance kReal{1e-9, 1e-12};
+// A definition that quotes no tolerance.
+std::function<std::string(const MetricsConfig&)> fixed(std::string text);
+// A row stored at `key` of the result JSON, with no column.
+MetricDef metric_row(std::string key, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
+                     std::optional<Tolerance> regress = std::nullopt);
+// The same row with its report column, its `ballbench run` heading (either may be ""), whether
+// smaller is better and where the report's scene table shows it.
+MetricDef shown(MetricDef m, std::string column, std::string heading, bool ranked,
+                MeaningfulOn meaningful = MeaningfulOn::every_scene);
 
 // The metric's value as the tables print it: integers as they are, reals to 3 significant
 // figures, vectors as (x, y), null as "-".

@@ -1,7 +1,7 @@
 #pragma once
 // Where and when tunnelling and sticking happened: one record per counted event, for the
 // trajectory viewer (reports/viewer_page.h) and anyone reading a run's JSON. The counts in
-// MetricsSummary stay the totals; a run keeps only its first kEventsKept records.
+// the result's metrics stay the totals; a run keeps only its first kEventsKept records.
 #include <cstddef>
 #include <string>
 
