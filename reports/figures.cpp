@@ -108,8 +108,12 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
     std::ofstream f(dir / data);
     for (size_t k = 0; k < r->series.t.size(); ++k)
       f << r->series.t[k] << ' ' << r->series.energy[k] / r->metrics.energy.initial << '\n';
+    // A run that stopped says when in its key: its line ends there, or leaves the plot.
+    const std::string title = r->status == RunStatus::ok
+                                  ? run_label(*r)
+                                  : fmt::format("{} ({} at {:.3g} s)", run_label(*r), run_status_text(r->status), stop_time(*r));
     const std::string item = fmt::format("'{}' with lines lw 2 {} title {}", data, line_style(r->engine, r->profile),
-                                         quoted(run_label(*r)));
+                                         quoted(title));
     std::string& panel = run_style(r->engine, r->profile).dash == 1 ? first : others;
     panel += (panel.empty() ? "" : ", ") + item;
     if (role_of(in, r->engine) == EngineRole::reference)
@@ -135,8 +139,9 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   return Figure{"energy", scene, "figures/" + base + ".png",
                 two ? "Energy over time relative to the start (log scale): above, each engine's first profile; below, "
                       "its other profiles (dashed), with the reference for comparison. One colour per engine, as in "
-                      "every figure and the viewer."
-                    : "Energy over time relative to the start (log scale), one line per engine and profile."};
+                      "every figure and the viewer; a run that stopped early says when in the key."
+                    : "Energy over time relative to the start (log scale), one line per engine and profile; a run that "
+                      "stopped early says when in the key."};
 }
 
 // One panel per run, like the thesis's figures 3 to 5: the balls at the end (each its own radius,
@@ -267,9 +272,9 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
                         left / width, (left + pw) / width, 1 - top / height, 1 - (top + ph) / height)
          << "unset label\n";
       if (stopped)
-        gp << "set title " << quoted(fmt::format("{}: stopped at t = {:.2f} s", run_label(*r), t))
+        gp << "set title " << quoted(fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t))
            << "\nset label 1 "
-           << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), t))
+           << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r)))
            << " at graph 0.5, graph 0.5 center front font ',13'\n";
       else
         gp << "set title " << quoted(fmt::format("{}   t = {:.1f} s", run_label(*r), t)) << "\n";

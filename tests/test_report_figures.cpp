@@ -1,0 +1,51 @@
+// The report's figures from results made by hand: what a reader is told of a run that stopped.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "figures.h"
+#include "viewer_page.h"
+
+namespace ballbench {
+namespace {
+
+namespace fs = std::filesystem;
+
+Result energy_run(const std::string& engine, RunStatus status, long steps_done, long diverged_step) {
+  Result r;
+  r.engine = engine, r.profile = "default", r.engine_version = "1", r.scene = "s", r.n = 1, r.dt = 0.01;
+  r.steps = 300, r.steps_done = steps_done, r.status = status, r.diverged_step = diverged_step;
+  for (long k = 0; k <= steps_done; k += 50) r.series.t.push_back(k * r.dt), r.series.energy.push_back(1.0);
+  r.metrics.energy.initial = 1.0;
+  return r;
+}
+
+// A run that stopped says when in the energy figure's key, its line ending there: the step it
+// diverged at (1.2 s), not its last sample's time (1.0 s); a run that ended ok is its name alone.
+TEST(ReportFigures, TheEnergyKeySaysWhenARunStopped) {
+  ReportInputs in;
+  in.results = {energy_run("kept", RunStatus::ok, 300, -1), energy_run("lost", RunStatus::diverged, 119, 120),
+                energy_run("broke", RunStatus::failed, 80, -1)};
+  EXPECT_DOUBLE_EQ(stop_time(in.results[1]), 1.2);
+  EXPECT_DOUBLE_EQ(stop_time(in.results[2]), 0.8);
+  const fs::path dir = fs::temp_directory_path() / ("ballbench_figures." + std::to_string(::getpid()));
+  const std::vector<Figure> figures = draw_figures(in, dir.string());
+  std::ifstream gp(dir / "figures" / "s-energy.gp");
+  std::stringstream text;
+  text << gp.rdbuf();
+  const std::string script = text.str();
+  for (const char* title : {"title 'kept'", "title 'lost (diverged at 1.2 s)'", "title 'broke (failed at 0.8 s)'"})
+    EXPECT_NE(script.find(title), std::string::npos) << title << "\n" << script;
+  ASSERT_FALSE(figures.empty());
+  EXPECT_NE(figures.front().caption.find("a run that stopped early says when in the key"), std::string::npos)
+      << figures.front().caption;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ballbench
