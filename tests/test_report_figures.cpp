@@ -1,4 +1,5 @@
-// The report's figures from results made by hand: what a reader is told of a run that stopped.
+// The report's figures and glossary from results made by hand: what a reader is told of a run that
+// stopped, and each unit once.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "figures.h"
+#include "report_writer.h"
 #include "viewer_page.h"
 
 namespace ballbench {
@@ -45,6 +47,18 @@ TEST(ReportFigures, TheEnergyKeySaysWhenARunStopped) {
   EXPECT_NE(figures.front().caption.find("a run that stopped early says when in the key"), std::string::npos)
       << figures.front().caption;
   fs::remove_all(dir);
+}
+
+// A column whose header carries its unit ("slip at end (m/s)") is not given it twice.
+TEST(ReportFigures, TheGlossaryGivesEachUnitOnce) {
+  ReportInputs in;
+  in.run = nlohmann::json::object();  // results/run.json, here with nothing in it
+  const std::string md = render_report(in);
+  for (const char* once : {"- **slip at end (m/s)**: ", "- **time to roll (s)**: ", "- **angle of repose (deg)**: "})
+    EXPECT_NE(md.find(once), std::string::npos) << once << "\n" << md.substr(md.find("## Glossary"));
+  for (const char* twice : {"(m/s)** (m/s)", "(s)** (s)", "(deg)** (deg)"})
+    EXPECT_EQ(md.find(twice), std::string::npos) << twice;
+  EXPECT_NE(md.find("- **momentum drift (max abs)** (kg m/s): "), std::string::npos) << "a unit not in the header stays";
 }
 
 }  // namespace
