@@ -128,7 +128,7 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   gp << "set terminal pngcairo size 900," << (two ? 2 : 1) * kPanelHeight + 20 << " font 'sans,10'\nset termoption noenhanced\n"
      << "set output '" << base << ".png'\n"
      << "set xlabel 'time (s)'\nset ylabel 'E / E0 (log scale)'\nset logscale y\nset yrange [1e-4<*:*<1e4]\nset grid\n"
-     << "set key outside right top font ',9'\nset lmargin at screen 0.09\nset rmargin at screen 0.76\n";
+     << "set key outside right top font ',9'\nset lmargin at screen 0.09\nset rmargin at screen 0.70\n";
   if (two) gp << "set multiplot layout 2,1\n";
   gp << "set title " << quoted("Energy over time, " + scene + (two ? ": each engine's first profile" : "")) << "\n"
      << "plot " << (first.empty() ? others : first) << '\n';
