@@ -109,8 +109,12 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
     std::ofstream f(dir / data);
     for (size_t k = 0; k < r->series.t.size(); ++k)
       f << r->series.t[k] << ' ' << r->series.energy[k] / e0 << '\n';
+    // A run that stopped says when in its key: its line ends there, or leaves the plot.
+    const std::string title = r->status == RunStatus::ok
+                                  ? run_label(*r)
+                                  : fmt::format("{} ({} at {:.3g} s)", run_label(*r), run_status_text(r->status), stop_time(*r));
     const std::string item = fmt::format("'{}' with lines lw 2 {} title {}", data, line_style(r->engine, r->profile),
-                                         quoted(run_label(*r)));
+                                         quoted(title));
     std::string& panel = run_style(r->engine, r->profile).dash == 1 ? first : others;
     panel += (panel.empty() ? "" : ", ") + item;
     if (role_of(in, r->engine) == EngineRole::reference)
@@ -125,7 +129,7 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   gp << "set terminal pngcairo size 900," << (two ? 2 : 1) * kPanelHeight + 20 << " font 'sans,10'\nset termoption noenhanced\n"
      << "set output '" << base << ".png'\n"
      << "set xlabel 'time (s)'\nset ylabel 'E / E0 (log scale)'\nset logscale y\nset yrange [1e-4<*:*<1e4]\nset grid\n"
-     << "set key outside right top font ',9'\nset lmargin at screen 0.09\nset rmargin at screen 0.76\n";
+     << "set key outside right top font ',9'\nset lmargin at screen 0.09\nset rmargin at screen 0.70\n";
   if (two) gp << "set multiplot layout 2,1\n";
   gp << "set title " << quoted("Energy over time, " + scene + (two ? ": each engine's first profile" : "")) << "\n"
      << "plot " << (first.empty() ? others : first) << '\n';
@@ -136,8 +140,9 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   return Figure{"energy", scene, "figures/" + base + ".png",
                 two ? "Energy over time relative to the start (log scale): above, each engine's first profile; below, "
                       "its other profiles (dashed), with the reference for comparison. One colour per engine, as in "
-                      "every figure and the viewer."
-                    : "Energy over time relative to the start (log scale), one line per engine and profile."};
+                      "every figure and the viewer; a run that stopped early says when in the key."
+                    : "Energy over time relative to the start (log scale), one line per engine and profile; a run that "
+                      "stopped early says when in the key."};
 }
 
 // One panel per run, like the thesis's figures 3 to 5: the balls at the end (each its own radius,
@@ -268,9 +273,9 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
                         left / width, (left + pw) / width, 1 - top / height, 1 - (top + ph) / height)
          << "unset label\n";
       if (stopped)
-        gp << "set title " << quoted(fmt::format("{}: stopped at t = {:.2f} s", run_label(*r), t))
+        gp << "set title " << quoted(fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t))
            << "\nset label 1 "
-           << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), t))
+           << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r)))
            << " at graph 0.5, graph 0.5 center front font ',13'\n";
       else
         gp << "set title " << quoted(fmt::format("{}   t = {:.1f} s", run_label(*r), t)) << "\n";

@@ -40,10 +40,36 @@ ErrorAxis error_axis(const AccuracySpec& spec) {
 // A figure of 0 cannot sit on a log axis: it is drawn at a thousandth of the spec's bound.
 double on_log_axis(double x, const ErrorAxis& axis) { return std::max(x, axis.bound * 1e-3); }
 
+// Where a try lies on an axis of the worst term over its bound (1: the spec): as `miss`, except that
+// a count bounded at 0 (tunnelling <= 0) which the try met adds nothing, where `miss` counts it 1
+// (0 over a bound of 0), which put every try that met such a spec on the line at 1 whatever its
+// other terms. Drawn at 0.001 at least (a try at 0 on every term).
+double spec_axis_x(const MatchTry& t, const AccuracySpec& spec) {
+  double worst = 0;
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound) continue;
+    const auto f = t.figures.value(d.key, nlohmann::json());
+    if (!f.is_number()) return std::numeric_limits<double>::infinity();
+    const double x = f.get<double>();
+    worst = std::max(worst, !d.at_least && *bound == 0 && x <= 0 ? 0.0 : term_miss(d, *bound, x));
+  }
+  return std::max(worst, 1e-3);
+}
+
 struct Series {
   std::string label, data;
   RunStyle style;
+  double x_max = 0;  // the largest error drawn
 };
+
+// The x range of a panel of `series` whose spec's line is at `bound`: the line inside the plot, not
+// on its edge, where every point lies left of it (gnuplot's own `2<*` is lost to its log tics).
+std::string x_range(const std::vector<Series>& series, double bound) {
+  double x_max = 0;
+  for (const Series& s : series) x_max = std::max(x_max, s.x_max);
+  return x_max < 2 * bound ? fmt::format("set xrange [*:{}]\n", 2 * bound) : "set xrange [*:*]\n";
+}
 
 // One data file per engine and profile: block 0 the profile as it is from dt down (the line),
 // block 1 the tries that met the spec, block 2 those that did not. None when no try ran ok.
@@ -56,14 +82,15 @@ std::optional<Series> write_series(const MatchResult& m, const MatchOutcome& oc,
   Series s{run_label(oc.engine, oc.profile), fmt::format("{}-{}.dat", base, slug(run_label(oc.engine, oc.profile))),
            run_style(oc.engine, oc.profile)};
   std::ofstream f(s.data);
-  // Normalised: the worst term over its bound, as `miss` (1 is the spec on every panel).
+  // Normalised (or a spec of counts alone): the worst term over its bound (1 is the spec on every panel).
   const auto x_of = [&](const MatchTry& t) {
-    return normalised ? std::max(miss(t, m.spec), 1e-3) : on_log_axis(*front_error(t, m.spec), axis);
+    return normalised || !axis.term ? spec_axis_x(t, m.spec) : on_log_axis(*front_error(t, m.spec), axis);
   };
   std::vector<const MatchTry*> as_is;
   for (const MatchTry* t : mine)
     if (t->knob.empty()) as_is.push_back(t);
   std::sort(as_is.begin(), as_is.end(), [](auto* a, auto* b) { return a->halvings < b->halvings; });
+  for (const MatchTry* t : mine) s.x_max = std::max(s.x_max, x_of(*t));
   for (const MatchTry* t : as_is) f << x_of(*t) << ' ' << t->cost_ns << '\n';
   for (bool met : {true, false}) {
     f << "\n\n";
@@ -110,6 +137,7 @@ Figure scene_front(const MatchResult& m) {
      << "set xlabel '" << axis.label << "'\nset ylabel 'cost (ns per ball per scene step)'\n"
      << "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nset key outside right top\n"
      << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n", axis.bound)
+     << x_range(series, axis.bound)
      << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, true)) << '\n';
   gp.close();
   run_gnuplot(base + ".gp");
@@ -118,7 +146,9 @@ Figure scene_front(const MatchResult& m) {
                       "(the line) and each knob on top of it; filled: met the spec ({}), open: did not; the dashed line "
                       "is the spec's bound.{}{}",
                       axis.term ? spec_term(*axis.term).key : "error over the spec", m.scene, m.spec.text(),
-                      axis.term ? " A figure of 0 is drawn at a thousandth of the bound." : "", not_drawn(m, axis))};
+                      axis.term ? " A figure of 0 is drawn at a thousandth of the bound."
+                                : " A try at 0 on every term is drawn at 0.001.",
+                      not_drawn(m, axis))};
 }
 
 // Every scene's front in one figure, the error over the spec's bound so that 1 means the spec on
@@ -147,6 +177,7 @@ Figure all_fronts(const std::vector<MatchResult>& matches) {
        << fmt::format("set title '{} ({})'\n", m.scene, m.scene_class)
        << "set xlabel 'error / spec (the worst term)'\nset ylabel 'ns per ball per scene step'\n"
        << "unset arrow\nset arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n"
+       << x_range(series, 1)
        << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, false)) << '\n';
   }
   // The legend: every engine and profile once, drawn as its line.

@@ -834,7 +834,11 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
   const MetricsConfig cfg = in.results.empty() ? MetricsConfig{} : in.results.front().metrics_config;
   put("\n## Glossary\n\n");
   for (const MetricDef& m : metric_catalog())
-    if (!m.column.empty()) put("- **{}**{}: {}.\n", m.column, m.unit.empty() ? "" : fmt::format(" ({})", m.unit), m.definition(cfg));
+    if (!m.column.empty()) {
+      // The unit once: a column's header may already carry it ("slip at end (m/s)").
+      const std::string unit = fmt::format(" ({})", m.unit);
+      put("- **{}**{}: {}.\n", m.column, m.unit.empty() || m.column.ends_with(unit) ? "" : unit, m.definition(cfg));
+    }
   put("- **pos error vs reference**: position RMS error over balls against the event-driven `exact` engine run in "
       "lockstep (for a scene `exact` cannot run, such as rough balls on each other under gravity, a converged run stands in: the scene "
       "stepped by Chipmunk at dt / {}, named under the scene's table), at the last step; **horizon**: the first time that error exceeded a tenth of the mean radius "

@@ -60,6 +60,7 @@ nlohmann::json run_json(const Result& r) {
           {"colour", style.colour},
           {"dash", style.dash},
           {"status", run_status_text(r.status)},
+          {"stopped_t", r.status == RunStatus::ok ? nlohmann::json(nullptr) : nlohmann::json(stop_time(r))},
           {"error", without_machine_paths(r.error)},
           {"frame_t", r.series.frame_t},
           {"frames", std::move(frames)},
@@ -81,6 +82,10 @@ std::vector<std::string> track_colours() {
 }
 
 }  // namespace
+
+double stop_time(const Result& r) {
+  return static_cast<double>(r.diverged() && r.diverged_step > 0 ? r.diverged_step : r.steps_done) * r.dt;
+}
 
 int viewer_frames(const Scene& scene, int runs) {
   // Digits of the widest coordinate: the container's, and a ball that left it by up to a diameter

@@ -24,6 +24,10 @@ inline constexpr double kViewerFrameBudget = 3.5e6;
 // makes them), at most one per step.
 int viewer_frames(const Scene& scene, int runs);
 
+// When a run that did not end ok stopped (s): the step it diverged at, else its last completed one.
+// Its last frame may come before (frames are every few steps), so pages and GIFs say this time.
+double stop_time(const Result& r);
+
 // The page for `runs`: every run of one scene, some with frames. Throws InputError when they are
 // of different scenes or none has frames.
 std::string viewer_page(const std::vector<const Result*>& runs);

@@ -33,8 +33,9 @@ except ImportError:
 
 
 def blocks(text):
-    """(language, body) of each fenced block, in order."""
-    return re.findall(r"^```(\w*)\n(.*?)^```", text, flags=re.S | re.M)
+    """(language, body) of each fenced block, in order. A block ends at a line of ``` alone: text after
+    the fence on its line makes no closing fence (CommonMark), so the block would run on to the end."""
+    return re.findall(r"^```(\w*)\n(.*?)^```[ \t]*$", text, flags=re.S | re.M)
 
 
 def expected_status(line):

@@ -3,7 +3,14 @@
 // miss, links to the sections, and ratios that stay readable below 1.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
 #include "accuracy_section.h"
+#include "front_figures.h"
 #include "summary_section.h"
 
 namespace ballbench {
@@ -88,6 +95,46 @@ TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
   EXPECT_NE(md.find("**50x cheaper** than the cheapest external engine that meets the spec (chipmunk/stock"),
             std::string::npos)
       << md;
+}
+
+// The x of each point a front's data file holds (its blocks: the profile's line, the tries that met,
+// those that did not), in order.
+std::vector<double> front_xs(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::vector<double> xs;
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    double x = 0;
+    if (line != "NaN NaN" && fields >> x) xs.push_back(x);
+  }
+  return xs;
+}
+
+// On an axis of the worst term over its bound, a try that met a count bounded at 0 (no tunnelling)
+// lies where its other terms put it: a pile's 0.007 overlap at 0.7, not on the spec's line at 1; a
+// spec of that count alone puts what met it at 0.001; a count it missed stays 1 + the count.
+TEST(AccuracySection, FrontsPlaceWhatMetACountOfZeroByItsOtherTerms) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("ballbench_fronts." + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path here = std::filesystem::current_path();
+  std::filesystem::current_path(dir);
+  MatchResult box = pile();
+  box.scene = "box", box.scene_class = "gas";
+  box.spec = {};
+  box.spec[SpecTerm::tunnelling] = 0;
+  box.tries[1].figures["tunnelling"] = 3;
+  ReportInputs in;
+  in.matches = {pile(), box};
+  const std::vector<Figure> figures = front_figures(in);
+  std::filesystem::current_path(here);
+  EXPECT_EQ(figures.size(), 3u);
+  EXPECT_EQ(front_xs(dir / "pile-fronts-home.dat"), (std::vector<double>{0.7, 0.7})) << "line, then met";
+  EXPECT_EQ(front_xs(dir / "pile-fronts-chipmunk-stock.dat"), (std::vector<double>{2, 0.8, 0.8, 2}));
+  EXPECT_EQ(front_xs(dir / "box-fronts-home.dat"), (std::vector<double>{0.001, 0.001}));
+  EXPECT_EQ(front_xs(dir / "box-fronts-chipmunk-stock.dat"), (std::vector<double>{4, 0.001, 0.001, 4}));
+  // The scene's own figure of a spec of counts alone: the same axis.
+  EXPECT_EQ(front_xs(dir / "box-front-chipmunk-stock.dat"), (std::vector<double>{4, 0.001, 0.001, 4}));
+  std::filesystem::remove_all(dir);
 }
 
 TEST(AccuracySection, RatiosReadBelowOne) {

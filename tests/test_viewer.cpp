@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -385,6 +386,11 @@ std::string event_note(const Result& r) {
   return note;
 }
 
+// What a panel's title says of a run that stopped: its status and when (stop_time).
+std::string stopped_note(const Result& r) {
+  return fmt::format("{} at t = {:.2f} s", run_status_text(r.status), stop_time(r));
+}
+
 TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
   const std::string browser = chromium();
   if (browser.empty()) GTEST_SKIP() << "chromium not found: the viewer's browser test needs Debian's chromium (scripts/lib.sh installs it)";
@@ -423,11 +429,7 @@ TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
     EXPECT_NEAR(ball0.at("y").get<double>(), r.series.frames[held][0][1], 1e-9) << r.engine;
     EXPECT_EQ(ball0.at("rgb").get<std::vector<int>>(), rgb(run_style(r.engine, r.profile).colour)) << r.engine;
     // The title counts the run's events, not the ones listed; a run that stopped says so instead.
-    if (held == static_cast<size_t>(k)) {
-      EXPECT_EQ(panel.at("note"), event_note(r)) << r.engine;
-    } else {
-      EXPECT_TRUE(panel.at("note").is_null()) << r.engine;
-    }
+    EXPECT_EQ(panel.at("note"), held == static_cast<size_t>(k) ? event_note(r) : stopped_note(r)) << r.engine;
     // Events are marked once they have happened, not before.
     const long happened = std::count_if(r.events.begin(), r.events.end(),
                                         [&](const Event& e) { return e.t <= runs[1].series.frame_t[k]; });
@@ -444,6 +446,18 @@ TEST(ViewerBrowser, ShowsTheFrameAskedForWithEachRunsBallsWhereTheRunPutThem) {
           << r.engine << " ball " << b;
     EXPECT_EQ(empty.at("rgb").get<std::vector<int>>(), kInside) << r.engine;
   }
+
+  // Past the step home-seed diverged at, its panel holds its last frame and says when it stopped: the
+  // step it diverged at, not its last frame's time (frames are every few steps).
+  ASSERT_EQ(runs[0].status, RunStatus::diverged);
+  const size_t late = runs[1].series.frames.size() - 1;
+  ASSERT_LT(runs[0].series.frames.size(), late);
+  const nlohmann::json stopped = page_state(browser, "file://" + page + "#frame=" + std::to_string(late), dir.path);
+  ASSERT_FALSE(stopped.is_null());
+  EXPECT_EQ(stopped.at("panels").at(0).at("frame"), runs[0].series.frames.size() - 1);
+  EXPECT_EQ(stopped.at("panels").at(0).at("note"), stopped_note(runs[0]));
+  EXPECT_EQ(stopped_note(runs[0]), fmt::format("diverged at t = {:.2f} s", runs[0].diverged_step * runs[0].dt));
+  EXPECT_NE(runs[0].series.frame_t.back(), runs[0].diverged_step * runs[0].dt) << "a frame at the step itself proves nothing";
 
   // Clicking an event (the fragment's event=I selects the list's I-th, in time order) jumps to the
   // frame nearest its time.

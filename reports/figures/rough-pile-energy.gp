@@ -8,7 +8,7 @@ set yrange [1e-4<*:*<1e4]
 set grid
 set key outside right top font ',9'
 set lmargin at screen 0.09
-set rmargin at screen 0.76
+set rmargin at screen 0.70
 set multiplot layout 2,1
 set title 'Energy over time, rough-pile: each engine''s first profile'
 plot 'rough-pile-energy-home.dat' with lines lw 2 lc rgb '#0072B2' dt 1 title 'home', 'rough-pile-energy-box2d-tuned.dat' with lines lw 2 lc rgb '#E69F00' dt 1 title 'box2d/tuned', 'rough-pile-energy-bullet-tuned.dat' with lines lw 2 lc rgb '#CC79A7' dt 1 title 'bullet/tuned', 'rough-pile-energy-chipmunk-tuned.dat' with lines lw 2 lc rgb '#009E73' dt 1 title 'chipmunk/tuned', 'rough-pile-energy-lammps-hooke.dat' with lines lw 2 lc rgb '#56B4E9' dt 1 title 'lammps/hooke', 'rough-pile-energy-ode-tuned.dat' with lines lw 2 lc rgb '#AA4499' dt 1 title 'ode/tuned'

@@ -105,8 +105,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -136,8 +136,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -167,8 +167,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -198,8 +198,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -229,8 +229,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -260,8 +260,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -291,8 +291,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -322,8 +322,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -353,8 +353,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -384,8 +384,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -415,8 +415,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -446,8 +446,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -477,8 +477,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -508,8 +508,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -539,8 +539,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -570,8 +570,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -601,8 +601,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -632,8 +632,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -663,8 +663,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -694,8 +694,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -725,8 +725,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -756,8 +756,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -787,8 +787,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -818,8 +818,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -849,8 +849,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -880,8 +880,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -911,8 +911,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -942,8 +942,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -973,8 +973,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1004,8 +1004,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1035,8 +1035,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1066,8 +1066,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1097,8 +1097,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1128,8 +1128,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1159,8 +1159,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1190,8 +1190,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1221,8 +1221,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1252,8 +1252,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1283,8 +1283,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1314,8 +1314,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1345,8 +1345,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1376,8 +1376,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1407,8 +1407,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1438,8 +1438,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1469,8 +1469,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1500,8 +1500,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1531,8 +1531,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1562,8 +1562,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1593,8 +1593,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1624,8 +1624,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1655,8 +1655,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1686,8 +1686,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1717,8 +1717,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1748,8 +1748,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1779,8 +1779,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1810,8 +1810,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1841,8 +1841,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1872,8 +1872,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1903,8 +1903,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1934,8 +1934,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1965,8 +1965,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -1996,8 +1996,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2027,8 +2027,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2058,8 +2058,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2089,8 +2089,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2120,8 +2120,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2151,8 +2151,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2182,8 +2182,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2213,8 +2213,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2244,8 +2244,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2275,8 +2275,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2306,8 +2306,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
@@ -2337,8 +2337,8 @@ set rmargin at screen 0.49282296650717705
 set tmargin at screen 0.9571106094808126
 set bmargin at screen 0.5067720090293454
 unset label
-set title 'home-seed: stopped at t = 1.15 s'
-set label 1 'diverged at t = 1.15 s' at graph 0.5, graph 0.5 center front font ',13'
+set title 'home-seed   t = 1.15 s, its last frame'
+set label 1 'diverged at t = 1.20 s' at graph 0.5, graph 0.5 center front font ',13'
 plot 'seed-box-animation-home-seed.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#bbbbbb', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
