@@ -88,12 +88,12 @@ std::vector<EnsembleRow> summarise_ensemble(const std::vector<Result>& results, 
             const auto a = m.read(*r), b = m.read(*o->second);
             if (a && b) differences.push_back(*a - *b);
           }
-      std::string verdict;
+      const char* verdict = "";
       if (differences.size() >= 2) {
         const Interval d = bootstrap_mean(differences);
         verdict = d.lo > 0 ? "+" : d.hi < 0 ? "-" : "=";
       }
-      row.versus_ours.push_back(verdict);
+      row.versus_ours.emplace_back(verdict);
     }
     rows.push_back(std::move(row));
   }

@@ -131,7 +131,8 @@ std::vector<Column> columns(const SceneView& view) {
     Column c{m.column,
              [&m](const Result& r) {
                const nlohmann::json v = m.get(r);
-               return v.is_null() ? std::string(kNoData) : metric_text(v);
+               if (!v.is_null()) return metric_text(v);
+               return r.measured() && !m.null_text.empty() ? m.null_text : std::string(kNoData);
              },
              nullptr, &m, shown ? Place::table : Place::appendix};
     if (m.ranked)

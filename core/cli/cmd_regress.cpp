@@ -48,7 +48,7 @@ std::vector<SuiteScene> suite() {
 // Default tolerances, written into a new baseline; a baseline's own "tolerances" are the ones used
 // (so they can be changed there) and survive --update. A metric passes if
 // |now - baseline| <= abs + rel |baseline|. Each metric's own is in the catalog
-// (core/metrics/catalog.cpp: counts exact, real-valued metrics relative 1e-9 with an absolute floor
+// (core/metrics/catalog.h: counts exact, real-valued metrics relative 1e-9 with an absolute floor
 // of 1e-12); the run's outcome (steps done, the step it diverged at) must match exactly. Our
 // solvers compute in double with -ffp-contract=off, so the same source gives the same bits on every
 // x86-64 build we make (checked: g++ -O2, and -O0 and -O1 with ASan and UBSan, give identical

@@ -55,6 +55,9 @@ struct MetricDef {
   MeaningfulOn meaningful = MeaningfulOn::every_scene;  // where the report's scene table shows its column
   std::optional<Tolerance> regress;  // compared by `ballbench regress`; none: not compared
   std::string ensemble;  // its column in the seed ensembles' tables (ensemble.h), or "" for none
+  // How the tables print a measured run's null, where it has a meaning of its own ("never" for a
+  // time that never came); "" for "n/a".
+  std::string null_text;
   // The value of a run (null where the run has none: a drift of zero energy, the slip of a scene
   // that does not rotate). A row with a key reads the run's MetricValues at it unless it says
   // otherwise; a row without one says how it derives its figure.

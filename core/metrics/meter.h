@@ -97,6 +97,8 @@ struct MetricFamily {
   MetricStage stage = MetricStage::sample;
   std::vector<MetricDef> rows;
   std::function<Applies(const Scene&)> applies = [](const Scene&) { return Applies{}; };
+  // Its meter; none for a family whose rows read figures the run's other stages measured (the
+  // reference's error, the step time), which has no keyed rows.
   std::function<std::unique_ptr<Meter>(const Scene&, const MetricsConfig&)> make;
 };
 

@@ -8,7 +8,7 @@ MeterSet::MeterSet(const Scene& scene, const MetricsConfig& config) : scene_(sce
   for (const MetricFamily& f : metric_families()) {
     Applies a = f.applies(scene);
     if (!a.note.empty()) family_notes_.push_back(std::move(a.note));
-    if (!a.runs) continue;
+    if (!a.runs || !f.make) continue;
     std::unique_ptr<Meter> m = f.make(scene, config);
     meters_.emplace_back(&f, m.get());
     (f.stage == MetricStage::sample ? sample_ : f.stage == MetricStage::motion ? motion_ : final_).push_back(std::move(m));

@@ -44,13 +44,14 @@ MetricFamily slip_metric() {
             "slip at end (m/s)", "slip", true),
       shown(metric_row("slip.time_to_roll", "s",
                        [](const MetricsConfig& cfg) {
-                         return fmt::format("the time from which on no ball on a wall slips faster than {:g} m/s (none: "
-                                            "the last sample still slips)",
+                         return fmt::format("the time from which on no ball on a wall slips faster than {:g} m/s "
+                                            "(never, null in the JSON: the last sample still slips)",
                                             cfg.roll_tolerance);
                        },
                        kReal),
             "time to roll (s)", "t.roll", false),
   };
+  f.rows.back().null_text = "never";
   f.applies = [](const Scene& scene) {
     if (scene.features().rotation && scene.container.kind == ContainerKind::Box) return Applies{};
     return Applies{false, "slip and time to roll: only for scenes that rotate and have walls"};
