@@ -30,7 +30,9 @@ std::string configuration_text(const MatchTry& t) {
 
 double term_miss(const SpecTermDef& d, double bound, double figure) {
   if (d.at_least) return figure > 0 ? bound / figure : std::numeric_limits<double>::infinity();
-  return bound > 0 ? figure / bound : 1 + figure;
+  // A bound of 0 (a count: tunnelling <= 0) met is no distance at all; missed, 1 + the count.
+  if (bound <= 0) return figure <= 0 ? 0.0 : 1 + figure;
+  return figure / bound;
 }
 
 double miss(const MatchTry& t, const AccuracySpec& spec) {

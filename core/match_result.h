@@ -70,12 +70,12 @@ MatchResult read_match_file(const std::string& path);
 MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std::vector<std::string>& names);
 
 // How far a figure is from its term's bound: the figure over the bound (the bound over the figure
-// for a term that must be at least; 1 + the figure for a bound of 0), so at most 1 meets it.
+// for a term that must be at least; for a bound of 0, 0 when met and 1 + the figure when not), so
+// at most 1 meets it.
 double term_miss(const SpecTermDef& d, double bound, double figure);
 
-// How far a try is from the spec: its worst term's figure over the bound (the bound over the figure
-// for a term that must be at least; 1 + the figure for a bound of 0), so at most 1 meets it;
-// infinite for a run that did not end ok or a term it did not measure.
+// How far a try is from the spec: its worst term's term_miss, so at most 1 meets it; infinite for
+// a run that did not end ok or a term it did not measure.
 double miss(const MatchTry& t, const AccuracySpec& spec);
 
 // The try's error along its spec's principal term (principal_term), or its miss where the spec has

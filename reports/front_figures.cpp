@@ -40,22 +40,9 @@ ErrorAxis error_axis(const AccuracySpec& spec) {
 // A figure of 0 cannot sit on a log axis: it is drawn at a thousandth of the spec's bound.
 double on_log_axis(double x, const ErrorAxis& axis) { return std::max(x, axis.bound * 1e-3); }
 
-// Where a try lies on an axis of the worst term over its bound (1: the spec): as `miss`, except that
-// a count bounded at 0 (tunnelling <= 0) which the try met adds nothing, where `miss` counts it 1
-// (0 over a bound of 0), which put every try that met such a spec on the line at 1 whatever its
-// other terms. Drawn at 0.001 at least (a try at 0 on every term).
-double spec_axis_x(const MatchTry& t, const AccuracySpec& spec) {
-  double worst = 0;
-  for (const SpecTermDef& d : spec_terms()) {
-    const auto& bound = spec[d.term];
-    if (!bound) continue;
-    const auto f = t.figures.value(d.key, nlohmann::json());
-    if (!f.is_number()) return std::numeric_limits<double>::infinity();
-    const double x = f.get<double>();
-    worst = std::max(worst, !d.at_least && *bound == 0 && x <= 0 ? 0.0 : term_miss(d, *bound, x));
-  }
-  return std::max(worst, 1e-3);
-}
+// Where a try lies on an axis of the worst term over its bound (1: the spec): its miss, drawn at
+// 0.001 at least (a try at 0 on every term).
+double spec_axis_x(const MatchTry& t, const AccuracySpec& spec) { return std::max(miss(t, spec), 1e-3); }
 
 struct Series {
   std::string label, data;

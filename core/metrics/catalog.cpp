@@ -47,6 +47,13 @@ MetricDef metric_row(std::string key, std::string unit, std::function<std::strin
   return m;
 }
 
+MetricDef count_sum_row(std::string ensemble, std::string definition, std::string a, std::string b) {
+  MetricDef m = metric_row("", "", fixed(std::move(definition)));
+  m.ensemble = std::move(ensemble);
+  m.get = [a = std::move(a), b = std::move(b)](const Result& r) { return json(r.metrics.count(a) + r.metrics.count(b)); };
+  return m;
+}
+
 MetricDef shown(MetricDef m, std::string column, std::string heading, bool ranked, MeaningfulOn meaningful) {
   m.column = std::move(column), m.heading = std::move(heading), m.ranked = ranked, m.meaningful = meaningful;
   return m;

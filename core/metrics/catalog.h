@@ -81,6 +81,9 @@ std::function<std::string(const MetricsConfig&)> fixed(std::string text);
 // A row stored at `key` of the result JSON, with no column.
 MetricDef metric_row(std::string key, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
                      std::optional<Tolerance> regress = std::nullopt);
+// A row without a key for the seed ensembles' column `ensemble`: the sum of the counts at `a` and
+// `b` (walls and pairs together).
+MetricDef count_sum_row(std::string ensemble, std::string definition, std::string a, std::string b);
 // The same row with its report column, its `ballbench run` heading (either may be ""), whether
 // smaller is better and where the report's scene table shows it.
 MetricDef shown(MetricDef m, std::string column, std::string heading, bool ranked,

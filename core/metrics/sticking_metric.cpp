@@ -4,7 +4,6 @@
 
 #include "metrics/meter.h"
 #include "metrics/sticking.h"
-#include "result.h"
 
 namespace ballbench {
 namespace {
@@ -71,17 +70,12 @@ MetricFamily sticking_metric() {
   f.name = "sticking";
   f.order = 50;
   f.stage = MetricStage::sample;
-  MetricDef total = metric_row("", "", fixed("sticking episodes, walls and pairs together"));
-  total.ensemble = "sticking";
-  total.get = [](const Result& r) {
-    return nlohmann::json(r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair"));
-  };
   f.rows = {
       shown(metric_row("sticking.wall", "", definition("a ball", "radius (in a wall)"), kExact), "sticking wall",
             "stk.wall", true),
       shown(metric_row("sticking.pair", "", definition("a pair", "radius sum"), kExact), "sticking pair", "stk.pair",
             true),
-      total,
+      count_sum_row("sticking", "sticking episodes, walls and pairs together", "sticking.wall", "sticking.pair"),
   };
   f.make = [](const Scene& scene, const MetricsConfig& config) { return std::make_unique<StickingMeter>(scene, config); };
   return f;

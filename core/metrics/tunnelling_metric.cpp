@@ -5,7 +5,6 @@
 
 #include "metrics/meter.h"
 #include "metrics/tunnelling.h"
-#include "result.h"
 
 namespace ballbench {
 namespace {
@@ -62,11 +61,6 @@ MetricFamily tunnelling_metric() {
   f.name = "tunnelling";
   f.order = 40;
   f.stage = MetricStage::motion;
-  MetricDef total = metric_row("", "", fixed("tunnelling events, walls and pairs together"));
-  total.ensemble = "tunnelling";
-  total.get = [](const Result& r) {
-    return nlohmann::json(r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair"));
-  };
   f.rows = {
       shown(metric_row("tunnelling.wall", "",
                        fixed("balls whose centre went from inside the box to beyond a wall between two samples"), kExact),
@@ -85,7 +79,7 @@ MetricFamily tunnelling_metric() {
                        },
                        kExact),
             "tunnelling pair", "tun.pair", true),
-      total,
+      count_sum_row("tunnelling", "tunnelling events, walls and pairs together", "tunnelling.wall", "tunnelling.pair"),
   };
   f.make = [](const Scene& scene, const MetricsConfig& config) {
     return std::make_unique<TunnellingMeter>(scene, config);
