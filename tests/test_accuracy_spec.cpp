@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include "accuracy_spec.h"
-#include "metrics/meter_set.h"
 #include "cli_runner.h"
 #include "input_error.h"
 #include "match.h"
+#include "metrics/meter_set.h"
 #include "registry.h"
 #include "result.h"
 #include "runner.h"
@@ -334,10 +334,11 @@ TEST(MatchCli, TheRatioLineSaysWhetherTheTargetWasMet) {
     t.figures = {{"overlap", 0.005}};
     m.tries.push_back(t);
   }
-  MatchOutcome ours{.engine = "home", .profile = "default", .role = role_name(EngineRole::ours), .reached = true,
-                    .found = 0, .cost_ns = 100};
-  MatchOutcome theirs{.engine = "chipmunk", .profile = "default", .role = role_name(EngineRole::external),
-                      .reached = true, .found = 1, .cost_ns = 500};
+  MatchOutcome ours, theirs;
+  ours.engine = "home", ours.profile = "default", ours.role = role_name(EngineRole::ours), ours.reached = true;
+  ours.found = 0, ours.cost_ns = 100;
+  theirs.engine = "chipmunk", theirs.profile = "default", theirs.role = role_name(EngineRole::external);
+  theirs.reached = true, theirs.found = 1, theirs.cost_ns = 500;
   m.outcomes = {ours, theirs};
   const auto printed = [&](std::optional<double> target) {
     ::testing::internal::CaptureStdout();

@@ -148,7 +148,7 @@ TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
     ASSERT_EQ(r.status, RunStatus::ok) << r.error;
     ASSERT_TRUE(r.metrics.number("energy.max_rel_drift"));
     const double drift = std::abs(r.metrics.value("energy.final") - r.metrics.value("energy.initial")) / r.metrics.value("energy.initial");
-    std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %d\n", profile,
+    std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %ld\n", profile,
                 drift, *r.metrics.number("energy.max_rel_drift"), r.metrics.count("tunnelling.wall"));
     EXPECT_LT(drift, 1e-4) << profile;
   }

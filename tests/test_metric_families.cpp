@@ -53,8 +53,9 @@ TEST(MetricFamilies, EachMeterWritesItsOwnRows) {
     for (const auto& [key, value] : values.all()) written.insert(key);
   }
   for (const MetricFamily& f : metric_families())
-    for (const MetricDef& m : f.rows)
+    for (const MetricDef& m : f.rows) {
       if (!m.key.empty()) EXPECT_TRUE(written.contains(m.key)) << m.key << " (" << f.name << ") never written";
+    }
 }
 
 TEST(MetricValues, AKeyNotInTheCatalogIsAProgrammingError) {

@@ -143,7 +143,7 @@ class Search {
     return r;
   }
 
-  Result run_at(const Config& c, int k, double timeout_s, RunOptions r) const {
+  Result run_at(int k, double timeout_s, RunOptions r) const {
     Scene s = scene_;
     s.dt = scene_.dt / double(1 << k);
     return o_.isolation.enabled ? run_engine_isolated(s, e_, r, {timeout_s, ""}) : run_engine(s, e_, r);
@@ -151,7 +151,7 @@ class Search {
 
   int try_config(const Config& c, int k, double budget_left) {
     const auto t0 = Clock::now();
-    const Result r = run_at(c, k, std::min(o_.isolation.timeout_s, budget_left), options(c, k));
+    const Result r = run_at(k, std::min(o_.isolation.timeout_s, budget_left), options(c, k));
     MatchTry t;
     t.engine = e_.info.name, t.profile = profile_, t.knob = c.knob, t.value = c.value;
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
@@ -178,7 +178,7 @@ class Search {
     for (int rep = 0; rep < o_.repeats && !interrupt_signal(); ++rep) {
       RunOptions r = options(c, f.halvings);
       r.reference = nullptr;
-      const Result t = run_at(c, f.halvings, o_.isolation.timeout_s, r);
+      const Result t = run_at(f.halvings, o_.isolation.timeout_s, r);
       if (t.status != RunStatus::ok) break;
       oc.cost_repeats.push_back(cost_per_scene_step(t.engine_process_s.value_or(t.engine_s), scene_));
       if (t.engine_process_s) pipe.push_back(cost_per_scene_step(t.engine_s, scene_));
