@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "balls_text.h"
 #include "markdown_cell.h"
 #include "result.h"
 
@@ -29,7 +30,7 @@ std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
 
 void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {
   md += fmt::format("## {}\n\n", accuracy_heading(m.scene));
-  md += fmt::format("{} balls, class `{}`, the scene's dt = {:g} s. Spec: {}.", m.n, m.scene_class, m.dt,
+  md += fmt::format("{}, class `{}`, the scene's dt = {:g} s. Spec: {}.", balls_text(m.n), m.scene_class, m.dt,
                     m.spec.text());
   if (!m.interrupted.empty()) md += fmt::format(" **Interrupted by {}: the rows below are what ran.**", m.interrupted);
   md += "\n\n";

@@ -101,7 +101,7 @@ std::string plot_series(const std::vector<Series>& series, bool titles) {
   return plot;
 }
 
-std::string not_drawn(const MatchResult& m, const ErrorAxis& axis) {
+std::string not_drawn(const MatchResult& m) {
   std::vector<std::string> names;
   for (const MatchOutcome& oc : m.outcomes) {
     bool any = false;
@@ -135,7 +135,7 @@ Figure scene_front(const MatchResult& m) {
                       axis.term ? spec_term(*axis.term).key : "error over the spec", m.scene, m.spec.text(),
                       axis.term ? " A figure of 0 is drawn at a thousandth of the bound."
                                 : " A try at 0 on every term is drawn at 0.001.",
-                      not_drawn(m, axis))};
+                      not_drawn(m))};
 }
 
 // Every scene's front in one figure, the error over the spec's bound so that 1 means the spec on

@@ -22,6 +22,7 @@
 #include "ensemble.h"
 #include "friction_section.h"
 #include "accuracy_section.h"
+#include "balls_text.h"
 #include "ratio_text.h"
 #include "summary_section.h"
 #include "ordered_set.h"
@@ -225,9 +226,6 @@ void put_scene_table(MarkdownBuffer& put, const std::vector<const Result*>& rows
   }
 }
 
-// "1 ball", "20 balls".
-std::string balls(long n) { return n == 1 ? "1 ball" : fmt::format("{} balls", n); }
-
 // What acts on the balls, as the scene's table is chosen by it.
 std::string features_text(const SceneFeatures& f) {
   return fmt::format("{}, {}, {}{}", f.walls ? "walls" : "open space", f.gravity ? "gravity" : "no gravity",
@@ -297,12 +295,12 @@ void put_viewer(MarkdownBuffer& put, const std::vector<Figure>& figures, const s
 
 void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Figure>& figures) {
   put("## Work against precision: `{}`\n\n", sw.scene);
-  put("`ballbench sweep` on {} balls: every engine and profile at several step sizes, and with each of its own "
+  put("`ballbench sweep` on {}: every engine and profile at several step sizes, and with each of its own "
       "accuracy knobs changed one at a time. Error: position RMS against `{}` at t = {} s (short enough that the "
       "trajectories of a chaotic many-ball system have not yet parted completely); engine time: the engine's own "
       "step time to reach it, median of {} runs. Every point, with its settings: `results/sweep-{}.json` (and "
       "`.csv`).\n\n",
-      sw.n, sw.reference, sw.horizon, sw.repeats, sw.scene);
+      balls_text(sw.n), sw.reference, sw.horizon, sw.repeats, sw.scene);
   put_figures(put, figures, "work-precision", sw.scene);
   put("Each engine's Pareto front, fastest first: the settings no other setting of the same engine beats, being at "
       "least as accurate and not slower, and more accurate or faster beyond the noise (its slowest timing repeat "
@@ -345,10 +343,10 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
 
 void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vector<Figure>& figures) {
   put("## Stability frontier: `{}`\n\n", f.scene);
-  put("`ballbench stress` on {} balls: each knob doubled until a run of {} steps fails (level k runs the knob at "
+  put("`ballbench stress` on {}: each knob doubled until a run of {} steps fails (level k runs the knob at "
       "2^(k-1) times the scene's value; `count` tiles the scene side by side). The table gives the largest value "
       "that passed and why the next level failed. Source: `results/stress-{}.json`.\n\n",
-      f.n, f.steps, f.scene);
+      balls_text(f.n), f.steps, f.scene);
   put_figures(put, figures, "frontier", f.scene);
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
@@ -482,7 +480,7 @@ void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults
       // Memory per ball only where the balls dominate it: below kMemoryBalls the process's fixed cost
       // (and the other benchmarks it ran) would be spread over a few balls.
       if (largest && largest->steps_per_s)
-        put("\n`{}` at {}: {:.1f} steps per second{}.\n", run_label(engine, profile), balls(largest->n),
+        put("\n`{}` at {}: {:.1f} steps per second{}.\n", run_label(engine, profile), balls_text(largest->n),
             *largest->steps_per_s,
             largest->n < kMemoryBalls
                 ? std::string()
@@ -781,7 +779,7 @@ std::string render_report(const ReportInputs& in, const std::vector<Figure>& fig
     const Result& first = *rows.front();
     const SceneView view = scene_view(rows);
     const std::vector<Column> cols = scene_columns(rows, view);
-    put("## Scene `{}`\n\n{}, dt = {} s, {} steps (`{}`){}.\n\n", scene, balls(first.n), first.dt, first.steps,
+    put("## Scene `{}`\n\n{}, dt = {} s, {} steps (`{}`){}.\n\n", scene, balls_text(first.n), first.dt, first.steps,
         display_path(first.scene_source), view.features ? "; " + features_text(*view.features) : "");
     put_initial_overlap(put, rows);
     put_scene_table(put, rows, cols, Place::table, true);

@@ -80,6 +80,17 @@ TEST(AccuracySection, TheSummaryAnswersWithTheRatioAndTheMisses) {
   EXPECT_NE(md2.find("PERFORMANCE.md#where-the-targets-stand"), std::string::npos) << md2;
 }
 
+TEST(AccuracySection, OneBallIsOneBall) {
+  ReportInputs in;
+  MatchResult one = pile();
+  one.n = 1;
+  in.matches = {one};
+  const std::string md = accuracy_section(in, {});
+  EXPECT_NE(md.find("\n1 ball, class `pile`"), std::string::npos) << md;
+  in.matches = {pile()};
+  EXPECT_NE(accuracy_section(in, {}).find("\n500 balls, class `pile`"), std::string::npos);
+}
+
 TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
   ReportInputs in;
   in.matches = {pile()};

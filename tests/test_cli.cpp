@@ -457,6 +457,7 @@ for a in "$@"; do
 done
 case "$filter" in
   *gas*) printf '{"context": {}, "benchmarks": [{"name": "step/home/default/gas/1000", "run_type": "iteration", "ns_per_ball_step": 24.0}]}' > "$out" ;;
+  *none*) ;;
   *) exit 3 ;;
 esac
 )";
@@ -464,13 +465,15 @@ esac
   // One small table and the benchmark parts: what the test is about, in seconds.
   const auto suites = dir / "suites.toml";
   std::ofstream(suites) << "[quick]\nscenes = [\"two-ball-1\"]\nmatch_scenes = []\nsweep_scenes = []\n"
-                           "stress_scenes = []\nbench_filters = [\"^step/home/default/gas/1000$\", \"^pipe/\"]\n";
+                           "stress_scenes = []\nbench_filters = [\"^step/home/default/gas/1000$\", \"^pipe/\", \"^none/\"]\n";
   const Outcome o = cli("report --out " + (dir / "out").string() + " --engine home --suites " + suites.string() +
                         " --bench-binary " + bin.string());
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.err.find("scaling: part skipped: " + bin.string() + " --benchmark_filter='^pipe/': it failed (exit status 3)"),
             std::string::npos)
       << o.err;
+  // A filter that matches nothing: Google Benchmark writes nothing and exits 0.
+  EXPECT_NE(o.err.find("--benchmark_filter='^none/': no benchmark matched it"), std::string::npos) << o.err;
   const std::string bench = slurp((dir / "out" / "results" / "bench.json").string());
   EXPECT_NE(bench.find("step/home/default/gas/1000"), std::string::npos) << bench;
   EXPECT_NE(slurp((dir / "out" / "REPORT.md").string()).find("## Scaling"), std::string::npos);

@@ -161,14 +161,17 @@ std::vector<std::string> run_bench(const std::string& bin, const std::vector<std
                       : WIFEXITED(rc)    ? fmt::format("it failed (exit status {})", WEXITSTATUS(rc))
                       : WIFSIGNALED(rc)  ? fmt::format("it was killed by signal {}", WTERMSIG(rc))
                                          : fmt::format("it failed (wait status {})", rc);
+    // Google Benchmark writes nothing, and exits 0, when its filter matches no benchmark.
+    const bool empty = why.empty() && fs::file_size(tmp) == 0;
+    if (empty) why = "no benchmark matched it (`--benchmark_list_tests` lists them)", fs::remove(tmp);
     if (why.empty()) try {
         if (!found(read_bench_file(tmp))) why = "no benchmark matched " + filter;
       } catch (const InputError& e) {
         why = e.what();
       }
     if (!why.empty()) {  // this filter's part is left out; the others' stand
-      fmt::print(stderr, "{}: part skipped: {} --benchmark_filter='{}': {}; its output is in {}\n", section, bin, filter,
-                 why, tmp);
+      fmt::print(stderr, "{}: part skipped: {} --benchmark_filter='{}': {}{}\n", section, bin, filter, why,
+                 empty ? "" : "; its output is in " + tmp);
       left_out.push_back(fmt::format("part of the {} section, --benchmark_filter='{}': {}", section, filter, why));
       continue;
     }
