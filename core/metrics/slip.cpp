@@ -8,11 +8,10 @@ namespace ballbench {
 SlipTracker::SlipTracker(const Scene& scene, double contact_tolerance, double roll_tolerance)
     : scene_(scene),
       contact_tolerance_(contact_tolerance),
-      roll_tolerance_(roll_tolerance),
-      measured_(scene.features().rotation && scene.container.kind == ContainerKind::Box) {}
+      roll_tolerance_(roll_tolerance) {}
 
 void SlipTracker::observe(const State& s) {
-  if (!measured_ || !s.rotates()) return;
+  if (!s.rotates()) return;
   const Container& box = scene_.container;
   bool touching = false;
   double worst = 0;
@@ -33,7 +32,6 @@ void SlipTracker::observe(const State& s) {
 
 SlipSummary SlipTracker::summary() const {
   SlipSummary out;
-  out.measured = measured_;
   out.final_max = final_max_;
   if (touched_) out.time_to_roll = rolling_since_;
   return out;

@@ -3,7 +3,7 @@
 //   s = |v . t - w r|,   t = z x n (the wall's inward normal n turned a quarter counter-clockwise),
 // zero when the ball rolls (Goldstein, Classical Mechanics, rolling without slipping). A ball
 // touches a wall when its centre is within r (1 + contact tolerance) of it. Only for scenes that
-// rotate and have walls.
+// rotate and have walls: slip_metric.cpp builds a tracker there alone.
 #include <optional>
 
 #include "scene.h"
@@ -12,7 +12,6 @@
 namespace ballbench {
 
 struct SlipSummary {
-  bool measured = false;  // the scene rotates and has walls
   // The largest slip of a ball touching a wall in the last sample (m/s); 0 when none touches.
   double final_max = 0;
   // The time from which on no ball touching a wall slips faster than the roll tolerance (s): the
@@ -30,7 +29,7 @@ class SlipTracker {
  private:
   const Scene& scene_;
   double contact_tolerance_, roll_tolerance_;
-  bool measured_ = false, touched_ = false;
+  bool touched_ = false;
   double final_max_ = 0;
   std::optional<double> rolling_since_;
 };
