@@ -13,20 +13,20 @@ namespace ballbench {
 
 const std::array<SpecTermDef, kSpecTermCount>& spec_terms() {
   static const std::array<SpecTermDef, kSpecTermCount> terms{{
-      {SpecTerm::overlap, "overlap", "", false, false,
+      {SpecTerm::overlap, "overlap", "", false, false, true,
        "the deepest overlap in any sample after the first, as a fraction of the radius (the smaller one for a pair)"},
-      {SpecTerm::tunnelling, "tunnelling", "", false, false,
+      {SpecTerm::tunnelling, "tunnelling", "", false, false, true,
        "balls that passed through a wall or through each other within a step (wall + pair)"},
-      {SpecTerm::sticking, "sticking", "", false, false, "stuck episodes, wall + pair (the sticking metric)"},
-      {SpecTerm::rest_speed, "rest_speed", "m/s", false, false,
+      {SpecTerm::sticking, "sticking", "", false, false, true, "stuck episodes, wall + pair (the sticking metric)"},
+      {SpecTerm::rest_speed, "rest_speed", "m/s", false, false, false,
        "the RMS speed of the final state: a pile that should be at rest"},
-      {SpecTerm::energy_drift, "energy_drift", "", false, false,
+      {SpecTerm::energy_drift, "energy_drift", "", false, false, true,
        "the largest |E - E0| / E0 over the run: for scenes that conserve energy"},
-      {SpecTerm::energy_error, "energy_error", "", false, true,
+      {SpecTerm::energy_error, "energy_error", "", false, true, false,
        "the largest |E - E_ref| / E_ref(0) against the reference run"},
-      {SpecTerm::horizon, "horizon", "s", true, true,
+      {SpecTerm::horizon, "horizon", "s", true, true, false,
        "how long every ball stays within a tenth of the mean radius (RMS) of the reference run; at least this"},
-      {SpecTerm::rolling, "rolling", "", false, false,
+      {SpecTerm::rolling, "rolling", "", false, false, false,
        "the rolling ball's final speed against its closed form, |v - v_closed| / |v_closed|"},
   }};
   return terms;

@@ -36,6 +36,9 @@ struct SpecTermDef {
   const char* unit;  // "" for counts and ratios
   bool at_least;     // the figure must be at least the bound (the horizon); else at most
   bool needs_reference;  // measured against the reference run (`exact`)
+  // The figure never falls as a run goes on (a deepest overlap, a count, a largest drift): a run
+  // whose figure is past the bound cannot meet it, so it stops there (RunOptions::stop_on_miss).
+  bool grows;
   const char* doc;
 };
 

@@ -3,7 +3,11 @@
 #include <sys/utsname.h>
 
 #include <fstream>
+#include <iterator>
 #include <thread>
+
+#include <fmt/format.h>
+#include <xxhash.h>
 
 namespace ballbench {
 
@@ -28,7 +32,17 @@ MachineInfo machine_info() {
 #endif
   m.build_type = BALLBENCH_BUILD_TYPE;
   m.flags = BALLBENCH_CXX_FLAGS;
+  m.build = build_id();
   return m;
+}
+
+const std::string& build_id() {
+  static const std::string id = [] {
+    std::ifstream exe("/proc/self/exe", std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(exe), std::istreambuf_iterator<char>()};
+    return bytes.empty() ? std::string("unknown") : fmt::format("{:016x}", XXH3_64bits(bytes.data(), bytes.size()));
+  }();
+  return id;
 }
 
 }  // namespace ballbench

@@ -11,8 +11,13 @@ struct MachineInfo {
   std::string compiler;   // compiler and version
   std::string build_type; // CMake build type
   std::string flags;      // optimisation flags of that build type
+  std::string build;      // build_id()
 };
 
 MachineInfo machine_info();
+
+// The running binary: XXH3-64 of its bytes (/proc/self/exe), 16 hex digits, "unknown" where it
+// cannot be read. Two results of one build id were computed by the same code.
+const std::string& build_id();
 
 }  // namespace ballbench

@@ -36,16 +36,17 @@ double term_miss(const SpecTermDef& d, double bound, double figure) {
 }
 
 double miss(const MatchTry& t, const AccuracySpec& spec) {
-  if (t.status != RunStatus::ok) return std::numeric_limits<double>::infinity();
+  const bool missed = t.status == RunStatus::missed;
+  if (t.status != RunStatus::ok && !missed) return std::numeric_limits<double>::infinity();
   double worst = 0;
   for (const SpecTermDef& d : spec_terms()) {
     const auto& bound = spec[d.term];
-    if (!bound) continue;
+    if (!bound || (missed && !d.grows)) continue;
     const auto f = t.figures.value(d.key, nlohmann::json());
     if (!f.is_number()) return std::numeric_limits<double>::infinity();
     worst = std::max(worst, term_miss(d, *bound, f.get<double>()));
   }
-  return worst;
+  return missed ? worst / std::max(t.done, 1e-9) : worst;
 }
 
 std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec) {
@@ -76,24 +77,44 @@ const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& r
   return nearest;
 }
 
+nlohmann::json to_json(const MatchTry& t) {
+  return {{"engine", t.engine},       {"profile", t.profile}, {"knob", t.knob},
+          {"value", t.value},         {"halvings", t.halvings}, {"dt", t.dt},
+          {"status", run_status_text(t.status)},       {"error", t.error},   {"met", t.met},
+          {"why_not", t.why_not},     {"figures", t.figures}, {"cost_ns", t.cost_ns},
+          {"cost_pipe_ns", t.cost_pipe_ns ? nlohmann::json(*t.cost_pipe_ns) : nlohmann::json()},
+          {"wall_s", t.wall_s},       {"work", t.work}, {"done", t.done}, {"stored", t.stored},
+          {"settings", t.settings}};
+}
+
+MatchTry match_try_from_json(const nlohmann::json& q) {
+  const auto opt = [](const nlohmann::json& v) { return v.is_null() ? std::nullopt : std::optional(v.get<double>()); };
+  MatchTry t;
+  t.engine = q.at("engine").get<std::string>(), t.profile = q.at("profile").get<std::string>();
+  t.knob = q.at("knob").get<std::string>(), t.value = q.at("value");
+  t.halvings = q.at("halvings").get<int>(), t.dt = q.at("dt").get<double>();
+  t.status = run_status_from_text(q.at("status").get<std::string>()), t.error = q.at("error").get<std::string>();
+  t.met = q.at("met").get<bool>(), t.why_not = q.at("why_not").get<std::string>(), t.figures = q.at("figures");
+  t.cost_ns = q.at("cost_ns").get<double>(), t.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
+  t.wall_s = q.at("wall_s").get<double>(), t.settings = q.at("settings");
+  t.work = q.value("work", 0.0), t.done = q.value("done", 1.0), t.stored = q.value("stored", false);
+  return t;
+}
+
 nlohmann::json to_json(const MatchResult& m) {
   nlohmann::json tries = nlohmann::json::array(), outcomes = nlohmann::json::array();
-  for (const MatchTry& t : m.tries)
-    tries.push_back({{"engine", t.engine},       {"profile", t.profile}, {"knob", t.knob},
-                     {"value", t.value},         {"halvings", t.halvings}, {"dt", t.dt},
-                     {"status", run_status_text(t.status)},       {"error", t.error},   {"met", t.met},
-                     {"why_not", t.why_not},     {"figures", t.figures}, {"cost_ns", t.cost_ns},
-                     {"cost_pipe_ns", t.cost_pipe_ns ? nlohmann::json(*t.cost_pipe_ns) : nlohmann::json()},
-                     {"wall_s", t.wall_s},       {"settings", t.settings}});
+  for (const MatchTry& t : m.tries) tries.push_back(to_json(t));
   for (const MatchOutcome& o : m.outcomes)
     outcomes.push_back({{"engine", o.engine},       {"profile", o.profile},   {"role", o.role},   {"reached", o.reached},
                         {"found", o.found},         {"best", o.best},         {"tries", o.tries},
                         {"finest_dt", o.finest_dt}, {"cost_repeats", o.cost_repeats}, {"cost_ns", o.cost_ns},
                         {"cost_pipe_ns", o.cost_pipe_ns ? nlohmann::json(*o.cost_pipe_ns) : nlohmann::json()},
+                        {"work", o.work}, {"stored", o.stored}, {"timing_stored", o.timing_stored},
                         {"stopped", o.stopped},     {"command", o.command}});
   return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
           {"scene_class", m.scene_class}, {"n", m.n},        {"dt", m.dt},
-          {"spec", m.spec.to_json()}, {"context", m.context}, {"interrupted", m.interrupted},
+          {"spec", m.spec.to_json()}, {"budget_runs", m.budget_runs}, {"run_ball_steps", m.run_ball_steps},
+          {"context", m.context}, {"interrupted", m.interrupted},
           {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
           {"tries", tries},          {"outcomes", outcomes}};
 }
@@ -111,22 +132,14 @@ MatchResult match_from_json(const nlohmann::json& j) {
     if (!term) throw InputError(fmt::format("spec: unknown term '{}'", key));
     m.spec[*term] = value.get<double>();
   }
+  m.budget_runs = j.value("budget_runs", 0.0);
+  m.run_ball_steps = j.value("run_ball_steps", 0L);
   m.context = j.at("context");
   m.interrupted = j.at("interrupted").get<std::string>();
   m.shard_index = j.at("shard").at("index").get<int>();
   m.shard_count = j.at("shard").at("count").get<int>();
   const auto opt = [](const nlohmann::json& v) { return v.is_null() ? std::nullopt : std::optional(v.get<double>()); };
-  for (const auto& q : j.at("tries")) {
-    MatchTry t;
-    t.engine = q.at("engine").get<std::string>(), t.profile = q.at("profile").get<std::string>();
-    t.knob = q.at("knob").get<std::string>(), t.value = q.at("value");
-    t.halvings = q.at("halvings").get<int>(), t.dt = q.at("dt").get<double>();
-    t.status = run_status_from_text(q.at("status").get<std::string>()), t.error = q.at("error").get<std::string>();
-    t.met = q.at("met").get<bool>(), t.why_not = q.at("why_not").get<std::string>(), t.figures = q.at("figures");
-    t.cost_ns = q.at("cost_ns").get<double>(), t.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
-    t.wall_s = q.at("wall_s").get<double>(), t.settings = q.at("settings");
-    m.tries.push_back(std::move(t));
-  }
+  for (const auto& q : j.at("tries")) m.tries.push_back(match_try_from_json(q));
   for (const auto& q : j.at("outcomes")) {
     MatchOutcome o;
     o.engine = q.at("engine").get<std::string>(), o.profile = q.at("profile").get<std::string>();
@@ -136,6 +149,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
     o.cost_repeats = q.at("cost_repeats").get<std::vector<double>>(), o.cost_ns = q.at("cost_ns").get<double>();
     o.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
     o.stopped = q.at("stopped").get<std::string>(), o.command = q.at("command").get<std::string>();
+    o.work = q.value("work", 0.0), o.stored = q.value("stored", 0), o.timing_stored = q.value("timing_stored", false);
     for (int k : {o.found, o.best})
       if (k >= int(m.tries.size())) throw InputError(fmt::format("outcomes: try {} is not in tries", k));
     m.outcomes.push_back(std::move(o));
@@ -146,7 +160,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
 namespace {
 
 std::string match_csv(const MatchResult& m) {
-  std::string out = "engine,profile,knob,value,halvings,dt,status,met,cost_ns,cost_pipe_ns,wall_s";
+  std::string out = "engine,profile,knob,value,halvings,dt,status,met,cost_ns,cost_pipe_ns,wall_s,work,done";
   for (const SpecTermDef& d : spec_terms()) out += fmt::format(",{}", d.key);
   out += ",why_not\n";
   const auto csv_text = [](std::string s) {  // quoted, as RFC 4180
@@ -155,9 +169,10 @@ std::string match_csv(const MatchResult& m) {
     return q + "\"";
   };
   for (const MatchTry& t : m.tries) {
-    out += fmt::format("{},{},{},{},{},{:.17g},{},{},{:.6g},{},{:.3f}", t.engine, t.profile, t.knob,
+    out += fmt::format("{},{},{},{},{},{:.17g},{},{},{:.6g},{},{:.3f},{:.6g},{:.6g}", t.engine, t.profile, t.knob,
                        csv_text(t.value.is_null() ? "" : json_text(t.value)), t.halvings, t.dt, csv_text(run_status_text(t.status)),
-                       t.met ? 1 : 0, t.cost_ns, t.cost_pipe_ns ? fmt::format("{:.6g}", *t.cost_pipe_ns) : "", t.wall_s);
+                       t.met ? 1 : 0, t.cost_ns, t.cost_pipe_ns ? fmt::format("{:.6g}", *t.cost_pipe_ns) : "", t.wall_s,
+                       t.work, t.done);
     for (const SpecTermDef& d : spec_terms()) {
       const auto v = t.figures.value(d.key, nlohmann::json());
       out += v.is_null() ? "," : fmt::format(",{:.6g}", v.get<double>());

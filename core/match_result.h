@@ -30,6 +30,11 @@ struct MatchTry {
   double cost_ns = 0;
   std::optional<double> cost_pipe_ns;
   double wall_s = 0;             // the run's wall time, harness included (s)
+  // Its share of the search's budget, in runs of the scene at its own step: 2^halvings times the
+  // fraction of its steps it made (all of them for one that crashed or timed out).
+  double work = 0;
+  double done = 1;               // the fraction of the scene's duration it ran
+  bool stored = false;           // read from the results store (core/try_store.h), not run again
   nlohmann::json settings;       // the engine's effective settings
 };
 
@@ -42,8 +47,13 @@ struct MatchOutcome {
   int best = -1;         // the try nearest the spec that did not meet it (its worst term's ratio to its bound)
   int tries = 0;
   double finest_dt = 0;  // the finest step tried (s)
-  std::vector<double> cost_repeats;  // the found configuration's cost in each timing run (ns)
+  // The found configuration's cost in each timing run alone (ns): its window, from the state it
+  // saved there, scaled by the window's share of its whole run; its own run's where none ran.
+  std::vector<double> cost_repeats;
   double cost_ns = 0;    // their median
+  double work = 0;       // the search's work, in runs of the scene at its own step
+  int stored = 0;        // of its tries, those read from the results store
+  bool timing_stored = false;  // its cost read from the store (measured alone by an earlier search)
   std::optional<double> cost_pipe_ns;
   std::string stopped;   // why the search ended without a result ("budget", "max halvings"), or ""
   std::string command;   // the `ballbench run` that reproduces the found (or best) point
@@ -54,6 +64,8 @@ struct MatchResult {
   int n = 0;
   double dt = 0;  // the scene's
   AccuracySpec spec;
+  double budget_runs = 0;  // each search's budget, in runs of the scene at dt
+  long run_ball_steps = 0;  // ball steps in one such run: n x the scene's steps
   nlohmann::json context;
   std::string interrupted;
   int shard_index = 1, shard_count = 1;
@@ -61,6 +73,8 @@ struct MatchResult {
   std::vector<MatchOutcome> outcomes;
 };
 
+nlohmann::json to_json(const MatchTry& t);
+MatchTry match_try_from_json(const nlohmann::json& j);
 nlohmann::json to_json(const MatchResult& m);
 MatchResult match_from_json(const nlohmann::json& j);
 // JSON (the whole result) and CSV (every try), each written atomically.
@@ -75,7 +89,9 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
 double term_miss(const SpecTermDef& d, double bound, double figure);
 
 // How far a try is from the spec: its worst term's term_miss, so at most 1 meets it; infinite for
-// a run that did not end ok or a term it did not measure.
+// a run that did not end ok or a term it did not measure. A try stopped where it missed
+// (RunStatus::missed) is as far as its worst term that only grows over the share of the run it
+// made: one that missed sooner is farther.
 double miss(const MatchTry& t, const AccuracySpec& spec);
 
 // The try's error along its spec's principal term (principal_term), or its miss where the spec has

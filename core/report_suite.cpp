@@ -29,7 +29,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
     throw InputError(fmt::format("{}: no suite [{}] (suites: {})", path, name, fmt::join(names, ", ")));
   }
   TableReader r(*t, path, name);
-  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget_s", "sweep_scenes",
+  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "sweep_scenes",
                 "stress_scenes", "stress_levels", "seeds", "bench_filters", "bench_min_time", "bench_budget_s",
                 "harness_filter", "timeout_s", "costly_engines"});
   ReportSuite s;
@@ -60,7 +60,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
       if (std::find(s.scenes.begin(), s.scenes.end(), v) == s.scenes.end())
         r.fail(r.node(key), key, fmt::format("'{}' is not one of the suite's scenes", v));
   s.match_scenes = scenes("match_scenes");
-  s.match_budget_s = positive("match_budget_s", s.match_budget_s);
+  s.match_budget = positive("match_budget", s.match_budget);
   s.sweep_scenes = scenes("sweep_scenes");
   s.stress_scenes = scenes("stress_scenes");
   s.stress_levels = count("stress_levels", s.stress_levels);

@@ -93,6 +93,8 @@ nlohmann::json to_json(const Result& r) {
     j["engine_process_s"] = measurement(r, *r.engine_process_s);
     j["ns_per_ball_step_pipe"] = measurement(r, r.engine_s * 1e9 / std::max(1L, r.steps_done) / std::max(1, r.n));
   }
+  if (r.engine_cpu_s) j["engine_cpu_s"] = measurement(r, *r.engine_cpu_s);
+  if (r.window_engine_s) j["window_engine_s"] = measurement(r, *r.window_engine_s);
   j["out_of_plane_max"] = measurement(r, r.out_of_plane_max);
   if (r.scene_features) {
     nlohmann::json& f = j["scene_features"];
@@ -159,6 +161,8 @@ Result result_from_json(const nlohmann::json& j) {
   r.ns_per_ball_step = measurement_from(j, "ns_per_ball_step");
   r.harness_s = measurement_from(j, "harness_s", false);
   if (j.contains("engine_process_s")) r.engine_process_s = measurement_from(j, "engine_process_s");
+  if (j.contains("engine_cpu_s")) r.engine_cpu_s = measurement_from(j, "engine_cpu_s");
+  if (j.contains("window_engine_s")) r.window_engine_s = measurement_from(j, "window_engine_s");
   r.out_of_plane_max = measurement_from(j, "out_of_plane_max", false);
   if (j.contains("scene_features")) {
     const auto& f = j.at("scene_features");
@@ -229,6 +233,7 @@ nlohmann::json result_shape() {
   r.status = RunStatus::diverged;  // with its step
   r.steps_done = 1;                 // a run that made steps writes every figure it measured
   r.engine_process_s = 0;
+  r.engine_cpu_s = r.window_engine_s = 0;
   r.events.emplace_back();
   r.events.back().j = 1;  // a pair's
   r.reference.available = true;

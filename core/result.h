@@ -50,6 +50,13 @@ struct Result {
   // around its own step calls (s), beside engine_s, which adds the pipe. JSON "engine_process_s"
   // and "ns_per_ball_step_pipe" (engine_s per ball-step), present only for such engines.
   std::optional<double> engine_process_s;
+  // The engine's step time as CPU time (s): engine_s times the share of the run's wall time the
+  // process spent on a core (more than 1 for an engine's own threads), so that a run sharing the
+  // cores with other work is costed nearly as one alone. JSON "engine_cpu_s"; runs that time it.
+  std::optional<double> engine_cpu_s;
+  // The engine's step time over RunOptions::window (s): how that window's cost relates to the
+  // whole run's. JSON "window_engine_s"; none for a run without a window or one that stopped in it.
+  std::optional<double> window_engine_s;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   // Every metric of the run's states by catalog key (metrics/catalog.h), as its meters measured
   // them; none for a metric its scene does not call for, or a run not measured.

@@ -1,5 +1,7 @@
 #include "run_stages.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,6 +10,9 @@
 
 #include "input_error.h"
 #include "interrupt.h"
+#include "scene_writer.h"
+#include "spec_verdict.h"
+#include "data_file.h"
 #include "trajectory_csv.h"
 
 namespace ballbench {
@@ -74,6 +79,30 @@ void step_reference(RunContext& c, long k, bool read) {
   }
 }
 
+// The engine's step time so far as CPU time: engine_s times the share of the wall time since the
+// harness started that this process spent on a core. The CPU clock is read now and then, not
+// around every step: a read is a system call, which would cost more than a small scene's step.
+double engine_cpu_seconds(const RunContext& c) {
+  const double wall = seconds_since(c.harness_start);
+  return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;
+}
+
+// The window of steps options.window asks for: its start's state written as a scene, and the
+// engine's time over it.
+void window(RunContext& c, long k) {
+  const RunOptions::Window& w = c.options.window;
+  if (w.start < 0) return;
+  if (k == w.start) {
+    c.window_start_s = c.engine_s;
+    if (!w.checkpoint.empty()) {
+      const std::string name = c.scene.name + "-window";
+      write_file_atomically(w.checkpoint, scene_at_state(c.scene, c.state, name, double(w.steps) * c.scene.dt).text,
+                            "the window's scene");
+    }
+  }
+  if (k == w.start + w.steps && c.window_start_s >= 0) c.r.window_engine_s = c.engine_s - c.window_start_s;
+}
+
 // Step k of the loop: the engine's step (timed), then, where the engine provides a state, its
 // reading, the per-step checks, the reference and the samples. False: the run stops here.
 bool advance(RunContext& c, long k) {
@@ -113,10 +142,20 @@ bool advance(RunContext& c, long k) {
   step_reference(c, k, true);
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
+  window(c, k);
+  if (c.options.cost_limit_s && k % kCostCheckSteps == 0)
+    if (const double spent = engine_cpu_seconds(c); spent > *c.options.cost_limit_s)
+      return stop(c, RunStatus::over_cost, k,
+                  fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), the cost of a cheaper "
+                              "configuration",
+                              *c.options.cost_limit_s, k, c.state.t));
   if (k % c.every == 0 || k == r.steps) {
     sample(c, k);
     if (const auto why = c.metrics->stop_after_sample())
       return stop(c, RunStatus::diverged, k, fmt::format("{} at step {}", *why, k));
+    if (c.options.stop_on_miss)
+      if (const auto why = grown_past(*c.options.stop_on_miss, *c.metrics))
+        return stop(c, RunStatus::missed, k, fmt::format("{} at t = {:g} s (step {})", *why, c.state.t, k));
   }
   return true;
 }
@@ -271,11 +310,19 @@ void final_metrics(RunContext& c) {
   if (scene.n() <= kMaxFinalPositions)
     for (int b = 0; b < scene.n(); ++b) r.series.final_pos.push_back({state.pos(b, 0), state.pos(b, 1)});
   r.checksum_final = checksum_hex(c.final_sum), r.checksum_trajectory = checksum_hex(c.trajectory_sum);
+  if (c.options.last_state) *c.options.last_state = state;
+}
+
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 void timing(RunContext& c) {
   Result& r = c.r;
   r.engine_s = c.engine_s;
+  r.engine_cpu_s = engine_cpu_seconds(c);
   r.engine_process_s = c.engine->own_step_seconds();
   r.harness_s = std::max(0.0, seconds_since(c.harness_start) - c.engine_s);
   const long stepped = std::max(1L, r.steps_done);

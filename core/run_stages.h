@@ -28,6 +28,9 @@
 
 namespace ballbench {
 
+// CPU time of this process, every thread (s).
+double process_cpu_seconds();
+
 struct RunContext {
   RunContext(const Scene& scene, const EngineEntry& entry, const RunOptions& options);
   // Engines built here may hold references into it (the converged reference's scene): it stays put.
@@ -69,9 +72,12 @@ struct RunContext {
   uint64_t final_sum = 0, trajectory_sum = 0;
   long sampled = 0;  // the last step the sampled metrics saw
 
-  // timing: the engine's step time, and when the harness started.
+  // timing: the engine's step time, and when the harness started (on the clock and in the
+  // process's CPU time).
   std::chrono::steady_clock::time_point harness_start;
+  double harness_start_cpu = 0;
   double engine_s = 0;
+  double window_start_s = -1;  // engine_s where options.window began
 };
 
 // Reads: profile, scene, entry, options. Writes: r's status and error on refusal, r.settings,

@@ -12,7 +12,7 @@
 namespace ballbench {
 namespace {
 
-constexpr std::array<std::pair<RunStatus, const char*>, 7> kTexts{{
+constexpr std::array<std::pair<RunStatus, const char*>, 9> kTexts{{
     {RunStatus::ok, "ok"},
     {RunStatus::diverged, "diverged"},
     {RunStatus::failed, "failed"},
@@ -20,6 +20,8 @@ constexpr std::array<std::pair<RunStatus, const char*>, 7> kTexts{{
     {RunStatus::interrupted, "interrupted"},
     {RunStatus::crashed, "crashed"},
     {RunStatus::timed_out, "timed out"},
+    {RunStatus::missed, "missed"},
+    {RunStatus::over_cost, "over cost"},
 }};
 
 }  // namespace

@@ -61,6 +61,7 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   set_up_reference(c);
   set_up_sampling(c);
   c.harness_start = std::chrono::steady_clock::now();
+  c.harness_start_cpu = process_cpu_seconds();
   if (!read_initial(c)) return std::move(c.r);
   step_loop(c);
   sample_last(c);

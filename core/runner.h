@@ -23,6 +23,10 @@ inline constexpr const char* kStrideNote = "tunnelling judged on samples";
 // times smaller than at dt, as Erez, Tassa and Todorov (ICRA 2015) took their reference runs.
 inline constexpr int kConvergedSubsteps = 64;
 
+// How often a run with RunOptions::cost_limit_s reads the CPU clock (a system call): every this many
+// steps.
+inline constexpr long kCostCheckSteps = 64;
+
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
   std::string profile;           // settings profile; "" = the engine's first
@@ -41,6 +45,23 @@ struct RunOptions {
   // about this many, every k-th sampled step; only for scenes of at most 1000 balls, whose frames
   // stay small.
   int frames = 0;
+  // Stop the run (RunStatus::missed) at the first sample where a term of this spec whose figure
+  // only grows (SpecTermDef::grows) is past its bound: the run can no longer meet it. Null: run on.
+  const AccuracySpec* stop_on_miss = nullptr;
+  // A window of steps [start, start + steps): the engine's time over it goes to
+  // Result::window_engine_s and, where `checkpoint` names a file, the state at its start is written
+  // there as a scene running the window (core/scene_writer.h), to time the window again from it.
+  struct Window {
+    long start = -1;  // < 0: none
+    long steps = 0;
+    std::string checkpoint;
+  } window;
+  // Stop the run (RunStatus::over_cost) once the engine's CPU time (Result::engine_cpu_s, read
+  // every kCostCheckSteps steps) passes this (s); none: no limit. A search sets it to the whole-run
+  // time of the cheapest configuration it has found, which a costlier one cannot beat.
+  std::optional<double> cost_limit_s;
+  // Where the run's last good state is copied at its end (a run in this process only); null: nowhere.
+  State* last_state = nullptr;
   // Called now and then with (steps done, steps total), for progress on long runs.
   std::function<void(long, long)> progress;
 };

@@ -6,19 +6,51 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "metrics/meter_set.h"
 #include "result.h"
 
 namespace ballbench {
+namespace {
+
+using Lookup = std::function<std::optional<double>(std::string_view key)>;
+
+// A term's figure from the run's metric values alone (none for the terms against the reference).
+std::optional<double> metric_figure(SpecTerm t, const Lookup& number) {
+  const auto sum = [&](const char* a, const char* b) { return number(a).value_or(0) + number(b).value_or(0); };
+  switch (t) {
+    case SpecTerm::overlap: return number("penetration.after_start");
+    case SpecTerm::tunnelling: return sum("tunnelling.wall", "tunnelling.pair");
+    case SpecTerm::sticking: return sum("sticking.wall", "sticking.pair");
+    case SpecTerm::rest_speed: return number("jitter");
+    case SpecTerm::energy_drift: return number("energy.max_rel_drift");
+    case SpecTerm::energy_error:
+    case SpecTerm::horizon: return std::nullopt;
+    case SpecTerm::rolling:
+      {
+        const auto speed = number("rolling.speed"), expected = number("rolling.expected_speed");
+        if (!speed || !expected || *expected == 0) return std::nullopt;
+        return std::abs(*speed - *expected) / std::abs(*expected);
+      }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> grown_past(const AccuracySpec& spec, const MeterSet& meters) {
+  const Lookup now = [&](std::string_view key) { return meters.now(key); };
+  for (const SpecTermDef& d : spec_terms()) {
+    const auto& bound = spec[d.term];
+    if (!bound || !d.grows || d.at_least) continue;
+    if (const auto figure = metric_figure(d.term, now); figure && *figure > *bound)
+      return fmt::format("{} {:.3g} > {:g}", d.key, *figure, *bound);
+  }
+  return std::nullopt;
+}
 
 std::optional<double> spec_figure(SpecTerm t, const Result& r) {
   if (r.steps_done < 1) return std::nullopt;
-  const MetricValues& m = r.metrics;
   switch (t) {
-    case SpecTerm::overlap: return m.number("penetration.after_start");
-    case SpecTerm::tunnelling: return double(m.count("tunnelling.wall") + m.count("tunnelling.pair"));
-    case SpecTerm::sticking: return double(m.count("sticking.wall") + m.count("sticking.pair"));
-    case SpecTerm::rest_speed: return m.number("jitter");
-    case SpecTerm::energy_drift: return m.number("energy.max_rel_drift");
     case SpecTerm::energy_error:
       if (!r.reference.available) return std::nullopt;
       return r.reference.energy_rel_max;
@@ -28,14 +60,8 @@ std::optional<double> spec_figure(SpecTerm t, const Result& r) {
       if (!r.reference.horizon)
         return (r.reference.reference_failed_step >= 0 ? r.reference.reference_failed_step : r.steps_done) * r.dt;
       return *r.reference.horizon;
-    case SpecTerm::rolling:
-      {
-        const auto speed = m.number("rolling.speed"), expected = m.number("rolling.expected_speed");
-        if (!speed || !expected || *expected == 0) return std::nullopt;
-        return std::abs(*speed - *expected) / std::abs(*expected);
-      }
+    default: return metric_figure(t, [&](std::string_view key) { return r.metrics.number(key); });
   }
-  return std::nullopt;
 }
 
 SpecVerdict judge(const AccuracySpec& spec, const Result& r) {
@@ -48,6 +74,9 @@ SpecVerdict judge(const AccuracySpec& spec, const Result& r) {
     if (!bound) continue;
     const auto figure = spec_figure(d.term, r);
     v.figures[d.key] = figure ? nlohmann::json(*figure) : nlohmann::json();
+    // A run stopped where it missed is judged by its status alone: its other figures are of a
+    // state before the end.
+    if (r.status == RunStatus::missed) continue;
     if (!figure) {
       fails.push_back(fmt::format("{} not measured", d.key));
       continue;

@@ -1,8 +1,10 @@
 #pragma once
 // Judging a run against an accuracy spec (accuracy_spec.h): each term's figure comes from what the
 // harness measured from the run's states, never from an engine's own claims.
+#include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -11,10 +13,16 @@
 namespace ballbench {
 
 struct Result;
+class MeterSet;
 
 // One term's figure for a run: measured by the harness from the run's states; none where the run
 // has none (no reference ran, the scene asks no rolling, nothing was stepped).
 std::optional<double> spec_figure(SpecTerm t, const Result& r);
+
+// The first term of `spec` whose figure only grows (SpecTermDef::grows) and is already past its
+// bound in the meters' values so far, as "overlap 0.0123 > 0.01"; none while the run can still
+// meet every such term.
+std::optional<std::string> grown_past(const AccuracySpec& spec, const MeterSet& meters);
 
 struct SpecVerdict {
   bool met = false;

@@ -13,12 +13,13 @@ namespace ballbench {
 namespace {
 
 // The figure of the spec's term that is furthest from its bound in try `t`, as "overlap 0.034".
+// A try stopped where it missed is named by the terms it was judged on, those that only grow.
 std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
   std::string worst;
   double worst_ratio = -1;
   for (const SpecTermDef& d : spec_terms()) {
     const auto& bound = spec[d.term];
-    if (!bound) continue;
+    if (!bound || (t.status == RunStatus::missed && !d.grows)) continue;
     const auto f = t.figures.value(d.key, nlohmann::json());
     if (!f.is_number()) return fmt::format("{} not measured", d.key);
     const double x = f.get<double>();
@@ -67,8 +68,17 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     md += fmt::format(" {} |\n", oc->tries);
   }
   md += "\nCost: the engine's own step time per ball per scene step (a step of dt/8 costs 8 of its steps), the "
-        "median of the found configuration's runs; figures as the harness measured them from the states at the "
-        "scene's step times. \"n/a\": not measured.\n\n";
+        "found configuration timed alone over a tenth of its run from the state it saved there, scaled to the whole "
+        "run, median of the repeats; figures as the harness measured them from the states at the scene's step times. "
+        "\"n/a\": not measured.";
+  if (m.budget_runs > 0)
+    md += fmt::format(" Each search's budget: {:g} runs of the scene at dt ({:.3g} ball steps); a try stopped where "
+                      "a term that only grows passed its bound.",
+                      m.budget_runs, m.budget_runs * double(m.run_ball_steps));
+  const auto recorded = [&](const char* key) {
+    return m.context.is_object() ? m.context.value(key, std::string("(not recorded)")) : std::string("(not recorded)");
+  };
+  md += fmt::format(" Measured {} by build {}.\n\n", recorded("date"), recorded("build"));
   const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::ours)) continue;
@@ -99,7 +109,7 @@ MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
   bool any_ok = false, all_unsupported = true;
   for (const MatchTry& t : m.tries)
     if (t.engine == oc.engine && t.profile == oc.profile) {
-      any_ok = any_ok || t.status == RunStatus::ok;
+      any_ok = any_ok || t.status == RunStatus::ok || t.status == RunStatus::missed;
       all_unsupported = all_unsupported && t.status == RunStatus::unsupported;
     }
   if (oc.tries > 0 && all_unsupported) return MatchVerdict::unsupported;
@@ -112,6 +122,11 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   const MatchTry& b = m.tries[oc.best];
   const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
   const std::string stop = oc.stopped.find("budget") != std::string::npos ? ", out of budget" : "";
+  // A try stopped where it missed: when it passed its bound.
+  const double duration = m.n > 0 ? double(m.run_ball_steps) / m.n * m.dt : 0;
+  const std::string when = b.status == RunStatus::missed && duration > 0
+                               ? fmt::format(", past its bound by t = {:.3g} s", b.done * duration)
+                               : "";
   switch (v) {
     case MatchVerdict::met: return "";
     case MatchVerdict::unsupported: return "unsupported";
@@ -119,7 +134,7 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
       return fmt::format("{} at every step down to {}{}", run_status_text(b.status),
                          finest == "dt/1" ? "dt" : finest, stop);
     case MatchVerdict::not_reached:
-      return fmt::format("{} at {}{}", worst_term_text(b, m.spec), step_text(b.halvings), stop);
+      return fmt::format("{} at {}{}{}", worst_term_text(b, m.spec), step_text(b.halvings), when, stop);
   }
   return "";
 }

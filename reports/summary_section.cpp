@@ -62,8 +62,9 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
   std::string md = "## Summary\n\n";
   md += "Each engine is asked for the same accuracy: for every scene a stated spec (overlap, tunnelling, rest, energy, "
         "closed forms; [the terms](../scenarios/README.md#accuracy)), and each engine and profile's cheapest configuration that meets it "
-        "(its step size dt/2^k and its own knobs, found by `ballbench match`). Cost is the engine's own step time per "
-        "ball per scene step, the median of three runs on a shared machine: read ratios to about 10%.\n\n";
+        "(its step size dt/2^k and its own knobs, found by `ballbench match` within a budget of work, so the same on any machine). Cost is the "
+        "engine's own step time per ball per scene step, each found configuration timed alone (the median of "
+        "three windows of its run).\n\n";
   md += "| scene (class) | spec | cheapest external engine that meets it | ours | ours against it | most accurate at "
         "the scene's dt |\n|---|---|---|---|---|---|\n";
   std::vector<std::string> misses;
@@ -87,11 +88,11 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
   if (undecided)
     md += "\nWhere no external engine met the spec within its search's budget, the ratio waits on longer "
           "searches (the external engines need their finest steps there): `ballbench match --scene SCENE --budget "
-          "600 --target 10` runs one, and [core/solver/PERFORMANCE.md](../core/solver/PERFORMANCE.md#where-the-"
+          "2000 --target 10` runs one, and [core/solver/PERFORMANCE.md](../core/solver/PERFORMANCE.md#where-the-"
           "targets-stand) holds those measured.\n";
   if (!misses.empty())
     md += fmt::format("\nDid not meet the spec at any configuration tried (the nearest miss; \"out of budget\": the "
-                      "search's time ran out first):\n\n{}\n",
+                      "search's work budget ran out first):\n\n{}\n",
                       fmt::join(misses, "\n"));
   for (const Figure& f : figures)
     if (f.kind == "fronts") md += fmt::format("\n![every scene's work-precision front]({})\n\n*{}*\n", f.file, f.caption);

@@ -50,7 +50,7 @@ TEST_F(BadSuite, EachProblemIsOneLineNamingTheField) {
                 .find(":3: quick.match_scenes[0]: 'seed-boxx' is not a built-in scene, did you mean 'seed-box'?"),
             std::string::npos);
   EXPECT_NE(error_of("[quick]\nscenez = []\n").find(":2: quick.scenez: unknown key"), std::string::npos);
-  EXPECT_NE(error_of("[quick]\nmatch_budget_s = -1\n").find("quick.match_budget_s: must be above 0, got -1"),
+  EXPECT_NE(error_of("[quick]\nmatch_budget = -1\n").find("quick.match_budget: must be above 0, got -1"),
             std::string::npos);
   EXPECT_NE(error_of("[quick]\nscenes = [\"pile\"]\nunreferenced = [\"seed-box\"]\n")
                 .find("quick.unreferenced: 'seed-box' is not one of the suite's scenes"),

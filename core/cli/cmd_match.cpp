@@ -1,8 +1,10 @@
 // `ballbench match`: equal accuracy. For a scene and an accuracy spec (the scene's, changed by
 // --spec), each engine and profile's cheapest configuration that meets the spec (match.h); one
 // table, our solver's ratio to the cheapest external engine, and JSON and CSV of every try.
+#include <algorithm>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -17,15 +19,18 @@
 #include "scene_loader.h"
 #include "spec_option.h"
 #include "sweep_result.h"
+#include "try_store.h"
 #include "validators.h"
 
 namespace ballbench::cli {
 namespace {
 
 struct MatchArgs {
+  MatchArgs() { options.jobs = std::max(1, int(std::thread::hardware_concurrency())); }
   std::string scene, engines, json, csv, shard;
   std::vector<std::string> spec;
-  bool no_knobs = false;
+  bool no_knobs = false, fresh = false;
+  std::string store = TryStore::default_dir();
   std::optional<double> target;
   MatchOptions options;
 };
@@ -46,6 +51,8 @@ void match(MatchArgs& a) {
   if (a.json.empty()) a.json = shard_file_name("match-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
   check_json_and_csv(scene, a.json, a.csv, "the match's");
+  const TryStore store(a.store, a.fresh);
+  a.options.store = &store;
   const MatchResult m = run_match(scene, engines, a.options, run_context());
   write_match_files(m, a.json, a.csv);
   print_match(m, a.target);
@@ -69,17 +76,28 @@ void add_match(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--max-halvings", a->options.max_halvings, "finest step tried: dt / 2^this (default 6)")
       ->check(CLI::Range(0, 20));
-  cmd->add_option("--budget", a->options.budget_s, "wall time for each engine and profile's search (s, default 600)")
+  cmd->add_option("--budget", a->options.budget_runs,
+                  "work for each engine and profile's search, in runs of the whole scene at its own step dt (n x steps "
+                  "ball steps each; a try at dt/2^k costs 2^k, one stopped early its share): the same tries on any "
+                  "machine, loaded or not (default 400)")
       ->check(kPositiveNumber);
   cmd->add_option("--repeats", a->options.repeats,
-                  "timing runs of each found configuration beside its measuring run; the median is reported "
-                  "(default 2)")
+                  "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
+                  "at its middle; the median is reported (default 3; 0: its own run's time)")
       ->check(CLI::Range(0, 100));
+  cmd->add_option("--jobs", a->options.jobs,
+                  "searches at once (default: the cores); the configurations found are timed alone afterwards")
+      ->check(CLI::Range(1, 256));
   cmd->add_option("--target", a->target,
                   "a ratio our solver's cost should beat the cheapest external engine's by; the output says whether "
                   "it did and by how much it fell short")
       ->check(kPositiveNumber);
   cmd->add_flag("--no-knobs", a->no_knobs, "search the step size only, not the engines' own knobs");
+  cmd->add_option("--store", a->store,
+                  "the results store: tries and timings measured before, by the scene's content, engine and version, "
+                  "profile, configuration, step, spec and build, are read from it instead of run again (default "
+                  "$XDG_CACHE_HOME/ballbench/tries or ~/.cache/ballbench/tries; \"\" for none)");
+  cmd->add_flag("--fresh", a->fresh, "measure every try again (the store is written, not read)");
   cmd->add_option("--json", a->json, "JSON output (default match-SCENE.json)");
   cmd->add_option("--csv", a->csv, "CSV of every try (default: the JSON path with .csv)");
   cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds one run may take (default 600)")

@@ -13,6 +13,8 @@
 #include <memory>
 #include <optional>
 
+#include <thread>
+
 #include <fmt/format.h>
 
 #include "commands.h"
@@ -26,6 +28,7 @@
 #include "progress.h"
 #include "registry.h"
 #include "restitution_calibration.h"
+#include "try_store.h"
 #include "report_writer.h"
 #include "run_engines.h"
 #include "scene_loader.h"
@@ -56,6 +59,7 @@ struct ReportArgs {
   int seeds = 0;             // placements of each seed scene; 0: the suite's
   std::string engines = "all";  // the engines compared (parse_engine_list)
   std::string suites;           // the suites file (default: report_suites_file())
+  std::string store = TryStore::default_dir();  // the equal-accuracy searches' results store
   bool quiet = false;           // no progress on stderr (what is skipped or left out is still said)
 };
 
@@ -278,6 +282,7 @@ void report(const ReportArgs& a) {
     if (!suite.costly_engines) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
     Isolation isolation;
     isolation.timeout_s = suite.timeout_s;
+    const TryStore store(a.store, a.fresh);
     // A part whose complete results are already there is reused (a report that stopped resumes).
     auto reuse = [&](const std::string& path, bool complete) {
       if (a.fresh || !complete) return false;
@@ -314,7 +319,9 @@ void report(const ReportArgs& a) {
       const Scene scene = load_scene(name);
       MatchOptions o;
       o.spec = scene_spec(scene);
-      o.budget_s = suite.match_budget_s;
+      o.budget_runs = suite.match_budget;
+      o.store = &store;
+      o.jobs = std::max(1, int(std::thread::hardware_concurrency()));
       o.isolation = isolation;
       o.reference = reference_engine();
       o.converged_reference = converged_reference_engine();
@@ -423,7 +430,11 @@ void add_report(CLI::App& app) {
       ->excludes(quick);
   auto* render_only =
       cmd->add_flag("--render-only", a->render_only, "only rebuild REPORT.md from the results already in OUT/results");
-  cmd->add_flag("--fresh", a->fresh, "run everything again, even what complete results in OUT/results already hold")
+  cmd->add_flag("--fresh", a->fresh,
+                "run everything again, even what complete results in OUT/results and the results store already hold")
+      ->excludes(render_only);
+  cmd->add_option("--store", a->store,
+                  "the equal-accuracy searches' results store, as `match --store` (\"\" for none)")
       ->excludes(render_only);
   auto* no_bench = cmd->add_flag("--no-bench", a->no_bench,
                                  "leave the benchmarks (and the scaling and harness overhead sections) out")

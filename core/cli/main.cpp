@@ -51,6 +51,7 @@ int main(int argc, char** argv) {
   ballbench::cli::add_match(app);
   ballbench::cli::add_merge(app);
   ballbench::cli::add_view(app);
+  ballbench::cli::add_settle(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {

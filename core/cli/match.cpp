@@ -1,21 +1,36 @@
 #include "match.h"
 
+#include <stdlib.h>
+
 #include <algorithm>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <xxhash.h>
 
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "isolated_run.h"
+#include "machine_info.h"
+#include "try_store.h"
 #include "json_value.h"
 #include "progress.h"
 #include "scene_loader.h"
+#include "scene_writer.h"
 #include "shard_roll.h"
 #include "spec_verdict.h"
 #include "sweep_result.h"
@@ -68,179 +83,408 @@ std::string run_command(const Scene& scene, const MatchTry& t, const MatchOption
   return cmd;
 }
 
+std::string read_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// One run at dt / 2^k, in a child process (a crash or hang is that run's result) unless isolation
+// is off.
+Result run_at(const Scene& scene, const EngineEntry& e, int k, const Isolation& isolation, double timeout_s,
+              const RunOptions& r) {
+  Scene s = scene;
+  s.dt = scene.dt / double(1 << k);
+  return isolation.enabled ? run_engine_isolated(s, e, r, {timeout_s, ""}) : run_engine(s, e, r);
+}
+
+// One configuration's steps: the range the search may try (dt / 2^first .. dt / 2^last) and the
+// tries it made.
+struct Ladder {
+  int first = 0, last = 0;
+  std::map<int, int> tried;  // halvings -> try index
+};
+
 class Search {
  public:
-  Search(const Scene& scene, const EngineEntry& e, std::string profile, const MatchOptions& o, MatchResult& out)
-      : scene_(scene), e_(e), profile_(std::move(profile)), o_(o), out_(out) {}
+  Search(const Scene& scene, const EngineEntry& e, std::string profile, std::vector<Config> configs,
+         const MatchOptions& o)
+      : scene_(scene), e_(e), profile_(std::move(profile)), configs_(std::move(configs)), o_(o) {}
 
   // First the profile as it is, coarse to fine until it meets the spec; then each knob setting from
   // two halvings coarser than that (a knob may let a longer step meet it) down to where the profile
-  // met it (or to the finest step if it never did), refined while it can still be cheaper.
-  MatchOutcome run(Progress& progress) {
+  // met it (or to the finest step if it never did).
+  MatchOutcome run() {
     MatchOutcome oc;
     oc.engine = e_.info.name, oc.profile = profile_, oc.role = role_name(e_.info.role);
-    const auto configs = configs_for(scene_, e_, profile_, o_.knobs);
-    start_ = Clock::now();
     int met_at = -1;
-    for (size_t c = 0; c < configs.size() && oc.stopped.empty(); ++c) {
-      const int first = c == 0 || met_at < 0 ? 0 : std::max(0, met_at - 2);
-      const int last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
-      double cost = -1;  // at the last step size it ran ok
-      int cost_at = 0;
-      for (int k = first; k <= last && oc.stopped.empty(); ++k) {
-        if (cost > 0 && cost * std::pow(kHalvingCostFloor, k - cost_at) >= best_cost_) break;  // cannot be cheaper
-        if (budget_left() <= 0) {
-          oc.stopped = fmt::format("the {:g} s budget", o_.budget_s);
-          break;
-        }
-        const int t = try_config(configs[c], k, budget_left());
-        const MatchTry& tr = out_.tries[t];
-        ++oc.tries;
-        oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
-        if (interrupt_signal()) oc.stopped = "an interrupt";
-        if (tr.status == RunStatus::ok) cost = tr.cost_ns, cost_at = k;
-        // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
-        // a path that has none): it is never a finding, at any step.
-        if (c == 0 && tr.status == RunStatus::ok) as_is_trajectory_[k] = last_trajectory_;
-        if (const auto as_is = as_is_trajectory_.find(k); c > 0 && tr.status == RunStatus::ok &&
-                                                             !last_trajectory_.empty() &&
-                                                             as_is != as_is_trajectory_.end() &&
-                                                             as_is->second == last_trajectory_)
-          break;
-        if (tr.met) {
-          // A knob replaces the profile as it is only when it is cheaper beyond timing noise.
-          const double margin = c == 0 || oc.found < 0 || !out_.tries[oc.found].knob.empty() ? 1 : kKnobCostMargin;
-          if (tr.cost_ns < best_cost_ * margin) best_cost_ = tr.cost_ns, oc.found = t;
-          if (c == 0) met_at = k;
-          break;  // finer costs more
-        }
-        if (oc.best < 0 || miss(tr, o_.spec) < miss(out_.tries[oc.best], o_.spec)) oc.best = t;
-        if (tr.status == RunStatus::unsupported || tr.status == RunStatus::timed_out) break;  // finer will not do better
-      }
-      if (!o_.quiet) progress.update(double(c + 1) / configs.size());
+    for (size_t c = 0; c < configs_.size() && oc.stopped.empty(); ++c) {
+      Ladder l;
+      l.first = c == 0 || met_at < 0 ? 0 : std::max(0, met_at - 2);
+      l.last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
+      const int found = climb(c, l, oc);
+      if (found >= 0 && c == 0) met_at = tries[found].halvings;
     }
     oc.reached = oc.found >= 0;
-    if (oc.reached) {
-      oc.stopped.clear();
-      retime(oc);
-    } else if (oc.stopped.empty()) {
-      oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
-    }
-    const int shown = oc.reached ? oc.found : oc.best;
-    if (shown >= 0) oc.command = run_command(scene_, out_.tries[shown], o_);
+    if (oc.reached) oc.stopped.clear();
+    else if (oc.stopped.empty()) oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
+    oc.work = used_;
     return oc;
   }
 
+  const EngineEntry& entry() const { return e_; }
+  // The store key of try `index` of this search.
+  nlohmann::json key_of(int index) const {
+    const MatchTry& t = tries.at(index);
+    return store_key({t.knob, t.value, {}}, t.halvings);
+  }
+  std::vector<MatchTry> tries;
+  // A try that met: the scene file its window starts from, and the window's share of its run's
+  // engine time.
+  struct Window {
+    std::string scene;
+    double share = 0;
+  };
+  std::map<int, Window> windows;  // by try index
+
  private:
-  RunOptions options(const Config& c, int k) const {
+  // One configuration's steps: coarse to fine, jumping where the misses predict the step that
+  // meets, then back coarser until a step does not meet. The coarsest step that met, or -1.
+  int climb(size_t c, Ladder& l, MatchOutcome& oc) {
+    int k = l.first, met = -1;
+    while (k >= l.first && k <= l.last && oc.stopped.empty()) {
+      if (const double need = double(1L << k); used_ + need > o_.budget_runs) {
+        oc.stopped = fmt::format("the budget ({:g} runs at dt, {:.3g} ball steps)", o_.budget_runs,
+                                 o_.budget_runs * double(scene_.n()) * double(scene_.steps()));
+        break;
+      }
+      const int t = try_config(configs_[c], k);
+      l.tried[k] = t;
+      const MatchTry& tr = tries[t];
+      ++oc.tries;
+      oc.stored += tr.stored;
+      oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
+      if (interrupt_signal()) oc.stopped = "an interrupt";
+      // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
+      // a path that has none): it is never a finding, at any step.
+      // (Whole runs only: two runs stopped where they missed are equal only up to that step.)
+      if (c == 0 && tr.status == RunStatus::ok) as_is_trajectory_[k] = last_trajectory_;
+      if (const auto as_is = as_is_trajectory_.find(k); c > 0 && tr.status == RunStatus::ok &&
+                                                       !last_trajectory_.empty() && as_is != as_is_trajectory_.end() &&
+                                                       as_is->second == last_trajectory_)
+        return -1;
+      if (tr.met) {
+        met = t;
+        if (k - 1 >= l.first && !l.tried.count(k - 1)) {  // a jump passed over it: confirm coarser
+          --k;
+          continue;
+        }
+        break;
+      }
+      if (oc.best < 0 || miss(tr, o_.spec) < miss(tries[oc.best], o_.spec)) oc.best = t;
+      if (met >= 0) break;  // coarser than one that met, and not met: that one is the step
+      // Finer will not do better: refused, hung, or already costlier than what was found.
+      if (tr.status == RunStatus::unsupported || tr.status == RunStatus::timed_out || tr.status == RunStatus::over_cost)
+        break;
+      k = next_step(l, k);
+    }
+    if (met >= 0) {
+      // A configuration replaces the one found only when it is cheaper beyond timing noise.
+      if (!found_cost_ns_ || tries[met].cost_ns < *found_cost_ns_ * kKnobCostMargin) oc.found = met;
+      found_cost_ns_ = tries[oc.found].cost_ns;
+    }
+    return met;
+  }
+
+  // The next step after a try at k that did not meet: k + 1, or where two completed tries of this
+  // configuration predict the miss falls to 1 (its log against the step's, a straight line).
+  int next_step(const Ladder& l, int k) const {
+    const MatchTry& b = tries[l.tried.at(k)];
+    const double mb = miss(b, o_.spec);
+    for (auto it = l.tried.rbegin(); it != l.tried.rend(); ++it) {
+      if (it->first >= k) continue;
+      const MatchTry& a = tries[it->second];
+      const double ma = miss(a, o_.spec);
+      if (a.status != RunStatus::ok || b.status != RunStatus::ok || !std::isfinite(ma) || !std::isfinite(mb) ||
+          mb <= 1 || ma <= mb)
+        return k + 1;
+      const double per_halving = std::log2(ma / mb) / double(k - it->first);
+      const int jump = int(std::ceil(std::log2(mb) / per_halving - 1e-9));
+      return std::clamp(k + jump, k + 1, l.last);
+    }
+    return k + 1;
+  }
+
+  RunOptions options(const Config& c, int k, int index) const {
     RunOptions r;
     r.profile = profile_;
     r.overrides = c.overrides;
     // Every configuration is judged at the scene's own step times (tunnelling at every step).
     r.metrics.sample_every = 1 << k;
     r.series_points = 0;
+    r.stop_on_miss = &o_.spec;
+    // A knob's run stops once it has cost what it must stay below to replace the configuration
+    // found (kKnobCostMargin of its whole run): the same comparison, made before the end.
+    if (!c.knob.empty() && found_cost_ns_)
+      r.cost_limit_s = kKnobCostMargin * *found_cost_ns_ * 1e-9 * double(std::max(1, scene_.n())) *
+                       double(std::max(1L, scene_.steps()));
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
+    // The window a found configuration is timed over: from the middle of its run, at a scene step.
+    const long steps = scene_.steps() << k;
+    r.window.steps = std::max(1L, long(double(steps) * kWindowFraction));
+    r.window.start = std::max(1L, (steps / 2) >> k << k);
+    r.window.checkpoint = checkpoint_path(index);
     return r;
   }
 
-  Result run_at(int k, double timeout_s, RunOptions r) const {
-    Scene s = scene_;
-    s.dt = scene_.dt / double(1 << k);
-    return o_.isolation.enabled ? run_engine_isolated(s, e_, r, {timeout_s, ""}) : run_engine(s, e_, r);
+  // What decides a try's outcome: its key in the results store.
+  nlohmann::json store_key(const Config& c, int k) const {
+    return {{"kind", "try"},        {"scene", o_.scene_digest}, {"engine", e_.info.name},
+            {"version", e_.info.version}, {"profile", profile_}, {"knob", c.knob},
+            {"value", c.value},     {"halvings", k},            {"spec", o_.spec.to_json()},
+            {"reference", o_.spec.needs_reference() && o_.reference ? o_.reference->info.name : ""},
+            {"build", build_id()}};
   }
 
-  int try_config(const Config& c, int k, double budget_left) {
+  // A try of configuration c at dt / 2^k: read from the store where an earlier search measured it
+  // (an over-cost stop only under a limit no higher than the one it stopped at), else run.
+  int try_config(const Config& c, int k) {
+    const int index = int(tries.size());
+    const RunOptions r = options(c, k, index);
+    const nlohmann::json key = store_key(c, k);
+    const auto kept = o_.store ? o_.store->find(key) : std::nullopt;
+    const bool reusable =
+        kept && (kept->at("try").at("status") != run_status_text(RunStatus::over_cost) ||
+                 (r.cost_limit_s && *r.cost_limit_s <= kept->value("cost_limit_s", 0.0)));
+    MatchTry t;
+    if (reusable) {
+      t = match_try_from_json(kept->at("try"));
+      t.stored = true;
+      last_trajectory_ = kept->value("trajectory", "");
+      if (kept->contains("window")) {
+        write_file_atomically(r.window.checkpoint, kept->at("window").at("scene").get<std::string>(),
+                              "the window's scene");
+        windows[index] = {r.window.checkpoint, kept->at("window").at("share").get<double>()};
+      }
+    } else {
+      t = run_try(c, k, r, index);
+    }
+    used_ += t.work;
+    tries.push_back(std::move(t));
+    return index;
+  }
+
+  MatchTry run_try(const Config& c, int k, const RunOptions& r, int index) {
     const auto t0 = Clock::now();
-    const Result r = run_at(k, std::min(o_.isolation.timeout_s, budget_left), options(c, k));
+    const Result res = run_at(scene_, e_, k, o_.isolation, o_.isolation.timeout_s, r);
     MatchTry t;
     t.engine = e_.info.name, t.profile = profile_, t.knob = c.knob, t.value = c.value;
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
-    t.status = r.status, t.error = r.error;
-    t.settings = r.settings;
-    const SpecVerdict v = judge(o_.spec, r);
+    t.status = res.status, t.error = res.error;
+    t.settings = res.settings;
+    const SpecVerdict v = judge(o_.spec, res);
     t.met = v.met, t.why_not = v.why_not, t.figures = v.figures;
-    t.cost_ns = cost_per_scene_step(r.engine_process_s.value_or(r.engine_s), scene_);
-    if (r.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(r.engine_s, scene_);
+    // Judged against each other while searching (possibly beside other searches): the engine's CPU
+    // time, or an engine in another process its own step time.
+    t.cost_ns = cost_per_scene_step(res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s)), scene_);
+    if (res.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(res.engine_s, scene_);
     t.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
-    last_trajectory_ = r.checksum_trajectory;
-    out_.tries.push_back(std::move(t));
-    return int(out_.tries.size()) - 1;
+    t.done = res.steps > 0 ? double(res.steps_done) / double(res.steps) : 1.0;
+    // The budget is charged what the states decide (a run to its end, or to where it missed or
+    // diverged); a run ended by the clock (over cost, hung, crashed) is charged in full, so that
+    // the tries a search can afford never depend on timing.
+    const bool decided_by_states = res.status == RunStatus::ok || res.status == RunStatus::missed ||
+                                   res.status == RunStatus::diverged || res.status == RunStatus::failed ||
+                                   res.status == RunStatus::unsupported;
+    t.work = double(1L << k) * (decided_by_states ? t.done : 1.0);
+    last_trajectory_ = res.checksum_trajectory;
+    nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
+    std::error_code ec;
+    if (t.met && res.window_engine_s && res.engine_s > 0) {
+      windows[index] = {r.window.checkpoint, *res.window_engine_s / res.engine_s};
+      kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"share", windows[index].share}};
+    } else {
+      std::filesystem::remove(r.window.checkpoint, ec);
+    }
+    if (res.status == RunStatus::over_cost) kept["cost_limit_s"] = *r.cost_limit_s;
+    // What the clock or the user ended is not kept: another search would not end it alike.
+    const bool keep = decided_by_states || res.status == RunStatus::over_cost;
+    if (o_.store && keep && !interrupt_signal()) o_.store->keep(store_key(c, k), kept);
+    return t;
   }
 
-  // The found configuration timed again without the reference or sampling beyond the scene's
-  // steps: the cost is the median of these and the measuring run.
-  void retime(MatchOutcome& oc) {
-    const MatchTry& f = out_.tries[oc.found];
-    Config c{f.knob, f.value, f.knob.empty() ? nlohmann::json::object() : nlohmann::json{{f.knob, f.value}}};
-    oc.cost_repeats = {f.cost_ns};
-    std::vector<double> pipe;
-    if (f.cost_pipe_ns) pipe.push_back(*f.cost_pipe_ns);
-    for (int rep = 0; rep < o_.repeats && !interrupt_signal(); ++rep) {
-      RunOptions r = options(c, f.halvings);
-      r.reference = nullptr;
-      const Result t = run_at(f.halvings, o_.isolation.timeout_s, r);
-      if (t.status != RunStatus::ok) break;
-      oc.cost_repeats.push_back(cost_per_scene_step(t.engine_process_s.value_or(t.engine_s), scene_));
-      if (t.engine_process_s) pipe.push_back(cost_per_scene_step(t.engine_s, scene_));
-    }
-    oc.cost_ns = median(oc.cost_repeats);
-    if (!pipe.empty()) oc.cost_pipe_ns = median(pipe);
+  std::string checkpoint_path(int index) const {
+    return fmt::format("{}/{}-{}-{}.toml", o_.work_dir, e_.info.name, profile_, index);
   }
 
   const Scene& scene_;
   const EngineEntry& e_;
   std::string profile_;
+  std::vector<Config> configs_;
   const MatchOptions& o_;
-  MatchResult& out_;
-  Clock::time_point start_;
-  double best_cost_ = std::numeric_limits<double>::infinity();
+  double used_ = 0;                              // work so far, in runs of the scene at dt
+  std::optional<double> found_cost_ns_;          // the cost of the configuration found so far
   std::string last_trajectory_;                  // the last try's trajectory checksum
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
-
-  double budget_left() const {
-    return o_.budget_s - std::chrono::duration<double>(Clock::now() - start_).count();
-  }
 };
 
+// The found configuration timed alone: its window, from the state its run saved there, `repeats`
+// times, each scaled by the window's share of that run's engine time (cost per ball per scene step
+// of the whole run); the median is the cost. Where no window ran ok, its own run's cost stands.
+void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_key, const Search::Window* w,
+                const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
+  oc.cost_repeats.clear();
+  std::vector<double> pipe;
+  // Kept by the try it times, the repeats and the machine: a cost is a measurement of this machine.
+  const nlohmann::json key{{"kind", "timing"}, {"try", try_key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
+  if (const auto kept = o.store ? o.store->find(key) : std::nullopt) {
+    oc.cost_repeats = kept->at("cost_repeats").get<std::vector<double>>();
+    oc.cost_ns = median(oc.cost_repeats);
+    if (kept->contains("pipe")) oc.cost_pipe_ns = median(kept->at("pipe").get<std::vector<double>>());
+    oc.timing_stored = true;
+    return;
+  }
+  if (w && w->share > 0) {
+    const Scene window = load_scene_file(w->scene);
+    const double window_share = w->share;
+    RunOptions r;
+    r.profile = f.profile;
+    if (!f.knob.empty()) r.overrides = {{f.knob, f.value}};
+    r.series_points = 0;
+    const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / window_share, scene); };
+    for (int rep = 0; rep < o.repeats && !interrupt_signal(); ++rep) {
+      const Result t = o.isolation.enabled ? run_engine_isolated(window, e, r, {o.isolation.timeout_s, ""})
+                                           : run_engine(window, e, r);
+      if (t.status != RunStatus::ok || t.steps_done < 1) break;
+      oc.cost_repeats.push_back(whole(t.engine_process_s.value_or(t.engine_s)));
+      if (t.engine_process_s) pipe.push_back(whole(t.engine_s));
+    }
+  }
+  const bool timed = !oc.cost_repeats.empty() && int(oc.cost_repeats.size()) == o.repeats;
+  if (oc.cost_repeats.empty()) {
+    oc.cost_repeats = {f.cost_ns};
+    if (f.cost_pipe_ns) pipe.push_back(*f.cost_pipe_ns);
+  }
+  if (o.store && timed && !interrupt_signal()) {
+    nlohmann::json kept{{"cost_repeats", oc.cost_repeats}};
+    if (!pipe.empty()) kept["pipe"] = pipe;
+    o.store->keep(key, kept);
+  }
+  oc.cost_ns = median(oc.cost_repeats);
+  if (!pipe.empty()) oc.cost_pipe_ns = median(pipe);
+}
 
-
+// A folder of this match's own for the windows' scene files, removed with everything in it.
+class WorkDir {
+ public:
+  WorkDir() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "ballbench-match-XXXXXX").string();
+    if (!mkdtemp(tmpl.data())) throw InputError(fmt::format("match: cannot create a folder in {}: {}",
+                                                           std::filesystem::temp_directory_path().string(),
+                                                           std::strerror(errno)));
+    path = tmpl;
+  }
+  ~WorkDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  WorkDir(const WorkDir&) = delete;
+  WorkDir& operator=(const WorkDir&) = delete;
+  std::string path;
+};
 
 }  // namespace
 
-MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>& engines, const MatchOptions& o,
+MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>& engines, const MatchOptions& options,
                       const nlohmann::json& context) {
-  if (o.max_halvings < 0 || o.max_halvings > 20) throw InputError("--max-halvings: must be within 0 .. 20");
-  if (scene.steps() * (1L << o.max_halvings) > 1'000'000'000L)
-    throw InputError(fmt::format("--max-halvings {}: {} steps at dt / 2^{} pass the cap of 1e9 steps", o.max_halvings,
-                                 scene.steps() * (1L << o.max_halvings), o.max_halvings));
-  if (o.spec.needs_reference() && !o.reference) throw InputError("match: the spec needs a reference run and none is set");
+  if (options.max_halvings < 0 || options.max_halvings > 20) throw InputError("--max-halvings: must be within 0 .. 20");
+  if (scene.steps() * (1L << options.max_halvings) > 1'000'000'000L)
+    throw InputError(fmt::format("--max-halvings {}: {} steps at dt / 2^{} pass the cap of 1e9 steps",
+                                 options.max_halvings, scene.steps() * (1L << options.max_halvings),
+                                 options.max_halvings));
+  if (options.spec.needs_reference() && !options.reference)
+    throw InputError("match: the spec needs a reference run and none is set");
+  if (!(options.budget_runs > 0)) throw InputError("--budget: must be above 0");
+  if (options.jobs < 1) throw InputError("--jobs: must be at least 1");
+  WorkDir work;
+  MatchOptions o = options;
+  o.work_dir = work.path;
+  // The scene's content as a scene file of its balls at the start: what the store keys it by.
+  const std::string content = scene_at_state(scene, scene.initial, scene.name, scene.duration).text;
+  o.scene_digest = fmt::format("{:016x}", XXH3_64bits(content.data(), content.size()));
+  if (!o.isolation.enabled) o.jobs = 1;  // engines in this process run one at a time
   MatchResult m;
   m.scene = scene.name, m.scene_source = scene.source, m.scene_class = scene_class_name(scene_class(scene));
   m.n = scene.n(), m.dt = scene.dt, m.spec = o.spec, m.context = context;
+  m.budget_runs = o.budget_runs, m.run_ball_steps = long(scene.n()) * scene.steps();
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;
+
+  // The searches, dealt out to the shards; each engine's configurations read here, in this thread
+  // (building an engine to read its settings), before any search starts.
+  std::vector<std::unique_ptr<Search>> searches;
   size_t item = 0;
   for (const EngineEntry* e : engines)
     for (const std::string& profile : profiles_for(*e, o.profile)) {
       if (!o.shard.takes(item++)) continue;
-      if (interrupt_signal()) break;
-      Progress progress(fmt::format("match {} {}", scene.name, run_label(e->info.name, profile)));
-      m.outcomes.push_back(Search(scene, *e, profile, o, m).run(progress));
+      searches.push_back(std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o));
     }
+  std::vector<std::optional<MatchOutcome>> outcomes(searches.size());
+  Progress progress(fmt::format("match {} ({} searches, {} at once)", scene.name, searches.size(),
+                                std::min<size_t>(o.jobs, searches.size())));
+  std::mutex done_mutex;
+  size_t done = 0;
+  std::atomic<size_t> next{0};
+  const auto worker = [&] {
+    for (size_t i = next++; i < searches.size() && !interrupt_signal(); i = next++) {
+      MatchOutcome oc = searches[i]->run();
+      std::lock_guard lock(done_mutex);
+      outcomes[i] = std::move(oc);
+      if (!o.quiet) progress.update(double(++done) / double(searches.size()));
+    }
+  };
+  std::vector<std::thread> team;
+  for (int j = 1; j < std::min<int>(o.jobs, int(searches.size())); ++j) team.emplace_back(worker);
+  worker();
+  for (auto& t : team) t.join();
+
+  // Every search's tries in the order of the searches; then each found configuration timed alone.
+  for (size_t i = 0; i < searches.size(); ++i) {
+    if (!outcomes[i]) break;  // interrupted before it started
+    Search& s = *searches[i];
+    MatchOutcome oc = std::move(*outcomes[i]);
+    const int offset = int(m.tries.size());
+    if (oc.reached && !interrupt_signal()) {
+      const auto w = s.windows.find(oc.found);
+      time_alone(oc, s.tries[oc.found], s.key_of(oc.found), w == s.windows.end() ? nullptr : &w->second, scene,
+                 s.entry(), o);
+    } else if (oc.reached) {
+      oc.cost_repeats = {s.tries[oc.found].cost_ns}, oc.cost_ns = s.tries[oc.found].cost_ns;
+    }
+    const int shown = oc.reached ? oc.found : oc.best;
+    if (shown >= 0) oc.command = run_command(scene, s.tries[shown], o);
+    if (oc.found >= 0) oc.found += offset;
+    if (oc.best >= 0) oc.best += offset;
+    m.tries.insert(m.tries.end(), s.tries.begin(), s.tries.end());
+    m.outcomes.push_back(std::move(oc));
+  }
   if (interrupt_signal()) m.interrupted = interrupt_name();
   return m;
 }
 
 void print_match(const MatchResult& m, std::optional<double> target) {
   fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
-  fmt::print("cost: the engine's own step time per ball per scene step (dt = {:g} s), median of the found "
-             "configuration's runs; engines in another process time their own steps (pipe-inclusive beside it)\n",
+  fmt::print("cost: the engine's own step time per ball per scene step (dt = {:g} s), the found configuration timed "
+             "alone over a tenth of its run from the state it saved there, scaled to the whole run, median of the "
+             "repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
              m.dt);
+  fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
+             "grows is past its bound\n",
+             m.budget_runs, m.budget_runs * double(m.run_ball_steps));
   std::vector<std::string> terms;
   for (const SpecTermDef& d : spec_terms())
     if (m.spec[d.term]) terms.push_back(d.key);
   fmt::print("{:<18} {:<12} {:<28} {:>10} {:>10}", "engine/profile", "spec", "configuration", "cost ns", "pipe ns");
   for (const auto& t : terms) fmt::print(" {:>12}", t);
-  fmt::print(" {:>5}\n", "tries");
+  fmt::print(" {:>5} {:>6}\n", "tries", "stored");
   for (const MatchOutcome& oc : m.outcomes) {
     const int shown = oc.reached ? oc.found : oc.best;
     const std::string label = run_label(oc.engine, oc.profile);
@@ -253,7 +497,7 @@ void print_match(const MatchResult& m, std::optional<double> target) {
                (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_text(oc.cost_ns) : "-",
                oc.reached && oc.cost_pipe_ns ? cost_text(*oc.cost_pipe_ns) : "-");
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
-    fmt::print(" {:>5}\n", oc.tries);
+    fmt::print(" {:>5} {:>6}\n", oc.tries, oc.stored);
   }
   // Our solver against the cheapest external engine that met the spec.
   const MatchOutcome* cheapest = cheapest_reached(m, role_name(EngineRole::external));

@@ -3,9 +3,14 @@
 // meets one accuracy spec (accuracy_spec.h) on a scene. The step size is searched geometrically
 // (dt / 2^k, the scene's duration kept): first the profile as it is, coarse to fine until it meets
 // the spec; then each of the engine's own accuracy knobs (EngineInfo::sweep_knobs, one at a time on
-// top of the profile) from two halvings coarser than that, refined while it can still be cheaper
-// than the best found: a step half as long costs at least kHalvingCostFloor times as much per scene
-// step.
+// top of the profile) from two halvings coarser than that down to it.
+//
+// What a search tries depends only on what its tries measured (met or not, how far they missed),
+// never on timings or the machine's load: its budget counts work (ball steps), a try stops where a
+// term that only grows is past its bound (RunOptions::stop_on_miss), and where two completed tries
+// show how the miss falls with the step, the search jumps to the step they predict and confirms the
+// one coarser. Searches run side by side (`jobs`); each found configuration is then timed alone,
+// over a window of its own run started from the state it saved there.
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,25 +24,31 @@
 #include "run_status.h"
 #include "scene.h"
 #include "shard.h"
+#include "try_store.h"
 
 namespace ballbench::cli {
 
-// Halving the step doubles the steps per scene step; an engine's step rarely gets cheaper by more
-// than a quarter when it is shorter (fewer contacts to find, solver sweeps ending early), so a
-// configuration whose cost times this is already above the best found is not tried finer.
-inline constexpr double kHalvingCostFloor = 1.5;
-
-// A knob's configuration is preferred to the profile as it is only when it costs less than this
-// fraction of it: one run's timings differ by some 5 - 10% on a shared machine.
+// A configuration replaces the one found (the profile as it is, or a knob met earlier) only when it
+// costs less than this fraction of it: configurations of one cost (twice the substeps at twice the
+// step) must not trade places with the CPU time's noise, some 5% under load.
 inline constexpr double kKnobCostMargin = 0.85;
+
+// The window a found configuration is timed over: this fraction of its run, from its middle.
+inline constexpr double kWindowFraction = 0.1;
 
 struct MatchOptions {
   std::string profile = "all";  // as for `run --profile`
   AccuracySpec spec;
   std::vector<std::string> spec_texts;  // the --spec terms over the scene's own, for the reproducing commands
   int max_halvings = 6;         // dt / 2^k for k = 0 .. this
-  double budget_s = 600;        // wall time for one engine and profile's search (s)
-  int repeats = 2;              // timing runs of the found configuration beside its measuring run
+  // Work for one engine and profile's search, in runs of the whole scene at its own step (n x steps
+  // ball steps each): a try at dt / 2^k costs 2^k of them, a try that stopped early its share.
+  double budget_runs = 400;
+  int repeats = 3;              // timing runs alone of each found configuration's window
+  int jobs = 1;                 // searches at once (tries in child processes; needs isolation)
+  const TryStore* store = nullptr;  // tries and timings measured before (null: none)
+  std::string work_dir;         // run_match's own: where the windows' scene files go
+  std::string scene_digest;     // run_match's own: the scene's content, for the store's keys
   bool knobs = true;            // also each engine's sweep knobs
   Isolation isolation{true, 600};
   const EngineEntry* reference = nullptr;            // for spec terms against the reference

@@ -113,6 +113,7 @@ nlohmann::json run_context() {
           {"compiler", m.compiler},
           {"build_type", m.build_type},
           {"flags", m.flags},
+          {"build", m.build},
           {"command", command_line_store()},
           {"date", date}};
 }

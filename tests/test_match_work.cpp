@@ -1,0 +1,199 @@
+// Searches limited by work, not by the clock: tries that stop where they can no longer meet the
+// spec, the same tries whatever the machine is doing and however many run at once, and settled
+// scenes written as data (`ballbench settle`).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "small_pile.h"
+#include "match.h"
+#include "registry.h"
+#include "runner.h"
+#include "scene_loader.h"
+#include "scene_writer.h"
+#include "spec_verdict.h"
+#include "try_store.h"
+#include "cli_runner.h"
+
+namespace ballbench {
+namespace {
+
+// The thesis's port sinks balls into each other: asked to stop where it misses, its run ends at the
+// first sample past the overlap bound, with the figure and the time, and no later.
+TEST(StopOnMiss, EndsTheRunWhereAGrowingTermPassesItsBound) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  const AccuracySpec spec = scene_spec(scene);
+  RunOptions o;
+  const Result whole = run_engine(scene, find_engine("home-seed"), o);
+  ASSERT_GT(*spec_figure(SpecTerm::overlap, whole), *spec[SpecTerm::overlap]);
+  o.stop_on_miss = &spec;
+  const Result r = run_engine(scene, find_engine("home-seed"), o);
+  EXPECT_EQ(r.status, RunStatus::missed);
+  EXPECT_LT(r.steps_done, r.steps);
+  EXPECT_NE(r.error.find("overlap"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find(fmt::format("t = {:g} s", r.steps_done * scene.dt)), std::string::npos) << r.error;
+  // Its figure is past the bound at the step it stopped, and was not one step before.
+  EXPECT_GT(*spec_figure(SpecTerm::overlap, r), *spec[SpecTerm::overlap]);
+  RunOptions before;
+  before.steps = r.steps_done - 1;
+  EXPECT_LE(*spec_figure(SpecTerm::overlap, run_engine(scene, find_engine("home-seed"), before)),
+            *spec[SpecTerm::overlap]);
+  // It is judged missed, by its status alone.
+  const SpecVerdict v = judge(spec, r);
+  EXPECT_FALSE(v.met);
+  EXPECT_EQ(v.why_not.rfind("missed: overlap", 0), 0u) << v.why_not;
+  // A run that meets the spec is not stopped.
+  const Result home = run_engine(scene, find_engine("home"), o);
+  EXPECT_EQ(home.status, RunStatus::ok);
+  EXPECT_EQ(home.steps_done, home.steps);
+}
+
+cli::MatchOptions small_search(const Scene& scene) {
+  cli::MatchOptions o;
+  o.spec = scene_spec(scene);
+  o.max_halvings = 3;
+  o.repeats = 1;
+  o.quiet = true;
+  return o;
+}
+
+// What a search tried, leaving out what the clock measured (where a run over cost stopped).
+std::vector<std::string> tried(const MatchResult& m) {
+  std::vector<std::string> out;
+  for (const MatchTry& t : m.tries)
+    out.push_back(fmt::format("{}/{} {}={} k={} {} met={} done={}", t.engine, t.profile, t.knob, t.value.dump(),
+                              t.halvings, run_status_text(t.status), t.met,
+                              t.status == RunStatus::over_cost ? "-" : fmt::format("{:.6f}", t.done)));
+  for (const MatchOutcome& oc : m.outcomes)
+    out.push_back(fmt::format("{}/{} found={} best={} work={:.6f} stopped={}", oc.engine, oc.profile, oc.found, oc.best,
+                              oc.work, oc.stopped));
+  return out;
+}
+
+// Two searches side by side try exactly what one at a time tries, and find the same. (Knobs left
+// out: whether one is cheaper is a timing, and these runs take milliseconds, too short to time.)
+TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o = small_search(scene);
+  o.knobs = false;
+  const std::vector<const EngineEntry*> engines{&find_engine("home"), &find_engine("home-seed"), &find_engine("box2d")};
+  o.jobs = 1;
+  const MatchResult one = cli::run_match(scene, engines, o, {});
+  o.jobs = 2;
+  const MatchResult two = cli::run_match(scene, engines, o, {});
+  EXPECT_EQ(tried(one), tried(two));
+  // home-seed misses the overlap at every step: each try stops early, and its work is its share.
+  for (const MatchTry& t : one.tries)
+    if (t.engine == "home-seed") {
+      EXPECT_EQ(t.status, RunStatus::missed);
+      EXPECT_LT(t.done, 1.0);
+      EXPECT_DOUBLE_EQ(t.work, double(1 << t.halvings) * t.done);
+    }
+  // A found configuration is timed alone over its window: one repeat, a positive cost.
+  for (const MatchOutcome& oc : one.outcomes)
+    if (oc.reached) {
+      EXPECT_EQ(oc.cost_repeats.size(), 1u) << oc.engine;
+      EXPECT_GT(oc.cost_ns, 0);
+    }
+}
+
+// The budget counts work: a search that cannot afford its next try stops there, naming it, and a
+// larger budget goes on from the same tries.
+TEST(MatchWork, TheBudgetIsWorkAndStopsTheSameTries) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o = small_search(scene);
+  o.isolation.enabled = false;
+  o.knobs = false;
+  o.profile = "stock";
+  o.budget_runs = 1.5;  // dt and a try at dt/2 stopped early at most
+  const MatchResult small = cli::run_match(scene, {&find_engine("box2d")}, o, {});
+  ASSERT_EQ(small.outcomes.size(), 1u);
+  const MatchOutcome& oc = small.outcomes[0];
+  EXPECT_LE(oc.work, 1.5);
+  if (!oc.reached) {
+    EXPECT_NE(oc.stopped.find("the budget (1.5 runs at dt"), std::string::npos) << oc.stopped;
+  }
+  o.budget_runs = 100;
+  const MatchResult large = cli::run_match(scene, {&find_engine("box2d")}, o, {});
+  for (size_t i = 0; i < small.tries.size(); ++i) {
+    EXPECT_EQ(small.tries[i].halvings, large.tries.at(i).halvings);
+    EXPECT_EQ(small.tries[i].met, large.tries[i].met);
+  }
+}
+
+// The results store: a search run again reads every try and timing it kept and finds the same; a
+// fresh one measures everything again; another spec is another entry.
+TEST(MatchWork, TheStoreReusesWhatWasMeasuredAndFreshMeasuresAgain) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  const auto dir = std::filesystem::temp_directory_path() / "ballbench-store-test";
+  std::filesystem::remove_all(dir);
+  cli::MatchOptions o = small_search(scene);
+  o.isolation.enabled = false;
+  o.profile = "default";
+  const std::vector<const EngineEntry*> engines{&find_engine("home")};
+  const TryStore store(dir.string(), false);
+  o.store = &store;
+  const MatchResult first = cli::run_match(scene, engines, o, {});
+  const MatchResult again = cli::run_match(scene, engines, o, {});
+  EXPECT_EQ(tried(first), tried(again));
+  for (const MatchTry& t : first.tries) EXPECT_FALSE(t.stored);
+  for (const MatchTry& t : again.tries) EXPECT_TRUE(t.stored) << t.knob << " k=" << t.halvings;
+  ASSERT_TRUE(again.outcomes[0].reached);
+  EXPECT_TRUE(again.outcomes[0].timing_stored);
+  EXPECT_EQ(again.outcomes[0].cost_ns, first.outcomes[0].cost_ns);
+  const TryStore fresh(dir.string(), true);
+  o.store = &fresh;
+  const MatchResult measured = cli::run_match(scene, engines, o, {});
+  for (const MatchTry& t : measured.tries) EXPECT_FALSE(t.stored);
+  EXPECT_EQ(tried(first), tried(measured));
+  o.store = &store;
+  o.spec[SpecTerm::overlap] = 0.02;
+  const MatchResult other = cli::run_match(scene, engines, o, {});
+  EXPECT_FALSE(other.tries.front().stored);
+  std::filesystem::remove_all(dir);
+}
+
+// A settled scene is data: its file reads back with every ball where the run left it, the source's
+// spec stated (allowing overlap would drop the overlap term), and the window asked for.
+TEST(Settle, WritesTheFinalStateAsASceneThatReadsBack) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  RunOptions o;
+  State last;
+  o.last_state = &last;
+  ASSERT_EQ(run_engine(scene, find_engine("home"), o).status, RunStatus::ok);
+  const SceneSnapshot snap = scene_at_state(scene, last, "small-settled", 0.5);
+  const Scene back = parse_scene(snap.text, "settled.toml");
+  EXPECT_EQ(back.name, "small-settled");
+  EXPECT_EQ(back.n(), scene.n());
+  EXPECT_EQ(back.steps(), 50);
+  EXPECT_EQ(back.dt, scene.dt);
+  EXPECT_EQ(back.gravity, scene.gravity);
+  EXPECT_EQ(back.restitution, scene.restitution);
+  EXPECT_EQ(scene_spec(back).to_json(), scene_spec(scene).to_json());
+  EXPECT_EQ(snap.pushed_in == 0, (back.initial.pos - last.pos).cwiseAbs().maxCoeff() == 0);
+  EXPECT_LE((back.initial.pos - last.pos).cwiseAbs().maxCoeff(), 0.01 * 0.1);
+  EXPECT_EQ(back.initial.vel, last.vel);  // every double as it was
+  EXPECT_EQ(back.radius, scene.radius);
+}
+
+TEST(Settle, TheCommandWritesAFileThatRunsAndRefusesToOverwriteItsScene) {
+  const auto dir = std::filesystem::temp_directory_path() / "ballbench-settle-test";
+  std::filesystem::create_directories(dir);
+  const std::string scene = (dir / "small.toml").string(), out = (dir / "settled.toml").string();
+  std::ofstream(scene) << kSmallPile;
+  std::filesystem::remove(out);
+  const auto made = testing::run_cli("settle --quiet --scene " + scene + " --out " + out + " --duration 0.2");
+  ASSERT_EQ(made.status, 0) << made.err;
+  EXPECT_NE(made.out.find("small-pile-settled: 60 balls"), std::string::npos) << made.out;
+  const auto ran = testing::run_cli("run --quiet --no-reference --scene " + out + " --engine home");
+  EXPECT_EQ(ran.status, 0) << ran.err;
+  const auto clash = testing::run_cli("settle --quiet --scene " + scene + " --out " + scene);
+  EXPECT_EQ(clash.status, 2);
+  EXPECT_NE(clash.err.find("same file as --scene"), std::string::npos) << clash.err;
+}
+
+}  // namespace
+}  // namespace ballbench
