@@ -1,5 +1,6 @@
 #include "match_result.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -13,6 +14,12 @@
 namespace ballbench {
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
+
+std::string cost_spread_text(const MatchOutcome& oc) {
+  if (oc.cost_repeats.size() < 2 || oc.cost_ns <= 0) return cost_text(oc.cost_ns);
+  const auto [lo, hi] = std::minmax_element(oc.cost_repeats.begin(), oc.cost_repeats.end());
+  return fmt::format("{} ±{:.0f}%", cost_text(oc.cost_ns), 50 * (*hi - *lo) / oc.cost_ns);
+}
 
 std::string step_text(int halvings) { return halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << halvings); }
 
@@ -210,9 +217,9 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
   for (size_t k = 0; k < shards.size(); ++k) {
     const MatchResult& s = shards[k];
     if (s.scene != first.scene || s.scene_source != first.scene_source || s.spec.to_json() != first.spec.to_json() ||
-        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt)
-      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec or shard count "
-                                   "differs)",
+        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs)
+      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec, budget or shard "
+                                   "count differs)",
                                    names[k], names.front()));
     roll.take(k, s.shard_index, s.interrupted);
     out.context["shards"].push_back(s.context);

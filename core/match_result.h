@@ -116,5 +116,8 @@ std::string figure_text(const nlohmann::json& figure);
 std::string configuration_text(const MatchTry& t);
 // A cost in ns as the tables print it: whole numbers from 100 up, three figures below.
 std::string cost_text(double ns);
+// The found configuration's cost with the spread of its timing runs, "32720 ±2%" (half their range
+// over the median); the cost alone where it was timed once.
+std::string cost_spread_text(const MatchOutcome& oc);
 
 }  // namespace ballbench

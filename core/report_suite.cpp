@@ -29,7 +29,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
     throw InputError(fmt::format("{}: no suite [{}] (suites: {})", path, name, fmt::join(names, ", ")));
   }
   TableReader r(*t, path, name);
-  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "sweep_scenes",
+  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "match_max_halvings", "sweep_scenes",
                 "stress_scenes", "stress_levels", "seeds", "bench_filters", "bench_min_time", "bench_budget_s",
                 "harness_filter", "timeout_s", "costly_engines"});
   ReportSuite s;
@@ -61,6 +61,10 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
         r.fail(r.node(key), key, fmt::format("'{}' is not one of the suite's scenes", v));
   s.match_scenes = scenes("match_scenes");
   s.match_budget = positive("match_budget", s.match_budget);
+  if (const int64_t k = r.integer("match_max_halvings", s.match_max_halvings); k < 0 || k > 12)
+    r.fail(r.node("match_max_halvings"), "match_max_halvings", fmt::format("must be within 0 .. 12, got {}", k));
+  else
+    s.match_max_halvings = int(k);
   s.sweep_scenes = scenes("sweep_scenes");
   s.stress_scenes = scenes("stress_scenes");
   s.stress_levels = count("stress_levels", s.stress_levels);

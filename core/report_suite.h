@@ -11,6 +11,7 @@ struct ReportSuite {
   std::vector<std::string> scenes;          // a comparison table each, every engine and profile
   std::vector<std::string> unreferenced;    // of those, run without a reference
   std::vector<std::string> match_scenes;    // equal accuracy and its work-precision fronts
+  int match_max_halvings = 6;               // the finest step a search tries: dt / 2^this
   double match_budget = 400;                // one engine and profile's search, in runs of the scene at dt (MatchOptions::budget_runs)
   std::vector<std::string> sweep_scenes;    // work against precision
   std::vector<std::string> stress_scenes;   // stability frontier

@@ -62,14 +62,14 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     } else {
       const MatchTry& t = m.tries[shown];
       md += fmt::format("{}{} | {} |", oc->reached ? "" : "finest: ", markdown_cell(configuration_text(t)),
-                        oc->reached ? cost_text(oc->cost_ns) : "n/a");
+                        oc->reached ? cost_spread_text(*oc) : "n/a");
       for (const auto& key : terms) md += fmt::format(" {} |", figure_text(t.figures.value(key, nlohmann::json())));
     }
     md += fmt::format(" {} |\n", oc->tries);
   }
-  md += "\nCost: the engine's own step time per ball per scene step (a step of dt/8 costs 8 of its steps), the "
-        "found configuration timed alone over a tenth of its run from the state it saved there, scaled to the whole "
-        "run, median of the repeats; figures as the harness measured them from the states at the scene's step times. "
+  md += "\nCost: the engine's step time per ball per scene step in CPU time (a step of dt/8 costs 8 of its steps), "
+        "the found configuration timed after the searches over a tenth of its run from the state it saved there, "
+        "scaled to the whole run, median of the repeats (± half their range); figures as the harness measured them from the states at the scene's step times. "
         "\"n/a\": not measured.";
   if (m.budget_runs > 0)
     md += fmt::format(" Each search's budget: {:g} runs of the scene at dt ({:.3g} ball steps); a try stopped where "

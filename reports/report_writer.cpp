@@ -640,7 +640,7 @@ void put_harness(MarkdownBuffer& put, const BenchResults& bench) {
 // The machine and build, one column each for the shards of a merged report (`ballbench merge`:
 // run.json's "merge" and "shards"), each with the parts it ran and its command.
 void put_machines(MarkdownBuffer& put, const nlohmann::json& run) {
-  static constexpr const char* kFields[] = {"cpu", "cores", "os", "compiler", "build_type", "flags"};
+  static constexpr const char* kFields[] = {"cpu", "cores", "os", "compiler", "build_type", "flags", "build"};
   const nlohmann::json shards = run.value("shards", nlohmann::json::array());
   put("## Machine and build\n\n");
   if (!shards.is_array() || shards.empty()) {

@@ -320,6 +320,7 @@ void report(const ReportArgs& a) {
       MatchOptions o;
       o.spec = scene_spec(scene);
       o.budget_runs = suite.match_budget;
+      o.max_halvings = suite.match_max_halvings;
       o.store = &store;
       o.jobs = std::max(1, int(std::thread::hardware_concurrency()));
       o.isolation = isolation;
@@ -424,7 +425,7 @@ void add_report(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "report", "run the standard comparison (tables, sweeps, stability frontiers, scaling) and write REPORT.md");
   cmd->add_option("--out", a->out, "folder for REPORT.md, figures/ and results/ (default: reports)");
-  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite (the default): about 45 minutes on 2 cores, 35 with --no-bench");
+  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite (the default): about 47 minutes on 2 cores, 36 with --no-bench");
   cmd->add_flag("--full", a->full, "the complete evidence: more scenes, equal-accuracy searches, sweeps and "
                                    "frontiers, every benchmark (hours)")
       ->excludes(quick);

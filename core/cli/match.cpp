@@ -230,8 +230,9 @@ class Search {
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
     // The window a found configuration is timed over: from the middle of its run, at a scene step.
     const long steps = scene_.steps() << k;
-    r.window.steps = std::max(1L, long(double(steps) * kWindowFraction));
     r.window.start = std::max(1L, (steps / 2) >> k << k);
+    r.window.steps = std::clamp(std::max(long(double(steps) * kWindowFraction), kMinWindowSteps), 1L,
+                                std::max(1L, steps - r.window.start));
     r.window.checkpoint = checkpoint_path(index);
     return r;
   }
@@ -355,7 +356,9 @@ void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_k
       const Result t = o.isolation.enabled ? run_engine_isolated(window, e, r, {o.isolation.timeout_s, ""})
                                            : run_engine(window, e, r);
       if (t.status != RunStatus::ok || t.steps_done < 1) break;
-      oc.cost_repeats.push_back(whole(t.engine_process_s.value_or(t.engine_s)));
+      // CPU time, as while searching: another job on the cores barely changes it (an engine on several
+      // threads is charged for each).
+      oc.cost_repeats.push_back(whole(t.engine_process_s.value_or(t.engine_cpu_s.value_or(t.engine_s))));
       if (t.engine_process_s) pipe.push_back(whole(t.engine_s));
     }
   }
@@ -448,7 +451,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
 
   // Every search's tries in the order of the searches; then each found configuration timed alone.
   for (size_t i = 0; i < searches.size(); ++i) {
-    if (!outcomes[i]) break;  // interrupted before it started
+    if (!outcomes[i]) continue;  // interrupted before it started
     Search& s = *searches[i];
     MatchOutcome oc = std::move(*outcomes[i]);
     const int offset = int(m.tries.size());
@@ -472,9 +475,9 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
 
 void print_match(const MatchResult& m, std::optional<double> target) {
   fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
-  fmt::print("cost: the engine's own step time per ball per scene step (dt = {:g} s), the found configuration timed "
-             "alone over a tenth of its run from the state it saved there, scaled to the whole run, median of the "
-             "repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
+  fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, the found configuration "
+             "timed after the searches over a tenth of its run from the state it saved there, scaled to the whole run, "
+             "median of the repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
              m.dt);
   fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
              "grows is past its bound\n",
@@ -482,7 +485,7 @@ void print_match(const MatchResult& m, std::optional<double> target) {
   std::vector<std::string> terms;
   for (const SpecTermDef& d : spec_terms())
     if (m.spec[d.term]) terms.push_back(d.key);
-  fmt::print("{:<18} {:<12} {:<28} {:>10} {:>10}", "engine/profile", "spec", "configuration", "cost ns", "pipe ns");
+  fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", "engine/profile", "spec", "configuration", "cost ns", "pipe ns");
   for (const auto& t : terms) fmt::print(" {:>12}", t);
   fmt::print(" {:>5} {:>6}\n", "tries", "stored");
   for (const MatchOutcome& oc : m.outcomes) {
@@ -493,8 +496,8 @@ void print_match(const MatchResult& m, std::optional<double> target) {
       continue;
     }
     const MatchTry& t = m.tries[shown];
-    fmt::print("{:<18} {:<12} {:<28} {:>10} {:>10}", label, oc.reached ? "met" : "not reached",
-               (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_text(oc.cost_ns) : "-",
+    fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label, oc.reached ? "met" : "not reached",
+               (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_spread_text(oc) : "-",
                oc.reached && oc.cost_pipe_ns ? cost_text(*oc.cost_pipe_ns) : "-");
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
     fmt::print(" {:>5} {:>6}\n", oc.tries, oc.stored);

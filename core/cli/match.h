@@ -33,8 +33,11 @@ namespace ballbench::cli {
 // step) must not trade places with the CPU time's noise, some 5% under load.
 inline constexpr double kKnobCostMargin = 0.85;
 
-// The window a found configuration is timed over: this fraction of its run, from its middle.
+// The window a found configuration is timed over: this fraction of its run, from its middle, and at
+// least kMinWindowSteps of its steps (up to the run's second half): a window of a cheap engine at a
+// coarse step lasts milliseconds, too short to time.
 inline constexpr double kWindowFraction = 0.1;
+inline constexpr long kMinWindowSteps = 500;
 
 struct MatchOptions {
   std::string profile = "all";  // as for `run --profile`

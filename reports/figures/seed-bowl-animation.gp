@@ -1,47 +1,47 @@
-set terminal gif animate delay 10 optimize size 836,1326 font 'sans,10'
+set terminal gif animate delay 10 optimize size 836,1323 font 'sans,10'
 set termoption noenhanced
 set output 'seed-bowl-animation.gif'
 unset key
 unset xtics
 unset ytics
 set border lc rgb '#bbbbbb'
-set xrange [-5.412964:5.415764]
-set yrange [-5.416664:5.401064]
-size(r) = r * 36.938779882549454 / 3  # a radius in metres as a gd point size
+set xrange [-5.416932:5.416332000000001]
+set yrange [-5.417432000000001:5.401232]
+size(r) = r * 36.92331323228161 / 3  # a radius in metres as a gd point size
 set object 1 rect from -5,-5 to 5,5 fs empty border rgb '#c03030' lw 2 back
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
 set title 'home-seed   t = 0.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 0 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 0 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
 set title 'home   t = 0.0 s'
 plot 'seed-bowl-animation-home.dat' index 0 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 0 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
 set title 'home/events   t = 0.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 0 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 0 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
 set title 'home/soft   t = 0.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 0 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 0 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
 set title 'box2d/tuned   t = 0.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 0 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 0 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
@@ -49,2294 +49,2886 @@ unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 0.5 s'
+set title 'home-seed   t = 0.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 1 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 1 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 0.5 s'
+set title 'home   t = 0.4 s'
 plot 'seed-bowl-animation-home.dat' index 1 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 1 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 0.5 s'
+set title 'home/events   t = 0.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 1 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 1 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 0.5 s'
+set title 'home/soft   t = 0.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 1 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 1 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 0.5 s'
+set title 'box2d/tuned   t = 0.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 1 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 1 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 1.0 s'
+set title 'home-seed   t = 0.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 2 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 2 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 1.0 s'
+set title 'home   t = 0.8 s'
 plot 'seed-bowl-animation-home.dat' index 2 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 2 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 1.0 s'
+set title 'home/events   t = 0.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 2 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 2 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 1.0 s'
+set title 'home/soft   t = 0.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 2 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 2 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 1.0 s'
+set title 'box2d/tuned   t = 0.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 2 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 2 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 1.4 s'
+set title 'home-seed   t = 1.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 1.4 s'
+set title 'home   t = 1.1 s'
 plot 'seed-bowl-animation-home.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 1.4 s'
+set title 'home/events   t = 1.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 1.4 s'
+set title 'home/soft   t = 1.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 1.4 s'
+set title 'box2d/tuned   t = 1.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 3 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 3 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 1.9 s'
+set title 'home-seed   t = 1.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 1.9 s'
+set title 'home   t = 1.5 s'
 plot 'seed-bowl-animation-home.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 1.9 s'
+set title 'home/events   t = 1.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 1.9 s'
+set title 'home/soft   t = 1.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 1.9 s'
+set title 'box2d/tuned   t = 1.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 4 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 4 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 2.4 s'
+set title 'home-seed   t = 1.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 2.4 s'
+set title 'home   t = 1.9 s'
 plot 'seed-bowl-animation-home.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 2.4 s'
+set title 'home/events   t = 1.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 2.4 s'
+set title 'home/soft   t = 1.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 2.4 s'
+set title 'box2d/tuned   t = 1.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 5 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 5 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 2.9 s'
+set title 'home-seed   t = 2.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 2.9 s'
+set title 'home   t = 2.3 s'
 plot 'seed-bowl-animation-home.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 2.9 s'
+set title 'home/events   t = 2.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 2.9 s'
+set title 'home/soft   t = 2.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 2.9 s'
+set title 'box2d/tuned   t = 2.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 6 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 6 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 3.4 s'
+set title 'home-seed   t = 2.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 3.4 s'
+set title 'home   t = 2.7 s'
 plot 'seed-bowl-animation-home.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 3.4 s'
+set title 'home/events   t = 2.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 3.4 s'
+set title 'home/soft   t = 2.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 3.4 s'
+set title 'box2d/tuned   t = 2.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 7 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 7 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 3.8 s'
+set title 'home-seed   t = 3.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 3.8 s'
+set title 'home   t = 3.0 s'
 plot 'seed-bowl-animation-home.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 3.8 s'
+set title 'home/events   t = 3.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 3.8 s'
+set title 'home/soft   t = 3.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 3.8 s'
+set title 'box2d/tuned   t = 3.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 8 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 8 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 4.3 s'
+set title 'home-seed   t = 3.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 4.3 s'
+set title 'home   t = 3.4 s'
 plot 'seed-bowl-animation-home.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 4.3 s'
+set title 'home/events   t = 3.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 4.3 s'
+set title 'home/soft   t = 3.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 4.3 s'
+set title 'box2d/tuned   t = 3.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 9 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 9 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 4.8 s'
+set title 'home-seed   t = 3.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 4.8 s'
+set title 'home   t = 3.8 s'
 plot 'seed-bowl-animation-home.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 4.8 s'
+set title 'home/events   t = 3.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 4.8 s'
+set title 'home/soft   t = 3.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 4.8 s'
+set title 'box2d/tuned   t = 3.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 10 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 10 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 5.3 s'
+set title 'home-seed   t = 4.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 5.3 s'
+set title 'home   t = 4.2 s'
 plot 'seed-bowl-animation-home.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 5.3 s'
+set title 'home/events   t = 4.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 5.3 s'
+set title 'home/soft   t = 4.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 5.3 s'
+set title 'box2d/tuned   t = 4.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 11 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 11 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 5.8 s'
+set title 'home-seed   t = 4.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 5.8 s'
+set title 'home   t = 4.6 s'
 plot 'seed-bowl-animation-home.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 5.8 s'
+set title 'home/events   t = 4.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 5.8 s'
+set title 'home/soft   t = 4.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 5.8 s'
+set title 'box2d/tuned   t = 4.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 12 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 12 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 6.2 s'
+set title 'home-seed   t = 4.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 6.2 s'
+set title 'home   t = 4.9 s'
 plot 'seed-bowl-animation-home.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 6.2 s'
+set title 'home/events   t = 4.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 6.2 s'
+set title 'home/soft   t = 4.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 6.2 s'
+set title 'box2d/tuned   t = 4.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 13 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 13 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 6.7 s'
+set title 'home-seed   t = 5.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 6.7 s'
+set title 'home   t = 5.3 s'
 plot 'seed-bowl-animation-home.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 6.7 s'
+set title 'home/events   t = 5.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 6.7 s'
+set title 'home/soft   t = 5.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 6.7 s'
+set title 'box2d/tuned   t = 5.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 14 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 14 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 7.2 s'
+set title 'home-seed   t = 5.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 7.2 s'
+set title 'home   t = 5.7 s'
 plot 'seed-bowl-animation-home.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 7.2 s'
+set title 'home/events   t = 5.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 7.2 s'
+set title 'home/soft   t = 5.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 7.2 s'
+set title 'box2d/tuned   t = 5.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 15 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 15 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 7.7 s'
+set title 'home-seed   t = 6.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 7.7 s'
+set title 'home   t = 6.1 s'
 plot 'seed-bowl-animation-home.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 7.7 s'
+set title 'home/events   t = 6.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 7.7 s'
+set title 'home/soft   t = 6.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 7.7 s'
+set title 'box2d/tuned   t = 6.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 16 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 16 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 8.2 s'
+set title 'home-seed   t = 6.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 8.2 s'
+set title 'home   t = 6.5 s'
 plot 'seed-bowl-animation-home.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 8.2 s'
+set title 'home/events   t = 6.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 8.2 s'
+set title 'home/soft   t = 6.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 8.2 s'
+set title 'box2d/tuned   t = 6.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 17 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 17 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 8.6 s'
+set title 'home-seed   t = 6.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 8.6 s'
+set title 'home   t = 6.8 s'
 plot 'seed-bowl-animation-home.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 8.6 s'
+set title 'home/events   t = 6.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 8.6 s'
+set title 'home/soft   t = 6.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 8.6 s'
+set title 'box2d/tuned   t = 6.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 18 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 18 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 9.1 s'
+set title 'home-seed   t = 7.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 9.1 s'
+set title 'home   t = 7.2 s'
 plot 'seed-bowl-animation-home.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 9.1 s'
+set title 'home/events   t = 7.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 9.1 s'
+set title 'home/soft   t = 7.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 9.1 s'
+set title 'box2d/tuned   t = 7.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 19 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 19 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 9.6 s'
+set title 'home-seed   t = 7.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 9.6 s'
+set title 'home   t = 7.6 s'
 plot 'seed-bowl-animation-home.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 9.6 s'
+set title 'home/events   t = 7.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 9.6 s'
+set title 'home/soft   t = 7.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 9.6 s'
+set title 'box2d/tuned   t = 7.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 20 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 20 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 10.1 s'
+set title 'home-seed   t = 8.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 10.1 s'
+set title 'home   t = 8.0 s'
 plot 'seed-bowl-animation-home.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 10.1 s'
+set title 'home/events   t = 8.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 10.1 s'
+set title 'home/soft   t = 8.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 10.1 s'
+set title 'box2d/tuned   t = 8.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 21 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 21 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 10.6 s'
+set title 'home-seed   t = 8.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 10.6 s'
+set title 'home   t = 8.4 s'
 plot 'seed-bowl-animation-home.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 10.6 s'
+set title 'home/events   t = 8.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 10.6 s'
+set title 'home/soft   t = 8.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 10.6 s'
+set title 'box2d/tuned   t = 8.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 22 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 22 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 11.0 s'
+set title 'home-seed   t = 8.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 11.0 s'
+set title 'home   t = 8.7 s'
 plot 'seed-bowl-animation-home.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 11.0 s'
+set title 'home/events   t = 8.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 11.0 s'
+set title 'home/soft   t = 8.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 11.0 s'
+set title 'box2d/tuned   t = 8.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 23 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 23 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 11.5 s'
+set title 'home-seed   t = 9.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 11.5 s'
+set title 'home   t = 9.1 s'
 plot 'seed-bowl-animation-home.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 11.5 s'
+set title 'home/events   t = 9.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 11.5 s'
+set title 'home/soft   t = 9.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 11.5 s'
+set title 'box2d/tuned   t = 9.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 24 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 24 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 12.0 s'
+set title 'home-seed   t = 9.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 12.0 s'
+set title 'home   t = 9.5 s'
 plot 'seed-bowl-animation-home.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 12.0 s'
+set title 'home/events   t = 9.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 12.0 s'
+set title 'home/soft   t = 9.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 12.0 s'
+set title 'box2d/tuned   t = 9.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 25 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 25 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 12.5 s'
+set title 'home-seed   t = 9.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 12.5 s'
+set title 'home   t = 9.9 s'
 plot 'seed-bowl-animation-home.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 12.5 s'
+set title 'home/events   t = 9.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 12.5 s'
+set title 'home/soft   t = 9.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 12.5 s'
+set title 'box2d/tuned   t = 9.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 26 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 26 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 13.0 s'
+set title 'home-seed   t = 10.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 13.0 s'
+set title 'home   t = 10.3 s'
 plot 'seed-bowl-animation-home.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 13.0 s'
+set title 'home/events   t = 10.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 13.0 s'
+set title 'home/soft   t = 10.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 13.0 s'
+set title 'box2d/tuned   t = 10.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 27 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 27 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 13.4 s'
+set title 'home-seed   t = 10.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 13.4 s'
+set title 'home   t = 10.6 s'
 plot 'seed-bowl-animation-home.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 13.4 s'
+set title 'home/events   t = 10.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 13.4 s'
+set title 'home/soft   t = 10.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 13.4 s'
+set title 'box2d/tuned   t = 10.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 28 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 28 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 13.9 s'
+set title 'home-seed   t = 11.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 13.9 s'
+set title 'home   t = 11.0 s'
 plot 'seed-bowl-animation-home.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 13.9 s'
+set title 'home/events   t = 11.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 13.9 s'
+set title 'home/soft   t = 11.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 13.9 s'
+set title 'box2d/tuned   t = 11.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 29 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 29 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 14.4 s'
+set title 'home-seed   t = 11.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 14.4 s'
+set title 'home   t = 11.4 s'
 plot 'seed-bowl-animation-home.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 14.4 s'
+set title 'home/events   t = 11.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 14.4 s'
+set title 'home/soft   t = 11.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 14.4 s'
+set title 'box2d/tuned   t = 11.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 30 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 30 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 14.9 s'
+set title 'home-seed   t = 11.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 14.9 s'
+set title 'home   t = 11.8 s'
 plot 'seed-bowl-animation-home.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 14.9 s'
+set title 'home/events   t = 11.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 14.9 s'
+set title 'home/soft   t = 11.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 14.9 s'
+set title 'box2d/tuned   t = 11.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 31 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 31 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 15.4 s'
+set title 'home-seed   t = 12.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 15.4 s'
+set title 'home   t = 12.2 s'
 plot 'seed-bowl-animation-home.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 15.4 s'
+set title 'home/events   t = 12.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 15.4 s'
+set title 'home/soft   t = 12.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 15.4 s'
+set title 'box2d/tuned   t = 12.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 32 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 32 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 15.8 s'
+set title 'home-seed   t = 12.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 15.8 s'
+set title 'home   t = 12.5 s'
 plot 'seed-bowl-animation-home.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 15.8 s'
+set title 'home/events   t = 12.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 15.8 s'
+set title 'home/soft   t = 12.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 15.8 s'
+set title 'box2d/tuned   t = 12.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 33 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 33 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 16.3 s'
+set title 'home-seed   t = 12.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 16.3 s'
+set title 'home   t = 12.9 s'
 plot 'seed-bowl-animation-home.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 16.3 s'
+set title 'home/events   t = 12.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 16.3 s'
+set title 'home/soft   t = 12.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 16.3 s'
+set title 'box2d/tuned   t = 12.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 34 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 34 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 16.8 s'
+set title 'home-seed   t = 13.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 16.8 s'
+set title 'home   t = 13.3 s'
 plot 'seed-bowl-animation-home.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 16.8 s'
+set title 'home/events   t = 13.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 16.8 s'
+set title 'home/soft   t = 13.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 16.8 s'
+set title 'box2d/tuned   t = 13.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 35 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 35 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 17.3 s'
+set title 'home-seed   t = 13.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 17.3 s'
+set title 'home   t = 13.7 s'
 plot 'seed-bowl-animation-home.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 17.3 s'
+set title 'home/events   t = 13.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 17.3 s'
+set title 'home/soft   t = 13.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 17.3 s'
+set title 'box2d/tuned   t = 13.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 36 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 36 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 17.8 s'
+set title 'home-seed   t = 14.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 17.8 s'
+set title 'home   t = 14.1 s'
 plot 'seed-bowl-animation-home.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 17.8 s'
+set title 'home/events   t = 14.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 17.8 s'
+set title 'home/soft   t = 14.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 17.8 s'
+set title 'box2d/tuned   t = 14.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 37 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 37 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 18.2 s'
+set title 'home-seed   t = 14.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 18.2 s'
+set title 'home   t = 14.4 s'
 plot 'seed-bowl-animation-home.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 18.2 s'
+set title 'home/events   t = 14.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 18.2 s'
+set title 'home/soft   t = 14.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 18.2 s'
+set title 'box2d/tuned   t = 14.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 38 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 38 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 18.7 s'
+set title 'home-seed   t = 14.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 18.7 s'
+set title 'home   t = 14.8 s'
 plot 'seed-bowl-animation-home.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 18.7 s'
+set title 'home/events   t = 14.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 18.7 s'
+set title 'home/soft   t = 14.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 18.7 s'
+set title 'box2d/tuned   t = 14.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 39 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 39 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 19.2 s'
+set title 'home-seed   t = 15.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 19.2 s'
+set title 'home   t = 15.2 s'
 plot 'seed-bowl-animation-home.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 19.2 s'
+set title 'home/events   t = 15.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 19.2 s'
+set title 'home/soft   t = 15.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 19.2 s'
+set title 'box2d/tuned   t = 15.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 40 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 40 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 19.7 s'
+set title 'home-seed   t = 15.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 19.7 s'
+set title 'home   t = 15.6 s'
 plot 'seed-bowl-animation-home.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 19.7 s'
+set title 'home/events   t = 15.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 19.7 s'
+set title 'home/soft   t = 15.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 19.7 s'
+set title 'box2d/tuned   t = 15.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 41 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 41 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 20.2 s'
+set title 'home-seed   t = 16.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 20.2 s'
+set title 'home   t = 16.0 s'
 plot 'seed-bowl-animation-home.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 20.2 s'
+set title 'home/events   t = 16.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 20.2 s'
+set title 'home/soft   t = 16.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 20.2 s'
+set title 'box2d/tuned   t = 16.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 42 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 42 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 20.6 s'
+set title 'home-seed   t = 16.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 20.6 s'
+set title 'home   t = 16.3 s'
 plot 'seed-bowl-animation-home.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 20.6 s'
+set title 'home/events   t = 16.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 20.6 s'
+set title 'home/soft   t = 16.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 20.6 s'
+set title 'box2d/tuned   t = 16.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 43 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 43 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 21.1 s'
+set title 'home-seed   t = 16.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 21.1 s'
+set title 'home   t = 16.7 s'
 plot 'seed-bowl-animation-home.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 21.1 s'
+set title 'home/events   t = 16.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 21.1 s'
+set title 'home/soft   t = 16.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 21.1 s'
+set title 'box2d/tuned   t = 16.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 44 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 44 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 21.6 s'
+set title 'home-seed   t = 17.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 21.6 s'
+set title 'home   t = 17.1 s'
 plot 'seed-bowl-animation-home.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 21.6 s'
+set title 'home/events   t = 17.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 21.6 s'
+set title 'home/soft   t = 17.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 21.6 s'
+set title 'box2d/tuned   t = 17.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 45 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 45 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 22.1 s'
+set title 'home-seed   t = 17.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 22.1 s'
+set title 'home   t = 17.5 s'
 plot 'seed-bowl-animation-home.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 22.1 s'
+set title 'home/events   t = 17.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 22.1 s'
+set title 'home/soft   t = 17.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 22.1 s'
+set title 'box2d/tuned   t = 17.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 46 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 46 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 22.6 s'
+set title 'home-seed   t = 17.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 22.6 s'
+set title 'home   t = 17.9 s'
 plot 'seed-bowl-animation-home.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 22.6 s'
+set title 'home/events   t = 17.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 22.6 s'
+set title 'home/soft   t = 17.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 22.6 s'
+set title 'box2d/tuned   t = 17.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 47 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 47 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 23.0 s'
+set title 'home-seed   t = 18.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 23.0 s'
+set title 'home   t = 18.2 s'
 plot 'seed-bowl-animation-home.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 23.0 s'
+set title 'home/events   t = 18.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 23.0 s'
+set title 'home/soft   t = 18.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 23.0 s'
+set title 'box2d/tuned   t = 18.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 48 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 48 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 23.5 s'
+set title 'home-seed   t = 18.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 23.5 s'
+set title 'home   t = 18.6 s'
 plot 'seed-bowl-animation-home.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 23.5 s'
+set title 'home/events   t = 18.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 23.5 s'
+set title 'home/soft   t = 18.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 23.5 s'
+set title 'box2d/tuned   t = 18.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 49 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 49 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 24.0 s'
+set title 'home-seed   t = 19.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 24.0 s'
+set title 'home   t = 19.0 s'
 plot 'seed-bowl-animation-home.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 24.0 s'
+set title 'home/events   t = 19.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 24.0 s'
+set title 'home/soft   t = 19.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 24.0 s'
+set title 'box2d/tuned   t = 19.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 50 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 50 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 24.5 s'
+set title 'home-seed   t = 19.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 24.5 s'
+set title 'home   t = 19.4 s'
 plot 'seed-bowl-animation-home.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 24.5 s'
+set title 'home/events   t = 19.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 24.5 s'
+set title 'home/soft   t = 19.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 24.5 s'
+set title 'box2d/tuned   t = 19.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 51 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 51 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 25.0 s'
+set title 'home-seed   t = 19.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 25.0 s'
+set title 'home   t = 19.8 s'
 plot 'seed-bowl-animation-home.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 25.0 s'
+set title 'home/events   t = 19.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 25.0 s'
+set title 'home/soft   t = 19.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 25.0 s'
+set title 'box2d/tuned   t = 19.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 52 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 52 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 25.4 s'
+set title 'home-seed   t = 20.1 s'
 plot 'seed-bowl-animation-home-seed.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 25.4 s'
+set title 'home   t = 20.1 s'
 plot 'seed-bowl-animation-home.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 25.4 s'
+set title 'home/events   t = 20.1 s'
 plot 'seed-bowl-animation-home-events.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 25.4 s'
+set title 'home/soft   t = 20.1 s'
 plot 'seed-bowl-animation-home-soft.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 25.4 s'
+set title 'box2d/tuned   t = 20.1 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 53 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 53 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 25.9 s'
+set title 'home-seed   t = 20.5 s'
 plot 'seed-bowl-animation-home-seed.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 25.9 s'
+set title 'home   t = 20.5 s'
 plot 'seed-bowl-animation-home.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 25.9 s'
+set title 'home/events   t = 20.5 s'
 plot 'seed-bowl-animation-home-events.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 25.9 s'
+set title 'home/soft   t = 20.5 s'
 plot 'seed-bowl-animation-home-soft.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 25.9 s'
+set title 'box2d/tuned   t = 20.5 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 54 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 54 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 26.4 s'
+set title 'home-seed   t = 20.9 s'
 plot 'seed-bowl-animation-home-seed.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 26.4 s'
+set title 'home   t = 20.9 s'
 plot 'seed-bowl-animation-home.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 26.4 s'
+set title 'home/events   t = 20.9 s'
 plot 'seed-bowl-animation-home-events.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 26.4 s'
+set title 'home/soft   t = 20.9 s'
 plot 'seed-bowl-animation-home-soft.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 26.4 s'
+set title 'box2d/tuned   t = 20.9 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 55 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 55 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 26.9 s'
+set title 'home-seed   t = 21.3 s'
 plot 'seed-bowl-animation-home-seed.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 26.9 s'
+set title 'home   t = 21.3 s'
 plot 'seed-bowl-animation-home.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 26.9 s'
+set title 'home/events   t = 21.3 s'
 plot 'seed-bowl-animation-home-events.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 26.9 s'
+set title 'home/soft   t = 21.3 s'
 plot 'seed-bowl-animation-home-soft.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 26.9 s'
+set title 'box2d/tuned   t = 21.3 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 56 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 56 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 27.4 s'
+set title 'home-seed   t = 21.7 s'
 plot 'seed-bowl-animation-home-seed.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 27.4 s'
+set title 'home   t = 21.7 s'
 plot 'seed-bowl-animation-home.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 27.4 s'
+set title 'home/events   t = 21.7 s'
 plot 'seed-bowl-animation-home-events.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 27.4 s'
+set title 'home/soft   t = 21.7 s'
 plot 'seed-bowl-animation-home-soft.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 27.4 s'
+set title 'box2d/tuned   t = 21.7 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 57 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 57 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 27.8 s'
+set title 'home-seed   t = 22.0 s'
 plot 'seed-bowl-animation-home-seed.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 27.8 s'
+set title 'home   t = 22.0 s'
 plot 'seed-bowl-animation-home.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 27.8 s'
+set title 'home/events   t = 22.0 s'
 plot 'seed-bowl-animation-home-events.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 27.8 s'
+set title 'home/soft   t = 22.0 s'
 plot 'seed-bowl-animation-home-soft.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 27.8 s'
+set title 'box2d/tuned   t = 22.0 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 58 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 58 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 28.3 s'
+set title 'home-seed   t = 22.4 s'
 plot 'seed-bowl-animation-home-seed.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 28.3 s'
+set title 'home   t = 22.4 s'
 plot 'seed-bowl-animation-home.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 28.3 s'
+set title 'home/events   t = 22.4 s'
 plot 'seed-bowl-animation-home-events.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 28.3 s'
+set title 'home/soft   t = 22.4 s'
 plot 'seed-bowl-animation-home-soft.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 28.3 s'
+set title 'box2d/tuned   t = 22.4 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 59 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 59 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 28.8 s'
+set title 'home-seed   t = 22.8 s'
 plot 'seed-bowl-animation-home-seed.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 28.8 s'
+set title 'home   t = 22.8 s'
 plot 'seed-bowl-animation-home.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 28.8 s'
+set title 'home/events   t = 22.8 s'
 plot 'seed-bowl-animation-home-events.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 28.8 s'
+set title 'home/soft   t = 22.8 s'
 plot 'seed-bowl-animation-home-soft.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 28.8 s'
+set title 'box2d/tuned   t = 22.8 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 60 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 60 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 29.3 s'
+set title 'home-seed   t = 23.2 s'
 plot 'seed-bowl-animation-home-seed.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 29.3 s'
+set title 'home   t = 23.2 s'
 plot 'seed-bowl-animation-home.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 29.3 s'
+set title 'home/events   t = 23.2 s'
 plot 'seed-bowl-animation-home-events.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 29.3 s'
+set title 'home/soft   t = 23.2 s'
 plot 'seed-bowl-animation-home-soft.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 29.3 s'
+set title 'box2d/tuned   t = 23.2 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 61 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 61 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
 set multiplot
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home-seed   t = 29.8 s'
+set title 'home-seed   t = 23.6 s'
 plot 'seed-bowl-animation-home-seed.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.971342383107089
-set bmargin at screen 0.6696832579185521
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
 unset label
-set title 'home   t = 29.8 s'
+set title 'home   t = 23.6 s'
 plot 'seed-bowl-animation-home.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/events   t = 29.8 s'
+set title 'home/events   t = 23.6 s'
 plot 'seed-bowl-animation-home-events.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.507177033492823
 set rmargin at screen 0.9856459330143541
-set tmargin at screen 0.641025641025641
-set bmargin at screen 0.3393665158371041
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
 unset label
-set title 'home/soft   t = 29.8 s'
+set title 'home/soft   t = 23.6 s'
 plot 'seed-bowl-animation-home-soft.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 set lmargin at screen 0.014354066985645933
 set rmargin at screen 0.49282296650717705
-set tmargin at screen 0.31070889894419307
-set bmargin at screen 0.009049773755656076
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
 unset label
-set title 'box2d/tuned   t = 29.8 s'
+set title 'box2d/tuned   t = 23.6 s'
 plot 'seed-bowl-animation-box2d-tuned.dat' index 62 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 62 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 23.9 s'
+plot 'seed-bowl-animation-home-seed.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 23.9 s'
+plot 'seed-bowl-animation-home.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 23.9 s'
+plot 'seed-bowl-animation-home-events.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 23.9 s'
+plot 'seed-bowl-animation-home-soft.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 23.9 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 63 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 63 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 24.3 s'
+plot 'seed-bowl-animation-home-seed.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 24.3 s'
+plot 'seed-bowl-animation-home.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 24.3 s'
+plot 'seed-bowl-animation-home-events.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 24.3 s'
+plot 'seed-bowl-animation-home-soft.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 24.3 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 64 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 64 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 24.7 s'
+plot 'seed-bowl-animation-home-seed.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 24.7 s'
+plot 'seed-bowl-animation-home.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 24.7 s'
+plot 'seed-bowl-animation-home-events.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 24.7 s'
+plot 'seed-bowl-animation-home-soft.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 24.7 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 65 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 65 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 25.1 s'
+plot 'seed-bowl-animation-home-seed.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 25.1 s'
+plot 'seed-bowl-animation-home.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 25.1 s'
+plot 'seed-bowl-animation-home-events.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 25.1 s'
+plot 'seed-bowl-animation-home-soft.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 25.1 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 66 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 66 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 25.5 s'
+plot 'seed-bowl-animation-home-seed.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 25.5 s'
+plot 'seed-bowl-animation-home.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 25.5 s'
+plot 'seed-bowl-animation-home-events.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 25.5 s'
+plot 'seed-bowl-animation-home-soft.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 25.5 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 67 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 67 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 25.8 s'
+plot 'seed-bowl-animation-home-seed.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 25.8 s'
+plot 'seed-bowl-animation-home.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 25.8 s'
+plot 'seed-bowl-animation-home-events.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 25.8 s'
+plot 'seed-bowl-animation-home-soft.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 25.8 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 68 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 68 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 26.2 s'
+plot 'seed-bowl-animation-home-seed.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 26.2 s'
+plot 'seed-bowl-animation-home.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 26.2 s'
+plot 'seed-bowl-animation-home-events.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 26.2 s'
+plot 'seed-bowl-animation-home-soft.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 26.2 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 69 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 69 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 26.6 s'
+plot 'seed-bowl-animation-home-seed.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 26.6 s'
+plot 'seed-bowl-animation-home.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 26.6 s'
+plot 'seed-bowl-animation-home-events.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 26.6 s'
+plot 'seed-bowl-animation-home-soft.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 26.6 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 70 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 70 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 27.0 s'
+plot 'seed-bowl-animation-home-seed.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 27.0 s'
+plot 'seed-bowl-animation-home.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 27.0 s'
+plot 'seed-bowl-animation-home-events.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 27.0 s'
+plot 'seed-bowl-animation-home-soft.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 27.0 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 71 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 71 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 27.4 s'
+plot 'seed-bowl-animation-home-seed.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 27.4 s'
+plot 'seed-bowl-animation-home.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 27.4 s'
+plot 'seed-bowl-animation-home-events.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 27.4 s'
+plot 'seed-bowl-animation-home-soft.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 27.4 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 72 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 72 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 27.7 s'
+plot 'seed-bowl-animation-home-seed.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 27.7 s'
+plot 'seed-bowl-animation-home.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 27.7 s'
+plot 'seed-bowl-animation-home-events.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 27.7 s'
+plot 'seed-bowl-animation-home-soft.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 27.7 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 73 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 73 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 28.1 s'
+plot 'seed-bowl-animation-home-seed.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 28.1 s'
+plot 'seed-bowl-animation-home.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 28.1 s'
+plot 'seed-bowl-animation-home-events.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 28.1 s'
+plot 'seed-bowl-animation-home-soft.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 28.1 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 74 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 74 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 28.5 s'
+plot 'seed-bowl-animation-home-seed.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 28.5 s'
+plot 'seed-bowl-animation-home.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 28.5 s'
+plot 'seed-bowl-animation-home-events.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 28.5 s'
+plot 'seed-bowl-animation-home-soft.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 28.5 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 75 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 75 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 28.9 s'
+plot 'seed-bowl-animation-home-seed.dat' index 76 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 76 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 28.9 s'
+plot 'seed-bowl-animation-home.dat' index 76 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 76 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 28.9 s'
+plot 'seed-bowl-animation-home-events.dat' index 76 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 76 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 28.9 s'
+plot 'seed-bowl-animation-home-soft.dat' index 76 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 76 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 28.9 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 76 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 76 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 29.3 s'
+plot 'seed-bowl-animation-home-seed.dat' index 77 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 77 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 29.3 s'
+plot 'seed-bowl-animation-home.dat' index 77 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 77 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 29.3 s'
+plot 'seed-bowl-animation-home-events.dat' index 77 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 77 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 29.3 s'
+plot 'seed-bowl-animation-home-soft.dat' index 77 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 77 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 29.3 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 77 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 77 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+unset multiplot
+set multiplot
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home-seed   t = 29.6 s'
+plot 'seed-bowl-animation-home-seed.dat' index 78 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#D55E00', '' index 78 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.9712773998488284
+set bmargin at screen 0.6696900982615268
+unset label
+set title 'home   t = 29.6 s'
+plot 'seed-bowl-animation-home.dat' index 78 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 78 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/events   t = 29.6 s'
+plot 'seed-bowl-animation-home-events.dat' index 78 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 78 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.507177033492823
+set rmargin at screen 0.9856459330143541
+set tmargin at screen 0.6409674981103552
+set bmargin at screen 0.3393801965230536
+unset label
+set title 'home/soft   t = 29.6 s'
+plot 'seed-bowl-animation-home-soft.dat' index 78 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#0072B2', '' index 78 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
+set lmargin at screen 0.014354066985645933
+set rmargin at screen 0.49282296650717705
+set tmargin at screen 0.31065759637188206
+set bmargin at screen 0.009070294784580546
+unset label
+set title 'box2d/tuned   t = 29.6 s'
+plot 'seed-bowl-animation-box2d-tuned.dat' index 78 using 1:2:(size($3)) with points pt 7 ps variable lc rgb '#E69F00', '' index 78 using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'
 unset multiplot
