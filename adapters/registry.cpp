@@ -74,7 +74,11 @@ struct Registry {
     std::vector<ProcessEngineSpec> specs;
     for (size_t k : which) specs.push_back(external[k]);
     std::vector<EngineEntry> made = process_engine_entries(specs);
-    for (size_t j = 0; j < which.size(); ++j) entries[builtins + which[j]] = std::move(made[j]), resolved[which[j]] = true;
+    for (size_t j = 0; j < which.size(); ++j) {
+      EngineEntry& e = entries[builtins + which[j]];
+      e = std::move(made[j]), resolved[which[j]] = true;
+      if (specs[j].file != BALLBENCH_ENGINES_FILE) e.engines_file = specs[j].file;
+    }
   }
   void resolve_all() {
     std::vector<size_t> which;

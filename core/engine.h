@@ -149,6 +149,9 @@ using EngineFactory =
 struct EngineEntry {
   EngineInfo info;
   EngineFactory create;
+  // The user's engines file (--engines, BALLBENCH_ENGINES) that registered it, as given; "" for a
+  // built-in or an engine of the project's engines.toml. A command reproducing its run names it.
+  std::string engines_file;
 };
 
 // For 3D engines that turn balls about z only: the angle (rad) of the unit quaternion

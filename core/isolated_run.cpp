@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "engine_group.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "trajectory_csv.h"
@@ -115,7 +116,7 @@ class ChildWatcher {
     }
     // A child that ended normally ended its engines' groups itself (quick_exit's handler).
     if (!(WIFEXITED(out_.wait_status) && WEXITSTATUS(out_.wait_status) == 0))
-      for (const int group : engine_groups_) ::kill(-group, SIGKILL);
+      for (const int group : engine_groups_) kill_engine_group(group);
     return out_;
   }
 

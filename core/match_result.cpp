@@ -1,17 +1,42 @@
 #include "match_result.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include <fmt/format.h>
 
 #include "data_file.h"
+#include "engine.h"
 #include "input_error.h"
 #include "json_value.h"
 #include "shard_roll.h"
 
 namespace ballbench {
+namespace {
+
+constexpr std::array<std::pair<SearchStop, const char*>, 5> kStopTexts{{
+    {SearchStop::none, ""},
+    {SearchStop::finest_step, "finest step"},
+    {SearchStop::budget, "budget"},
+    {SearchStop::ceiling, "ceiling"},
+    {SearchStop::interrupt, "interrupt"},
+}};
+
+}  // namespace
+
+const char* search_stop_text(SearchStop s) {
+  for (const auto& [stop, text] : kStopTexts)
+    if (stop == s) return text;
+  return "";
+}
+
+SearchStop search_stop_from_text(std::string_view text) {
+  for (const auto& [stop, t] : kStopTexts)
+    if (t == text) return stop;
+  throw InputError(fmt::format("unknown search stop '{}' (known: finest step, budget, ceiling, interrupt)", text));
+}
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
 
@@ -73,6 +98,17 @@ const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& ro
   return best;
 }
 
+std::optional<double> ratio_at_least(const MatchResult& m, const MatchOutcome& ours) {
+  if (!ours.reached || !(m.ceiling_ns > 0) || !(ours.cost_ns > 0)) return std::nullopt;
+  bool ceiling = false;
+  for (const MatchOutcome& oc : m.outcomes) {
+    if (oc.role != role_name(EngineRole::external)) continue;
+    if (oc.reached || oc.stop == SearchStop::budget || oc.stop == SearchStop::interrupt) return std::nullopt;
+    ceiling = ceiling || oc.stop == SearchStop::ceiling;
+  }
+  return ceiling ? std::optional(m.ceiling_ns / ours.cost_ns) : std::nullopt;
+}
+
 const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role) {
   const MatchOutcome* nearest = nullptr;
   double nearest_miss = 0;
@@ -117,11 +153,11 @@ nlohmann::json to_json(const MatchResult& m) {
                         {"finest_dt", o.finest_dt}, {"cost_repeats", o.cost_repeats}, {"cost_ns", o.cost_ns},
                         {"cost_pipe_ns", o.cost_pipe_ns ? nlohmann::json(*o.cost_pipe_ns) : nlohmann::json()},
                         {"work", o.work}, {"stored", o.stored}, {"timing_stored", o.timing_stored},
-                        {"stopped", o.stopped},     {"command", o.command}});
+                        {"stop", search_stop_text(o.stop)}, {"stopped", o.stopped}, {"command", o.command}});
   return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
           {"scene_class", m.scene_class}, {"n", m.n},        {"dt", m.dt},
           {"spec", m.spec.to_json()}, {"budget_runs", m.budget_runs}, {"run_ball_steps", m.run_ball_steps},
-          {"context", m.context}, {"interrupted", m.interrupted},
+          {"ceiling", m.ceiling}, {"ceiling_ns", m.ceiling_ns}, {"context", m.context}, {"interrupted", m.interrupted},
           {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
           {"tries", tries},          {"outcomes", outcomes}};
 }
@@ -141,6 +177,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
   }
   m.budget_runs = j.value("budget_runs", 0.0);
   m.run_ball_steps = j.value("run_ball_steps", 0L);
+  m.ceiling = j.value("ceiling", 0.0), m.ceiling_ns = j.value("ceiling_ns", 0.0);
   m.context = j.at("context");
   m.interrupted = j.at("interrupted").get<std::string>();
   m.shard_index = j.at("shard").at("index").get<int>();
@@ -156,6 +193,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
     o.cost_repeats = q.at("cost_repeats").get<std::vector<double>>(), o.cost_ns = q.at("cost_ns").get<double>();
     o.cost_pipe_ns = opt(q.at("cost_pipe_ns"));
     o.stopped = q.at("stopped").get<std::string>(), o.command = q.at("command").get<std::string>();
+    o.stop = search_stop_from_text(q.value("stop", ""));
     o.work = q.value("work", 0.0), o.stored = q.value("stored", 0), o.timing_stored = q.value("timing_stored", false);
     for (int k : {o.found, o.best})
       if (k >= int(m.tries.size())) throw InputError(fmt::format("outcomes: try {} is not in tries", k));
@@ -217,9 +255,10 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
   for (size_t k = 0; k < shards.size(); ++k) {
     const MatchResult& s = shards[k];
     if (s.scene != first.scene || s.scene_source != first.scene_source || s.spec.to_json() != first.spec.to_json() ||
-        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs)
-      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec, budget or shard "
-                                   "count differs)",
+        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs ||
+        s.ceiling != first.ceiling)
+      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec, budget, ceiling "
+                                   "or shard count differs)",
                                    names[k], names.front()));
     roll.take(k, s.shard_index, s.interrupted);
     out.context["shards"].push_back(s.context);

@@ -4,6 +4,7 @@
 // equal-accuracy tables and work-precision fronts.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -24,7 +25,7 @@ struct MatchTry {
   std::string error;
   bool met = false;
   std::string why_not;           // the failing terms, or the run's status
-  nlohmann::json figures;        // every spec term's figure
+  nlohmann::json figures = nlohmann::json::object();  // every spec term's figure
   // Cost per ball per scene step (ns): the engine's own step time (self-timed by an engine in
   // another process), and for such an engine the harness's time with the pipe beside it.
   double cost_ns = 0;
@@ -37,6 +38,15 @@ struct MatchTry {
   bool stored = false;           // read from the results store (core/try_store.h), not run again
   nlohmann::json settings;       // the engine's effective settings
 };
+
+// Why a search ended without meeting the spec: it tried its finest step, it spent its budget, its
+// tries passed the match's ceiling (MatchResult::ceiling_ns), or the user interrupted it.
+enum class SearchStop { none, finest_step, budget, ceiling, interrupt };
+
+// Its word in results files ("finest step", "budget", ...); search_stop_from_text reads it back
+// and throws InputError for any other.
+const char* search_stop_text(SearchStop s);
+SearchStop search_stop_from_text(std::string_view text);
 
 // Each search's outcome: the cheapest configuration that met the spec, or the best one tried.
 struct MatchOutcome {
@@ -55,7 +65,8 @@ struct MatchOutcome {
   int stored = 0;        // of its tries, those read from the results store
   bool timing_stored = false;  // its cost read from the store (measured alone by an earlier search)
   std::optional<double> cost_pipe_ns;
-  std::string stopped;   // why the search ended without a result ("budget", "max halvings"), or ""
+  SearchStop stop = SearchStop::none;  // why the search ended without a result
+  std::string stopped;   // the same, with its figures ("the budget (600 runs at dt, ...)"), or ""
   std::string command;   // the `ballbench run` that reproduces the found (or best) point
 };
 
@@ -65,6 +76,10 @@ struct MatchResult {
   double dt = 0;  // the scene's
   AccuracySpec spec;
   double budget_runs = 0;  // each search's budget, in runs of the scene at dt
+  // A try stops once its CPU time passes `ceiling` times the cheapest configuration found for our
+  // solver's default profile (0: no ceiling); ceiling_ns is that cost (ns per ball per scene step).
+  double ceiling = 0;
+  double ceiling_ns = 0;
   long run_ball_steps = 0;  // ball steps in one such run: n x the scene's steps
   nlohmann::json context;
   std::string interrupted;
@@ -104,6 +119,11 @@ const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& ro
 // Of the outcomes of engines of `role` that did not meet the spec, the one whose nearest try came
 // closest (the smallest miss), or none: the engine to name where none met it.
 const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role);
+
+// Where no external engine met the spec, at least one stopped at the match's ceiling and none ran
+// out of budget: the ratio ours is cheaper by at least (the ceiling's cost over ours); none
+// otherwise (an external engine met it, or one might have with more work).
+std::optional<double> ratio_at_least(const MatchResult& m, const MatchOutcome& ours);
 
 // "dt", "dt/8": the step of a try that halved the scene's step `halvings` times.
 std::string step_text(int halvings);

@@ -29,9 +29,10 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
     throw InputError(fmt::format("{}: no suite [{}] (suites: {})", path, name, fmt::join(names, ", ")));
   }
   TableReader r(*t, path, name);
-  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "match_max_halvings", "sweep_scenes",
+  r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "match_max_halvings", "match_ceiling", "sweep_scenes",
                 "stress_scenes", "stress_levels", "seeds", "bench_filters", "bench_min_time", "bench_budget_s",
-                "harness_filter", "timeout_s", "costly_engines"});
+                "harness_filter", "timeout_s", "costly_engines",
+                "match_costly_engines"});
   ReportSuite s;
   s.name = name;
   const auto names = builtin_scene_names();
@@ -61,6 +62,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
         r.fail(r.node(key), key, fmt::format("'{}' is not one of the suite's scenes", v));
   s.match_scenes = scenes("match_scenes");
   s.match_budget = positive("match_budget", s.match_budget);
+  if (r.has("match_ceiling")) s.match_ceiling = positive("match_ceiling", s.match_ceiling);
   if (const int64_t k = r.integer("match_max_halvings", s.match_max_halvings); k < 0 || k > 12)
     r.fail(r.node("match_max_halvings"), "match_max_halvings", fmt::format("must be within 0 .. 12, got {}", k));
   else
@@ -75,6 +77,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
   s.harness_filter = r.string("harness_filter", "");
   s.timeout_s = positive("timeout_s", s.timeout_s);
   s.costly_engines = r.boolean("costly_engines", s.costly_engines);
+  s.match_costly_engines = r.strings("match_costly_engines", {});
   return s;
 }
 

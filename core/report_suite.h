@@ -13,6 +13,7 @@ struct ReportSuite {
   std::vector<std::string> match_scenes;    // equal accuracy and its work-precision fronts
   int match_max_halvings = 6;               // the finest step a search tries: dt / 2^this
   double match_budget = 400;                // one engine and profile's search, in runs of the scene at dt (MatchOptions::budget_runs)
+  double match_ceiling = 0;                 // a try stops past this multiple of our solver's cost (MatchOptions::ceiling; 0: none)
   std::vector<std::string> sweep_scenes;    // work against precision
   std::vector<std::string> stress_scenes;   // stability frontier
   int stress_levels = 5;
@@ -23,6 +24,7 @@ struct ReportSuite {
   std::string harness_filter;               // of bench/ballbench_harness_benchmark
   double timeout_s = 600;                   // per engine run
   bool costly_engines = false;              // sweeps, frontiers and matches include EngineInfo::costly_runs engines
+  std::vector<std::string> match_costly_engines;  // costly engines the matches include anyway
 };
 
 // The suite `name` of the suites file (default: scenarios/suites/report.toml in the scenarios

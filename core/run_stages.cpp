@@ -80,9 +80,11 @@ void step_reference(RunContext& c, long k, bool read) {
 }
 
 // The engine's step time so far as CPU time: engine_s times the share of the wall time since the
-// harness started that this process spent on a core. The CPU clock is read now and then, not
+// harness started that this process spent on a core (for an engine in another process, the step
+// time it measured itself). The CPU clock is read now and then, not
 // around every step: a read is a system call, which would cost more than a small scene's step.
 double engine_cpu_seconds(const RunContext& c) {
+  if (const auto own = c.engine->own_step_seconds()) return *own;
   const double wall = seconds_since(c.harness_start);
   return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;
 }
@@ -143,12 +145,11 @@ bool advance(RunContext& c, long k) {
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
   window(c, k);
-  if (c.options.cost_limit_s && k % kCostCheckSteps == 0)
-    if (const double spent = engine_cpu_seconds(c); spent > *c.options.cost_limit_s)
+  if (const auto& limit = c.options.cost_limit; limit && k % kCostCheckSteps == 0)
+    if (const double spent = engine_cpu_seconds(c); spent > limit->seconds)
       return stop(c, RunStatus::over_cost, k,
-                  fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), the cost of a cheaper "
-                              "configuration",
-                              *c.options.cost_limit_s, k, c.state.t));
+                  fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit->seconds, k,
+                              c.state.t, limit->what));
   if (k % c.every == 0 || k == r.steps) {
     sample(c, k);
     if (const auto why = c.metrics->stop_after_sample())

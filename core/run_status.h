@@ -16,8 +16,8 @@ enum class RunStatus {
   timed_out,    // its child process gave no result within the time limit and was killed
   missed,       // stopped where a term of the spec it was asked to meet could no longer be met
                 // (RunOptions::stop_on_miss; Result::error names the term, its figure and the time)
-  over_cost,    // stopped where its engine time passed what it was allowed (RunOptions::cost_limit_s):
-                // a configuration already found costs less
+  over_cost,    // stopped where its engine time passed what it was allowed (RunOptions::cost_limit):
+                // a configuration already found costs less, or the search's ceiling
 };
 
 // The text in results' JSON and in tables: the enumerator's name, except "timed out" (a space, as

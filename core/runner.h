@@ -23,7 +23,7 @@ inline constexpr const char* kStrideNote = "tunnelling judged on samples";
 // times smaller than at dt, as Erez, Tassa and Todorov (ICRA 2015) took their reference runs.
 inline constexpr int kConvergedSubsteps = 64;
 
-// How often a run with RunOptions::cost_limit_s reads the CPU clock (a system call): every this many
+// How often a run with RunOptions::cost_limit reads the CPU clock (a system call): every this many
 // steps.
 inline constexpr long kCostCheckSteps = 64;
 
@@ -57,9 +57,14 @@ struct RunOptions {
     std::string checkpoint;
   } window;
   // Stop the run (RunStatus::over_cost) once the engine's CPU time (Result::engine_cpu_s, read
-  // every kCostCheckSteps steps) passes this (s); none: no limit. A search sets it to the whole-run
-  // time of the cheapest configuration it has found, which a costlier one cannot beat.
-  std::optional<double> cost_limit_s;
+  // every kCostCheckSteps steps) passes `seconds`; none: no limit. A search sets it to the whole-run
+  // time of the cheapest configuration it has found, which a costlier one cannot beat, or to its
+  // ceiling; `what` names that cost in the run's message.
+  struct CostLimit {
+    double seconds = 0;
+    std::string what;
+  };
+  std::optional<CostLimit> cost_limit;
   // Where the run's last good state is copied at its end (a run in this process only); null: nowhere.
   State* last_state = nullptr;
   // Called now and then with (steps done, steps total), for progress on long runs.

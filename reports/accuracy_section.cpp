@@ -75,6 +75,9 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     md += fmt::format(" Each search's budget: {:g} runs of the scene at dt ({:.3g} ball steps); a try stopped where "
                       "a term that only grows passed its bound.",
                       m.budget_runs, m.budget_runs * double(m.run_ball_steps));
+  if (m.ceiling_ns > 0)
+    md += fmt::format(" Ceiling: a try stopped once its CPU time passed {:g}x our solver's cost ({} ns), searched first.",
+                      m.ceiling, cost_text(m.ceiling_ns));
   const auto recorded = [&](const char* key) {
     return m.context.is_object() ? m.context.value(key, std::string("(not recorded)")) : std::string("(not recorded)");
   };
@@ -90,6 +93,10 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
                         label, cost_text(oc.cost_ns), cheaper_text(ext->cost_ns / oc.cost_ns),
                         run_label(ext->engine, ext->profile), cost_text(ext->cost_ns),
                         configuration_text(m.tries[ext->found]));
+    else if (const auto at_least = ratio_at_least(m, oc))
+      md += fmt::format("- **{}** costs {} ns: {} than every external engine (each stopped at the ceiling or did not "
+                        "meet the spec).\n",
+                        label, cost_text(oc.cost_ns), at_least_text(*at_least));
     else
       md += fmt::format("- **{}** costs {} ns; no external engine met the spec.\n", label, cost_text(oc.cost_ns));
   }
@@ -121,7 +128,9 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   if (oc.best < 0) return "no configuration ran";
   const MatchTry& b = m.tries[oc.best];
   const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
-  const std::string stop = oc.stopped.find("budget") != std::string::npos ? ", out of budget" : "";
+  const std::string stop = oc.stop == SearchStop::budget    ? ", out of budget"
+                           : oc.stop == SearchStop::ceiling ? fmt::format(", over the ceiling ({} ns)", cost_text(m.ceiling_ns))
+                                                            : "";
   // A try stopped where it missed: when it passed its bound.
   const double duration = m.n > 0 ? double(m.run_ball_steps) / m.n * m.dt : 0;
   const std::string when = b.status == RunStatus::missed && duration > 0
@@ -144,6 +153,8 @@ std::string cheaper_text(double ratio) {
   return ratio >= 1 ? fmt::format("**{} cheaper**", ratio_text(ratio))
                     : fmt::format("**{} costlier**", ratio_text(1 / ratio));
 }
+
+std::string at_least_text(double ratio) { return fmt::format("**over {} cheaper**", ratio_text(ratio)); }
 
 std::string accuracy_heading(const std::string& scene) { return fmt::format("Equal accuracy: `{}`", scene); }
 

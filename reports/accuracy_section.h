@@ -2,6 +2,7 @@
 // The report's equal-accuracy section (from results/match-SCENE.json, `ballbench match`): per
 // scene, each engine and profile's cheapest configuration that meets the scene's spec, our
 // solver's ratio to the cheapest external engine, and the work-precision front of every try.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,9 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc);
 
 // "**48x cheaper**" for the other's cost over ours at 48, "**3.0x costlier**" at 1/3.
 std::string cheaper_text(double ratio);
+
+// "**over 50x cheaper**": ratio_at_least as the tables print it.
+std::string at_least_text(double ratio);
 
 // The heading of a scene's equal-accuracy section and its anchor (GitHub's rule: lower case, spaces
 // to '-', punctuation dropped), for links from the summary.

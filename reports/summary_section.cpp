@@ -64,7 +64,14 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
         "closed forms; [the terms](../scenarios/README.md#accuracy)), and each engine and profile's cheapest configuration that meets it "
         "(its step size dt/2^k and its own knobs, found by `ballbench match` within a budget of work, so the same on any machine). Cost is the "
         "engine's own step time per ball per scene step, each found configuration timed alone (the median of "
-        "three windows of its run).\n\n";
+        "three windows of its run).";
+  double ceiling = 0;
+  for (const MatchResult& m : in.matches) ceiling = std::max(ceiling, m.ceiling_ns > 0 ? m.ceiling : 0.0);
+  if (ceiling > 0)
+    md += fmt::format(" A try stops once it costs {:g} times our solver's cost (the ceiling): an engine past it "
+                      "cannot be the cheapest and is not searched to its end.",
+                      ceiling);
+  md += "\n\n";
   md += "| scene (class) | spec | cheapest external engine that meets it | ours | ours against it | most accurate at "
         "the scene's dt |\n|---|---|---|---|---|---|\n";
   std::vector<std::string> misses;
@@ -74,6 +81,7 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
     std::string ratio = "n/a";
     if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
+    else if (const auto at_least = ours ? ratio_at_least(m, *ours) : std::nullopt) ratio = at_least_text(*at_least);
     else if (ours) ratio = "undecided", undecided = true;
     else if (ext) ratio = "ours did not meet it";
     md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
@@ -92,7 +100,8 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
           "targets-stand) holds those measured.\n";
   if (!misses.empty())
     md += fmt::format("\nDid not meet the spec at any configuration tried (the nearest miss; \"out of budget\": the "
-                      "search's work budget ran out first):\n\n{}\n",
+                      "search's work budget ran out first; \"over the ceiling\": its tries passed a multiple of our "
+                      "solver's cost and were stopped there):\n\n{}\n",
                       fmt::join(misses, "\n"));
   for (const Figure& f : figures)
     if (f.kind == "fronts") md += fmt::format("\n![every scene's work-precision front]({})\n\n*{}*\n", f.file, f.caption);

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "conformance.h"
 #include "registry.h"
 #include "scene_loader.h"
 
@@ -58,30 +59,9 @@ radius = 0.1
                      "wall.toml");
 }
 
-// The friction coefficient and inertia factor an engine applies, measured on slide-to-roll (a ball
-// of radius 0.25 sliding on the floor at v0 = 3 m/s, friction 0.5, g 9.81): while it slides,
-// friction slows it at mu g (from the speeds after steps 3 and 13: 0.03 and 0.13 s, before it rolls
-// at 0.17 or 0.20 s); rolling, it keeps v0 / (1 + k), so k = v0 / v_final - 1.
-struct FrictionCalibration {
-  double mu, k;
-};
-
-// Runs slide-to-roll `s` (its inertia set by the caller) on `e` to its end. The friction
-// coefficient is the deceleration between steps 3 and 13 over g (the ball slides until ~step 20);
-// k is what the final rolling speed v0 / (1 + k) gives.
-inline FrictionCalibration measure_slide(Engine& e, const Scene& s) {
-  constexpr long kEarly = 3, kLate = 13;
-  State st;
-  double v_early = 0, v_late = 0;
-  for (long k = 1; k <= s.steps(); ++k) {
-    e.step(s.dt);
-    e.read(st);
-    if (k == kEarly) v_early = st.vel(0, 0);
-    if (k == kLate) v_late = st.vel(0, 0);
-  }
-  const double g = s.gravity.norm(), v0 = s.initial.vel(0, 0);
-  return {(v_early - v_late) / ((kLate - kEarly) * s.dt * g), v0 / st.vel(0, 0) - 1.0};
-}
+// The friction coefficient and inertia factor an engine applies, measured on slide-to-roll
+// (conformance.h's measure_slide).
+using FrictionCalibration = SlideMeasure;
 
 inline FrictionCalibration measure_friction(const std::string& engine, const std::string& profile, Inertia inertia) {
   Scene s = load_scene("slide-to-roll");

@@ -3,12 +3,14 @@
 // scenes written as data (`ballbench settle`).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
 #include <fmt/format.h>
 
 #include "small_pile.h"
+#include "input_error.h"
 #include "match.h"
 #include "registry.h"
 #include "runner.h"
@@ -122,6 +124,68 @@ TEST(MatchWork, TheBudgetIsWorkAndStopsTheSameTries) {
     EXPECT_EQ(small.tries[i].halvings, large.tries.at(i).halvings);
     EXPECT_EQ(small.tries[i].met, large.tries[i].met);
   }
+}
+
+// The ceiling: our solver's default profile searches first, and every other try stops once its CPU
+// time passes the ceiling's multiple of its cost. Far above every engine's cost it changes no try;
+// below them it stops each search there, says so, and the ratio reads as a lower bound.
+TEST(MatchWork, TheCeilingStopsTriesPastAMultipleOfOurCost) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o = small_search(scene);
+  o.isolation.enabled = false;
+  o.knobs = false;
+  o.profile = "default,stock";
+  const std::vector<const EngineEntry*> engines{&find_engine("box2d"), &find_engine("home")};
+  const MatchResult none = cli::run_match(scene, engines, o, {});
+  o.ceiling = 1e6;
+  const MatchResult high = cli::run_match(scene, engines, o, {});
+  // Our solver searched first; the tries and findings otherwise the same.
+  ASSERT_FALSE(high.tries.empty());
+  EXPECT_EQ(high.outcomes.size(), 2u);
+  std::vector<std::string> a = tried(none), b = tried(high);
+  std::sort(a.begin(), a.end()), std::sort(b.begin(), b.end());
+  EXPECT_EQ(a, b);
+  const auto ours = std::find_if(high.outcomes.begin(), high.outcomes.end(),
+                                 [](const MatchOutcome& oc) { return oc.engine == "home"; });
+  ASSERT_NE(ours, high.outcomes.end());
+  ASSERT_TRUE(ours->reached);
+  EXPECT_DOUBLE_EQ(high.ceiling_ns, 1e6 * high.tries[ours->found].cost_ns);
+
+  o.ceiling = 1e-9;  // below any cost: each box2d try stops at its first cost check, or misses first
+  const MatchResult low = cli::run_match(scene, engines, o, {});
+  bool over = false;
+  for (const MatchTry& t : low.tries) {
+    if (t.engine != "box2d") continue;
+    EXPECT_NE(t.status, RunStatus::ok) << t.why_not;
+    if (t.status == RunStatus::over_cost) {
+      over = true;
+      EXPECT_NE(t.why_not.find("ceiling"), std::string::npos) << t.why_not;
+      EXPECT_LE(std::lround(t.done * double(scene.steps() << t.halvings)), kCostCheckSteps);
+    }
+  }
+  EXPECT_TRUE(over);
+  for (const MatchOutcome& oc : low.outcomes)
+    if (oc.engine == "box2d") {
+      EXPECT_FALSE(oc.reached);
+      EXPECT_EQ(oc.stop, SearchStop::ceiling);
+      EXPECT_NE(oc.stopped.find("the ceiling (1e-09x"), std::string::npos) << oc.stopped;
+    } else {
+      ASSERT_TRUE(oc.reached);
+      const auto at_least = ratio_at_least(low, oc);
+      ASSERT_TRUE(at_least);
+      EXPECT_DOUBLE_EQ(*at_least, low.ceiling_ns / oc.cost_ns);
+    }
+  // The stop and the ceiling read back from the results file, every try written.
+  const auto json = std::filesystem::temp_directory_path() / "ballbench-ceiling.json";
+  write_match_files(low, json.string(), json.string() + ".csv");
+  const MatchResult back = read_match_file(json.string());
+  std::filesystem::remove(json), std::filesystem::remove(json.string() + ".csv");
+  EXPECT_EQ(back.tries.size(), low.tries.size());
+  EXPECT_EQ(back.ceiling_ns, low.ceiling_ns);
+  EXPECT_EQ(back.outcomes[0].stop, low.outcomes[0].stop);
+
+  // A ceiling is a multiple of our solver's cost: without it, one line.
+  EXPECT_THROW(cli::run_match(scene, {&find_engine("box2d")}, o, {}), InputError);
 }
 
 // The results store: a search run again reads every try and timing it kept and finds the same; a

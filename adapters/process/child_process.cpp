@@ -5,6 +5,7 @@
 #include <pthread.h>
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,6 +18,7 @@
 
 #include <fmt/format.h>
 
+#include "engine_group.h"
 #include "interrupt.h"
 #include "isolated_run.h"
 
@@ -55,7 +57,29 @@ std::vector<std::pair<pid_t, pid_t>>& live_groups() {
 
 void kill_live_groups() {
   for (const auto& [owner, group] : live_groups())
-    if (owner == ::getpid()) ::kill(-group, SIGKILL);
+    if (owner == ::getpid()) kill_engine_group(group);
+}
+
+// This process's environment for the child, with kEngineGroupVariable's entry last: its value, the
+// child's pid, is written by the child into `marker` (sized for any pid) before exec, without
+// allocating, as a fork of a threaded process must.
+std::vector<std::string> child_environment() {
+  std::vector<std::string> env;
+  const std::string name = std::string(kEngineGroupVariable) + "=";
+  for (char** e = environ; e && *e; ++e)
+    if (std::string_view(*e).rfind(name, 0) != 0) env.emplace_back(*e);
+  env.push_back(name + std::string(20, '\0'));
+  return env;
+}
+
+// `pid` in decimal at `out`, NUL-terminated (async-signal-safe).
+void write_pid(char* out, pid_t pid) {
+  char digits[20];
+  int n = 0;
+  do digits[n++] = char('0' + pid % 10), pid /= 10;
+  while (pid > 0);
+  while (n > 0) *out++ = digits[--n];
+  *out = '\0';
 }
 
 }  // namespace
@@ -73,6 +97,11 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   std::vector<char*> args;
   for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
   args.push_back(nullptr);
+  std::vector<std::string> env = child_environment();
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  char* marker = env.back().data() + std::string_view(kEngineGroupVariable).size() + 1;
   const pid_t parent = ::getpid();
   std::fflush(nullptr);
   const pid_t pid = ::fork();
@@ -94,9 +123,11 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     // a step boundary, and not the engine, which must still answer until then (Node resets an
     // ignored SIGINT at start-up, so ignoring it would not do).
     ::setpgid(0, 0);
+    // Everything it starts carries its group in the environment (engine_group.h).
+    write_pid(marker, ::getpid());
     int e = 0;
     if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) e = errno;
-    if (e == 0) ::execvp(args[0], args.data()), e = errno;
+    if (e == 0) ::execvpe(args[0], args.data(), envp.data()), e = errno;
     [[maybe_unused]] const ssize_t w = ::write(status[1], &e, sizeof e);
     ::_exit(127);
   }
@@ -120,6 +151,10 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
                                         cwd.empty() ? "" : fmt::format(" in {}", cwd), std::strerror(e)));
   }
   ::fcntl(err_, F_SETFL, O_NONBLOCK);
+  // Readable once the child has exited, so its end is seen at once even while a process it started
+  // holds its output open (Linux 5.3; without it, the end of output or the time limit tells).
+  exit_fd_ = static_cast<int>(::syscall(SYS_pidfd_open, pid_, 0));
+  if (exit_fd_ >= 0) ::fcntl(exit_fd_, F_SETFD, FD_CLOEXEC);
   static const bool at_exit = std::at_quick_exit(kill_live_groups) == 0;
   (void)at_exit;
   live_groups().emplace_back(owner_, pid_);
@@ -128,7 +163,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
 
 ChildProcess::~ChildProcess() {
   if (owner_ != ::getpid()) {  // a fork's copy: the child belongs to the process that started it
-    close_fd(in_), close_fd(out_), close_fd(err_);
+    close_fd(in_), close_fd(out_), close_fd(err_), close_fd(exit_fd_);
     return;
   }
   close_fd(in_);
@@ -142,11 +177,12 @@ ChildProcess::~ChildProcess() {
       }
     }
   }
-  // What the engine started in its process group (a helper that kept its output open) ends with it.
-  if (pid_ > 0) ::kill(-pid_, SIGKILL);
+  // What the engine started (a helper that kept its output open, in a session of its own or not)
+  // ends with it.
+  if (pid_ > 0) kill_engine_group(pid_);
   std::erase(live_groups(), std::pair{owner_, pid_});
   if (pid_ > 0) note_engine_group(pid_, false);
-  close_fd(out_), close_fd(err_);
+  close_fd(out_), close_fd(err_), close_fd(exit_fd_);
 }
 
 bool ChildProcess::usable() const { return owner_ == ::getpid() && !failed_ && !exited_; }
@@ -198,11 +234,23 @@ void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, siz
                                                        : std::string("within the time limit")));
       throw failure(fmt::format("sent no {} within the time limit", waiting_for));
     }
-    pollfd fds[2] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}};
-    const int ready = ::poll(fds, 2, ms_until(pause_end));
+    pollfd fds[3] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}, {exit_seen_ ? -1 : exit_fd_, POLLIN, 0}};
+    const int ready = ::poll(fds, 3, ms_until(pause_end));
     if (ready < 0 && errno != EINTR) throw failure(fmt::format("cannot be read ({})", std::strerror(errno)));
     if (ready <= 0) continue;
     if (fds[1].revents) drain_stderr();
+    if (fds[2].revents && !fds[0].revents) {
+      // It exited with nothing more to read, its output perhaps held open by a process it started.
+      exit_seen_ = true;
+      pollfd more{out_, POLLIN, 0};
+      if (::poll(&more, 1, 0) > 0) continue;
+      while (!exited_ && ::waitpid(pid_, &wait_status_, 0) < 0 && errno == EINTR) {
+      }
+      exited_ = true;
+      drain_stderr();
+      if (block_bytes > 0 && !inbox_.empty()) throw failure(fmt::format("exited after {}", short_by()));
+      throw failure(fmt::format("exited before sending a {}", waiting_for));
+    }
     if (!fds[0].revents) continue;
     char buf[1 << 16];
     const ssize_t n = ::read(out_, buf, sizeof buf);

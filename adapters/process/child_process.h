@@ -66,6 +66,8 @@ class ChildProcess {
   pid_t pid_ = -1;
   pid_t owner_ = -1;  // the process that started it
   int in_ = -1, out_ = -1, err_ = -1;
+  int exit_fd_ = -1;    // a pidfd of the child: readable once it has exited (-1: none)
+  bool exit_seen_ = false;  // exit_fd_ said it exited
   bool failed_ = false, exited_ = false;
   int wait_status_ = 0;
   std::string inbox_;   // stdout read but not yet taken

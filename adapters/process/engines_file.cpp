@@ -47,6 +47,7 @@ std::vector<ProcessEngineSpec> read_engines_file(const std::string& path) {
     ProcessEngineSpec spec;
     spec.cwd = folder;
     spec.source = where(path, n);
+    spec.file = path;
     for (const auto& [key, value] : *t) {
       const std::string k(key.str()), at = where(path, value);
       if (k == "name") {

@@ -15,6 +15,7 @@ struct ProcessEngineSpec {
   std::string cwd;                   // folder the command runs in ("" = this process's)
   double timeout_s = 60;             // the longest wait for any one reply (s); a hang past it is an error
   std::string source;                // where it was named, for messages: "engines.toml:12", "--engine"
+  std::string file;                  // the engines file that names it, as given ("" for `process:CMD`)
 };
 
 // Starts the command, asks for its handshake, and builds the entry. Never throws for what the

@@ -81,6 +81,11 @@ void add_match(CLI::App& app) {
                   "ball steps each; a try at dt/2^k costs 2^k, one stopped early its share): the same tries on any "
                   "machine, loaded or not (default 400)")
       ->check(kPositiveNumber);
+  cmd->add_option("--ceiling", a->options.ceiling,
+                  "stop every try once its CPU time passes this many times our solver's: home's default profile is "
+                  "searched first, and an engine that costs more is reported as over the ceiling instead of searched "
+                  "to its end (default: none)")
+      ->check(kPositiveNumber);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
                   "at its middle; the median is reported (default 3; 0: its own run's time)")

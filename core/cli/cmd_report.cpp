@@ -278,8 +278,16 @@ void report(const ReportArgs& a) {
     // points is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s) or
     // Open MPI and thousands of DEM sub-steps (LAMMPS), hundreds of times over. Their scene
     // tables, calibration and benchmarks have every engine.
-    std::vector<const EngineEntry*> swept = engines;
-    if (!suite.costly_engines) std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
+    std::vector<const EngineEntry*> swept = engines, matched = engines;
+    for (const std::string& name : suite.match_costly_engines)
+      if (!contains(engine_names(), name))
+        throw InputError(fmt::format("the suite's match_costly_engines: unknown engine '{}'", name));
+    if (!suite.costly_engines) {
+      std::erase_if(swept, [](const EngineEntry* e) { return e->info.costly_runs; });
+      std::erase_if(matched, [&](const EngineEntry* e) {
+        return e->info.costly_runs && !contains(suite.match_costly_engines, e->info.name);
+      });
+    }
     Isolation isolation;
     isolation.timeout_s = suite.timeout_s;
     const TryStore store(a.store, a.fresh);
@@ -320,6 +328,7 @@ void report(const ReportArgs& a) {
       MatchOptions o;
       o.spec = scene_spec(scene);
       o.budget_runs = suite.match_budget;
+      o.ceiling = suite.match_ceiling;
       o.max_halvings = suite.match_max_halvings;
       o.store = &store;
       o.jobs = std::max(1, int(std::thread::hardware_concurrency()));
@@ -327,7 +336,7 @@ void report(const ReportArgs& a) {
       o.reference = reference_engine();
       o.converged_reference = converged_reference_engine();
       o.quiet = a.quiet;
-      const MatchResult m = run_match(scene, swept, o, run_context());
+      const MatchResult m = run_match(scene, matched, o, run_context());
       write_match_files(m, path, fmt::format("{}/match-{}.csv", results_dir, name));
       stop_if_interrupted();
       progress_line("matched {}\n", name);

@@ -18,6 +18,7 @@ void add_match(CLI::App& app);
 void add_merge(CLI::App& app);
 void add_view(CLI::App& app);
 void add_settle(CLI::App& app);
+void add_conform(CLI::App& app);
 
 // Every command's --quiet, declared here once: no progress on stderr (errors, and what a command
 // skips or leaves out, are still said).

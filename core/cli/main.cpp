@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   ballbench::cli::add_merge(app);
   ballbench::cli::add_view(app);
   ballbench::cli::add_settle(app);
+  ballbench::cli::add_conform(app);
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::CallForHelp& e) {

@@ -32,6 +32,7 @@
 #include "scene_loader.h"
 #include "scene_writer.h"
 #include "shard_roll.h"
+#include "shell_word.h"
 #include "spec_verdict.h"
 #include "sweep_result.h"
 
@@ -69,12 +70,15 @@ double cost_per_scene_step(double engine_s, const Scene& scene) {
   return engine_s * 1e9 / (std::max(1, scene.n()) * double(std::max(1L, scene.steps())));
 }
 
-std::string run_command(const Scene& scene, const MatchTry& t, const MatchOptions& o) {
+std::string run_command(const Scene& scene, const EngineEntry& e, const MatchTry& t, const MatchOptions& o) {
   // A built-in scene by its name, any other by its file; the step in the fewest digits that read
   // back as it (fmt's shortest round trip).
   const bool builtin = scene.source == scenario_dir() + "/" + scene.name + ".toml";
-  std::string cmd = fmt::format("ballbench run --scene {} --engine {} --profile {} --dt {}",
-                                builtin || scene.source.empty() ? scene.name : scene.source, t.engine, t.profile, t.dt);
+  std::string cmd = "ballbench run";
+  // An engine of the user's own engines file is known only with it.
+  if (!e.engines_file.empty()) cmd += " --engines " + shell_word(e.engines_file);
+  cmd += fmt::format(" --scene {} --engine {} --profile {} --dt {}",
+                     shell_word(builtin || scene.source.empty() ? scene.name : scene.source), t.engine, t.profile, t.dt);
   if (!o.spec.needs_reference()) cmd += " --no-reference";
   if (!o.spec_texts.empty()) cmd += fmt::format(" --spec {}", fmt::join(o.spec_texts, ","));
   // Judged at the scene's step times, as the search judged it.
@@ -117,7 +121,7 @@ class Search {
     MatchOutcome oc;
     oc.engine = e_.info.name, oc.profile = profile_, oc.role = role_name(e_.info.role);
     int met_at = -1;
-    for (size_t c = 0; c < configs_.size() && oc.stopped.empty(); ++c) {
+    for (size_t c = 0; c < configs_.size() && oc.stop == SearchStop::none; ++c) {
       Ladder l;
       l.first = c == 0 || met_at < 0 ? 0 : std::max(0, met_at - 2);
       l.last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
@@ -125,11 +129,20 @@ class Search {
       if (found >= 0 && c == 0) met_at = tries[found].halvings;
     }
     oc.reached = oc.found >= 0;
-    if (oc.reached) oc.stopped.clear();
-    else if (oc.stopped.empty()) oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
+    if (oc.reached) {
+      oc.stop = SearchStop::none, oc.stopped.clear();
+    } else if (oc.stop == SearchStop::none && hit_ceiling_) {
+      oc.stop = SearchStop::ceiling;
+      oc.stopped = fmt::format("the ceiling ({:g}x our solver's cost: {} ns)", o_.ceiling, cost_text(*ceiling_ns_));
+    } else if (oc.stop == SearchStop::none) {
+      oc.stop = SearchStop::finest_step, oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
+    }
     oc.work = used_;
     return oc;
   }
+
+  // Every try of this search stops once its CPU time passes this cost (ns per ball per scene step).
+  void set_ceiling(double ns) { ceiling_ns_ = ns; }
 
   const EngineEntry& entry() const { return e_; }
   // The store key of try `index` of this search.
@@ -151,8 +164,18 @@ class Search {
   // meets, then back coarser until a step does not meet. The coarsest step that met, or -1.
   int climb(size_t c, Ladder& l, MatchOutcome& oc) {
     int k = l.first, met = -1;
-    while (k >= l.first && k <= l.last && oc.stopped.empty()) {
+    while (k >= l.first && k <= l.last && oc.stop == SearchStop::none) {
+      // A step its coarser try's cost already puts well past the ceiling is not run.
+      if (const auto projected = projected_cost_ns(l, k);
+          projected && ceiling_ns_ && *projected > kCeilingProjectionMargin * *ceiling_ns_) {
+        l.tried[k] = int(tries.size());
+        tries.push_back(projected_over_ceiling(configs_[c], k, *projected));
+        ++oc.tries;
+        hit_ceiling_ = true;
+        break;
+      }
       if (const double need = double(1L << k); used_ + need > o_.budget_runs) {
+        oc.stop = SearchStop::budget;
         oc.stopped = fmt::format("the budget ({:g} runs at dt, {:.3g} ball steps)", o_.budget_runs,
                                  o_.budget_runs * double(scene_.n()) * double(scene_.steps()));
         break;
@@ -163,7 +186,8 @@ class Search {
       ++oc.tries;
       oc.stored += tr.stored;
       oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
-      if (interrupt_signal()) oc.stopped = "an interrupt";
+      if (interrupt_signal()) oc.stop = SearchStop::interrupt, oc.stopped = "an interrupt";
+      if (tr.status == RunStatus::over_cost && ceiling_binds(configs_[c])) hit_ceiling_ = true;
       // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
       // a path that has none): it is never a finding, at any step.
       // (Whole runs only: two runs stopped where they missed are equal only up to that step.)
@@ -195,6 +219,32 @@ class Search {
     return met;
   }
 
+  // The cost (ns per ball per scene step) of a whole run at dt / 2^k, from the finest completed or
+  // missed try of this configuration before it: its CPU time per step made, twice per halving
+  // since. A pile's steps grow costlier as it settles, so this errs low.
+  std::optional<double> projected_cost_ns(const Ladder& l, int k) const {
+    for (auto it = l.tried.rbegin(); it != l.tried.rend(); ++it) {
+      if (it->first >= k) continue;
+      const MatchTry& t = tries[it->second];
+      if ((t.status != RunStatus::ok && t.status != RunStatus::missed) || !(t.done > 0) || !(t.cost_ns > 0))
+        return std::nullopt;
+      return t.cost_ns / t.done * double(1L << (k - it->first));
+    }
+    return std::nullopt;
+  }
+
+  // A try not run: its projected cost is past the ceiling.
+  MatchTry projected_over_ceiling(const Config& c, int k, double projected_ns) const {
+    MatchTry t;
+    t.engine = e_.info.name, t.profile = profile_, t.knob = c.knob, t.value = c.value;
+    t.halvings = k, t.dt = scene_.dt / double(1 << k);
+    t.status = RunStatus::over_cost, t.done = 0, t.work = 0;
+    t.why_not = t.error = fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x the match's "
+                                      "ceiling ({} ns)",
+                                      cost_text(projected_ns), kCeilingProjectionMargin, cost_text(*ceiling_ns_));
+    return t;
+  }
+
   // The next step after a try at k that did not meet: k + 1, or where two completed tries of this
   // configuration predict the miss falls to 1 (its log against the step's, a straight line).
   int next_step(const Ladder& l, int k) const {
@@ -222,11 +272,7 @@ class Search {
     r.metrics.sample_every = 1 << k;
     r.series_points = 0;
     r.stop_on_miss = &o_.spec;
-    // A knob's run stops once it has cost what it must stay below to replace the configuration
-    // found (kKnobCostMargin of its whole run): the same comparison, made before the end.
-    if (!c.knob.empty() && found_cost_ns_)
-      r.cost_limit_s = kKnobCostMargin * *found_cost_ns_ * 1e-9 * double(std::max(1, scene_.n())) *
-                       double(std::max(1L, scene_.steps()));
+    r.cost_limit = cost_limit(c);
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
     // The window a found configuration is timed over: from the middle of its run, at a scene step.
     const long steps = scene_.steps() << k;
@@ -235,6 +281,28 @@ class Search {
                                 std::max(1L, steps - r.window.start));
     r.window.checkpoint = checkpoint_path(index);
     return r;
+  }
+
+  // A knob's run stops once it has cost what it must stay below to replace the configuration found
+  // (kKnobCostMargin of its whole run): the same comparison, made before the end. Any run stops at
+  // the search's ceiling. Both are costs per ball per scene step, over the whole run here.
+  std::optional<double> knob_limit_ns(const Config& c) const {
+    if (c.knob.empty() || !found_cost_ns_) return std::nullopt;
+    return kKnobCostMargin * *found_cost_ns_;
+  }
+  bool ceiling_binds(const Config& c) const {
+    const auto knob = knob_limit_ns(c);
+    return ceiling_ns_ && (!knob || *ceiling_ns_ < *knob);
+  }
+  std::optional<RunOptions::CostLimit> cost_limit(const Config& c) const {
+    const auto knob = knob_limit_ns(c);
+    if (!knob && !ceiling_ns_) return std::nullopt;
+    const bool ceiling = ceiling_binds(c);
+    const double ns = ceiling ? *ceiling_ns_ : *knob;
+    return RunOptions::CostLimit{
+        ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
+        ceiling ? fmt::format("the match's ceiling ({:g}x our solver's cost)", o_.ceiling)
+                : "the cost of a cheaper configuration"};
   }
 
   // What decides a try's outcome: its key in the results store.
@@ -255,11 +323,18 @@ class Search {
     const auto kept = o_.store ? o_.store->find(key) : std::nullopt;
     const bool reusable =
         kept && (kept->at("try").at("status") != run_status_text(RunStatus::over_cost) ||
-                 (r.cost_limit_s && *r.cost_limit_s <= kept->value("cost_limit_s", 0.0)));
+                 (r.cost_limit && r.cost_limit->seconds <= kept->value("cost_limit_s", 0.0)));
     MatchTry t;
     if (reusable) {
       t = match_try_from_json(kept->at("try"));
       t.stored = true;
+      // Measured under a higher limit or none: what this limit would have done to it.
+      const double run_s = t.cost_ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps()));
+      if (r.cost_limit && t.status == RunStatus::ok && run_s > r.cost_limit->seconds) {
+        t.status = RunStatus::over_cost, t.met = false;
+        t.why_not = t.error = fmt::format("over cost: its engine time of {:.3g} s passes {:.3g} s, {}", run_s,
+                                          r.cost_limit->seconds, r.cost_limit->what);
+      }
       last_trajectory_ = kept->value("trajectory", "");
       if (kept->contains("window")) {
         write_file_atomically(r.window.checkpoint, kept->at("window").at("scene").get<std::string>(),
@@ -306,7 +381,7 @@ class Search {
     } else {
       std::filesystem::remove(r.window.checkpoint, ec);
     }
-    if (res.status == RunStatus::over_cost) kept["cost_limit_s"] = *r.cost_limit_s;
+    if (res.status == RunStatus::over_cost) kept["cost_limit_s"] = r.cost_limit->seconds;
     // What the clock or the user ended is not kept: another search would not end it alike.
     const bool keep = decided_by_states || res.status == RunStatus::over_cost;
     if (o_.store && keep && !interrupt_signal()) o_.store->keep(store_key(c, k), kept);
@@ -324,6 +399,8 @@ class Search {
   const MatchOptions& o_;
   double used_ = 0;                              // work so far, in runs of the scene at dt
   std::optional<double> found_cost_ns_;          // the cost of the configuration found so far
+  std::optional<double> ceiling_ns_;             // MatchOptions::ceiling times our solver's cost
+  bool hit_ceiling_ = false;                     // a try stopped at the ceiling
   std::string last_trajectory_;                  // the last try's trajectory checksum
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
 };
@@ -422,36 +499,64 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;
 
   // The searches, dealt out to the shards; each engine's configurations read here, in this thread
-  // (building an engine to read its settings), before any search starts.
+  // (building an engine to read its settings), before any search starts. Under a ceiling, our
+  // solver's default profile searches first (in every shard: the ceiling is a multiple of it).
   std::vector<std::unique_ptr<Search>> searches;
+  std::vector<bool> taken, first;
   size_t item = 0;
   for (const EngineEntry* e : engines)
     for (const std::string& profile : profiles_for(*e, o.profile)) {
-      if (!o.shard.takes(item++)) continue;
+      const bool takes = o.shard.takes(item++);
+      const bool sets_ceiling = o.ceiling > 0 && e->info.role == EngineRole::ours && profile == e->info.profiles.front();
+      if (!takes && !sets_ceiling) continue;
       searches.push_back(std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o));
+      taken.push_back(takes), first.push_back(sets_ceiling);
     }
+  if (o.ceiling > 0 && std::find(first.begin(), first.end(), true) == first.end())
+    throw InputError("--ceiling: a multiple of our solver's cost, and our solver (home) is not among --engine");
   std::vector<std::optional<MatchOutcome>> outcomes(searches.size());
   Progress progress(fmt::format("match {} ({} searches, {} at once)", scene.name, searches.size(),
                                 std::min<size_t>(o.jobs, searches.size())));
   std::mutex done_mutex;
   size_t done = 0;
-  std::atomic<size_t> next{0};
-  const auto worker = [&] {
-    for (size_t i = next++; i < searches.size() && !interrupt_signal(); i = next++) {
-      MatchOutcome oc = searches[i]->run();
-      std::lock_guard lock(done_mutex);
-      outcomes[i] = std::move(oc);
-      if (!o.quiet) progress.update(double(++done) / double(searches.size()));
-    }
+  // Runs the searches whose `phase` is `in_phase`, `o.jobs` at once.
+  const auto run_phase = [&](bool in_phase) {
+    std::vector<size_t> items;
+    for (size_t i = 0; i < searches.size(); ++i)
+      if (first[i] == in_phase) items.push_back(i);
+    std::atomic<size_t> next{0};
+    const auto worker = [&] {
+      for (size_t n = next++; n < items.size() && !interrupt_signal(); n = next++) {
+        MatchOutcome oc = searches[items[n]]->run();
+        std::lock_guard lock(done_mutex);
+        outcomes[items[n]] = std::move(oc);
+        if (!o.quiet) progress.update(double(++done) / double(searches.size()));
+      }
+    };
+    std::vector<std::thread> team;
+    for (int j = 1; j < std::min<int>(o.jobs, int(items.size())); ++j) team.emplace_back(worker);
+    worker();
+    for (auto& t : team) t.join();
   };
-  std::vector<std::thread> team;
-  for (int j = 1; j < std::min<int>(o.jobs, int(searches.size())); ++j) team.emplace_back(worker);
-  worker();
-  for (auto& t : team) t.join();
+  run_phase(true);
+  if (o.ceiling > 0) {
+    std::optional<double> ours;
+    for (size_t i = 0; i < searches.size(); ++i)
+      if (first[i] && outcomes[i] && outcomes[i]->reached) {
+        const double ns = searches[i]->tries[outcomes[i]->found].cost_ns;
+        ours = ours ? std::min(*ours, ns) : ns;
+      }
+    // Where our solver met nothing, nothing is a multiple of its cost: no ceiling.
+    if (ours) {
+      m.ceiling = o.ceiling, m.ceiling_ns = o.ceiling * *ours;
+      for (auto& s : searches) s->set_ceiling(m.ceiling_ns);
+    }
+  }
+  run_phase(false);
 
   // Every search's tries in the order of the searches; then each found configuration timed alone.
   for (size_t i = 0; i < searches.size(); ++i) {
-    if (!outcomes[i]) continue;  // interrupted before it started
+    if (!outcomes[i] || !taken[i]) continue;  // interrupted before it started, or another shard's
     Search& s = *searches[i];
     MatchOutcome oc = std::move(*outcomes[i]);
     const int offset = int(m.tries.size());
@@ -463,7 +568,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
       oc.cost_repeats = {s.tries[oc.found].cost_ns}, oc.cost_ns = s.tries[oc.found].cost_ns;
     }
     const int shown = oc.reached ? oc.found : oc.best;
-    if (shown >= 0) oc.command = run_command(scene, s.tries[shown], o);
+    if (shown >= 0) oc.command = run_command(scene, s.entry(), s.tries[shown], o);
     if (oc.found >= 0) oc.found += offset;
     if (oc.best >= 0) oc.best += offset;
     m.tries.insert(m.tries.end(), s.tries.begin(), s.tries.end());
@@ -517,6 +622,10 @@ void print_match(const MatchResult& m, std::optional<double> target) {
     const std::string label = run_label(oc.engine, oc.profile);
     if (!oc.reached)
       fmt::print("{}: did not meet the spec{}\n", label, against_target(std::nullopt));
+    else if (const auto at_least = cheapest ? std::nullopt : ratio_at_least(m, oc))
+      fmt::print("{}: over {:.1f}x cheaper than every external engine (each stopped at the ceiling of {} ns or did "
+                 "not meet the spec){}\n",
+                 label, *at_least, cost_text(m.ceiling_ns), against_target(*at_least));
     else if (!cheapest)
       fmt::print("{}: {} ns; no external engine met the spec{}\n", label, cost_text(oc.cost_ns), against_target(0.0));
     else

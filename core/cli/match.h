@@ -10,7 +10,9 @@
 // term that only grows is past its bound (RunOptions::stop_on_miss), and where two completed tries
 // show how the miss falls with the step, the search jumps to the step they predict and confirms the
 // one coarser. Searches run side by side (`jobs`); each found configuration is then timed alone,
-// over a window of its own run started from the state it saved there.
+// over a window of its own run started from the state it saved there. Under a ceiling (a multiple
+// of our solver's cost) every try stops once it costs more: the question a comparison asks is
+// which engine is cheapest, and an engine at 100x the cheapest need not be searched to its end.
 #include <optional>
 #include <string>
 #include <vector>
@@ -33,6 +35,11 @@ namespace ballbench::cli {
 // step) must not trade places with the CPU time's noise, some 5% under load.
 inline constexpr double kKnobCostMargin = 0.85;
 
+// A try is not run where its coarser try's cost, doubled per halving, projects a whole run past
+// this multiple of the ceiling (MatchOptions::ceiling): the projection errs low on a pile, whose
+// steps grow costlier as it settles, and this margin keeps it from skipping what would pass.
+inline constexpr double kCeilingProjectionMargin = 1.5;
+
 // The window a found configuration is timed over: this fraction of its run, from its middle, and at
 // least kMinWindowSteps of its steps (up to the run's second half): a window of a cheap engine at a
 // coarse step lasts milliseconds, too short to time.
@@ -47,6 +54,10 @@ struct MatchOptions {
   // Work for one engine and profile's search, in runs of the whole scene at its own step (n x steps
   // ball steps each): a try at dt / 2^k costs 2^k of them, a try that stopped early its share.
   double budget_runs = 400;
+  // Every try stops once its CPU time passes this many times the cost of the cheapest configuration
+  // found for our solver's default profile, searched first (0: no ceiling): an engine that costs
+  // more is reported as over the ceiling, not searched to its end.
+  double ceiling = 0;
   int repeats = 3;              // timing runs alone of each found configuration's window
   int jobs = 1;                 // searches at once (tries in child processes; needs isolation)
   const TryStore* store = nullptr;  // tries and timings measured before (null: none)

@@ -10,6 +10,7 @@
 
 #include "data_file.h"
 #include "ensemble.h"
+#include "shell_word.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "isolated_run.h"
@@ -95,11 +96,7 @@ std::string& command_line_store() {
 void set_command_line(int argc, char** argv) {
   std::string& line = command_line_store();
   line.clear();
-  for (int k = 0; k < argc; ++k) {
-    const std::string arg = argv[k];
-    const bool plain = !arg.empty() && arg.find_first_of(" \t'\"$\\;&|<>*?()") == std::string::npos;
-    line += (k ? " " : "") + (plain ? arg : "'" + arg + "'");
-  }
+  for (int k = 0; k < argc; ++k) line += (k ? " " : "") + shell_word(argv[k]);
 }
 
 nlohmann::json run_context() {

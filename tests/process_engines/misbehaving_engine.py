@@ -4,7 +4,9 @@ and at step 3 it does what argv[1] names. For a scene that rotates its states ca
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
 Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-escape" (a name
 with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
-stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 3), "float-t" and "float-t-undeclared" (the time summed in
+stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 3), "helper-session" (the helper in a session of its
+own, out of the engine's process group), "helper-exit" (the engine exits at step 3 while its
+helper holds its stdout), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
 "unsupported" (refuses every scene as unsupported), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
@@ -23,9 +25,10 @@ def send(reply, block=b""):
     out.flush()
 
 
-if mode in ("helper", "helper-hang"):  # starts a helper that keeps stdout open, and says its pid in argv[2]
+if mode in ("helper", "helper-hang", "helper-session", "helper-exit"):
+    # starts a helper that keeps stdout open, and says its pid in argv[2]
     import subprocess
-    helper = subprocess.Popen(["sleep", "600"])
+    helper = subprocess.Popen(["sleep", "600"], start_new_session=(mode == "helper-session"))
     with open(sys.argv[2], "w") as f:
         f.write(str(helper.pid))
 if mode == "no-hello":
@@ -73,12 +76,16 @@ for line in sys.stdin.buffer:
                 sys.exit(3)
             if mode in ("hang", "helper-hang"):
                 time.sleep(3600)
+            if mode == "helper-exit":
+                sys.stderr.write("misbehaving engine: leaving my helper behind\n")
+                sys.stderr.flush()
+                sys.exit(0)
             if mode == "garbage":
                 out.write(b"this is not json\n")
                 out.flush()
                 continue
             if mode in ("short-block", "short-block-alive"):
-                send({"ok": True, "step_s": 0, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, b"\0" * 8)
+                send({"ok": True, "step_s": 1e-7, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, b"\0" * 8)
                 if mode == "short-block-alive":
                     time.sleep(3600)
                 out.close()
@@ -87,7 +94,7 @@ for line in sys.stdin.buffer:
                 block = array.array("d", [0.0] * n)  # every ball called 0
                 for c in ("x", "y", "vx", "vy"):
                     block.extend(balls[c])
-                send({"ok": True, "step_s": 0, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, block.tobytes())
+                send({"ok": True, "step_s": 1e-7, "state": {"n": n, "t": t, "fields": ["id", "x", "y", "vx", "vy"]}}, block.tobytes())
                 continue
             if mode == "error":
                 send({"ok": False, "error": "the solver lost track of ball 7"})
@@ -109,7 +116,10 @@ for line in sys.stdin.buffer:
             block.extend([0.0] * n)
         reply = {"ok": True, "state": {"n": n, "t": t, "fields": fields}}
         if msg["op"] == "step":
-            reply["step_s"] = 1e308 if mode == "huge-step-s" and steps == 3 else 0.0
+            # 100 ns, inside any round trip; at step 3 a step time longer than it, or none at all.
+            reply["step_s"] = 1e-7
+            if steps == 3 and mode in ("huge-step-s", "long-step-s", "zero-step-s"):
+                reply["step_s"] = {"huge-step-s": 1e308, "long-step-s": 1e5, "zero-step-s": 0.0}[mode]
         if mode == "twice" and steps == 3:  # the step answered twice, in one write
             one = json.dumps(reply).encode() + b"\n" + block.tobytes()
             out.write(one + one)
