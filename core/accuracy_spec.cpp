@@ -1,6 +1,7 @@
 #include "accuracy_spec.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -138,6 +139,7 @@ void check_spec_bound(SpecTerm t, double value, const std::string& where) {
 }
 
 void apply_spec_texts(AccuracySpec& spec, const std::vector<std::string>& texts, const std::string& option) {
+  std::vector<std::string> given;
   for (const std::string& text : texts) {
     const auto eq = text.find('=');
     const std::string key = text.substr(0, eq);
@@ -147,20 +149,20 @@ void apply_spec_texts(AccuracySpec& spec, const std::vector<std::string>& texts,
       for (const SpecTermDef& d : spec_terms()) keys.push_back(d.key);
       throw InputError(fmt::format("{} {}: expected KEY=VALUE with KEY one of {}", option, text, fmt::join(keys, ", ")));
     }
+    // One value a term: a second would silently win.
+    if (std::find(given.begin(), given.end(), key) != given.end())
+      throw InputError(fmt::format("{} {}: {} is given twice", option, text, key));
+    given.push_back(key);
     const std::string value = text.substr(eq + 1);
     if (value == "none") {
       spec[*term].reset();
       continue;
     }
+    // A decimal number, all of it: no hexadecimal (std::stod reads "0x10" as 16), no spaces.
     double v = 0;
-    size_t used = 0;
-    try {
-      v = std::stod(value, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != value.size())
-      throw InputError(fmt::format("{} {}: {} is not a number (or `none`)", option, text, value));
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), v, std::chars_format::general);
+    if (value.empty() || error != std::errc() || end != value.data() + value.size())
+      throw InputError(fmt::format("{} {}: {} is not a decimal number (or `none`)", option, text, value));
     check_spec_bound(*term, v, option + " " + text);
     spec[*term] = v;
   }

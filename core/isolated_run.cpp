@@ -71,6 +71,11 @@ void send(int fd, const std::string& text) {
       trajectory.emplace(isolation.trajectory_path, scene.features().rotation, isolation.trajectory_path + ".tmp"),
           options.trajectory = &*trajectory;
     options.progress = [fd](long done, long total) { send(fd, fmt::format("progress {} {}\n", done, total)); };
+    // Its own time limit, at a step boundary, keeps the steps made; the parent's, a grace later,
+    // ends a child stuck inside a step.
+    options.deadline = std::chrono::steady_clock::now() +
+                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                           std::chrono::duration<double>(std::min(isolation.timeout_s, 1e8)));
     const Result r = run_engine(scene, entry, options);
     if (trajectory) trajectory->close();
     // Invalid UTF-8 in an engine's error text must not lose the result: replace it.
@@ -212,6 +217,10 @@ class ChildWatcher {
   std::set<int> engine_groups_;  // the child's engine process groups still live
 };
 
+// How long after its time limit a child is killed: it stops itself at the first step boundary past
+// the limit, so only one stuck inside a step (or an engine's reply) is still running then.
+double stuck_grace_s(double timeout_s) { return std::max(2.0, 0.1 * timeout_s); }
+
 Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
   // Interrupted: the child's own result (status "interrupted", its metrics so far) if it sent one.
@@ -222,7 +231,8 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   }
   if (c.timed_out) {
     r.status = RunStatus::timed_out;
-    r.error = fmt::format("no result within the time limit of {} s{}: killed", timeout_s, after);
+    r.error = fmt::format("no result within the time limit of {} s{} and {:g} s more (stuck in a step): killed",
+                          timeout_s, after, stuck_grace_s(timeout_s));
     return r;
   }
   const int st = c.wait_status;
@@ -301,7 +311,8 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     child_main(fds[1], scene, entry, options, isolation);
   }
   ::close(fds[1]);
-  const ChildOutcome outcome = ChildWatcher(pid, fds[0], isolation.timeout_s, options.progress).watch();
+  const ChildOutcome outcome =
+      ChildWatcher(pid, fds[0], isolation.timeout_s + stuck_grace_s(isolation.timeout_s), options.progress).watch();
   ::close(fds[0]);
   return outcome_to_result(outcome, std::move(r), isolation.timeout_s);
 }

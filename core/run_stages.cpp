@@ -113,6 +113,10 @@ bool advance(RunContext& c, long k) {
     return stop(c, RunStatus::interrupted, k,
                 fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done));
   const auto t0 = Clock::now();
+  if (c.options.deadline && t0 >= *c.options.deadline)
+    return stop(c, RunStatus::timed_out, k,
+                fmt::format("the time limit passed after step {} of {}: stopped there, its figures kept",
+                            r.steps_done, r.steps));
   try {
     c.engine->step(c.scene.dt);
   } catch (const std::exception& e) {

@@ -1,6 +1,7 @@
 #pragma once
 // Runs one engine on one scene: builds it, steps it, times the steps, samples states into metrics.
 #include <cstdint>
+#include <chrono>
 #include <functional>
 #include <string>
 
@@ -65,6 +66,10 @@ struct RunOptions {
     std::string what;
   };
   std::optional<CostLimit> cost_limit;
+  // The run ends at the first step boundary past this time (RunStatus::timed_out), keeping what it
+  // measured (an isolated run's child sets it to its time limit; its parent kills a child stuck in
+  // a step a grace later); none: no limit.
+  std::optional<std::chrono::steady_clock::time_point> deadline;
   // Where the run's last good state is copied at its end (a run in this process only); null: nowhere.
   State* last_state = nullptr;
   // Called now and then with (steps done, steps total), for progress on long runs.

@@ -102,6 +102,24 @@ TEST(SpecTexts, SetAndDropTermsAndRefuseWhatIsNotOne) {
   EXPECT_THROW(apply_spec_texts(s, {"overlap=0.1x"}, "--spec"), InputError);
   EXPECT_THROW(apply_spec_texts(s, {"overlap=nan"}, "--spec"), InputError);
   EXPECT_THROW(apply_spec_texts(s, {"tunnelling=1.5"}, "--spec"), InputError);
+  // Numbers are decimal and whole (std::stod would read 0x10 as 16), and a term is given once.
+  for (const char* bad : {"overlap=0x10", "overlap= 0.1", "overlap=", "overlap=+0.1"}) {
+    try {
+      apply_spec_texts(s, {bad}, "--spec");
+      ADD_FAILURE() << bad << " was taken";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("is not a decimal number"), std::string::npos) << e.what();
+    }
+  }
+  try {
+    apply_spec_texts(s, {"overlap=0.01", "overlap=0.02"}, "--spec");
+    ADD_FAILURE() << "a term given twice was taken";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "--spec overlap=0.02: overlap is given twice");
+  }
+  AccuracySpec e = scene_spec(load_scene("pile"));
+  apply_spec_texts(e, {"overlap=1e-3"}, "--spec");
+  EXPECT_EQ(e[SpecTerm::overlap], 1e-3);
 }
 
 Result ok_run() {

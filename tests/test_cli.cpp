@@ -251,6 +251,12 @@ radius = 0.25
 TEST(Cli, SettingsOfEnginesNotRunAreCheckedToo) {
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set box2d.bogus=1"), "settings.box2d.bogus");
   expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set xyz.a=1"), "--set xyz.KEY: unknown engine");
+  // A spec term the scene cannot measure: refused before any run, naming the fix.
+  expect_one_line_error(cli("run --scene pile --engine home --steps 2 --spec rolling=0.01"),
+                        "--spec rolling: pile has no rolling closed form");
+  // A setting valid for an engine the run does not run would change nothing: refused, not ignored.
+  expect_one_line_error(cli("run --scene seed-box --engine home --steps 2 --set box2d.velocity_iterations=4"),
+                        "--set box2d.velocity_iterations: box2d is not among --engine (home)");
   // A misspelling in the scene file is named by FILE:LINE (the schema example has 24 lines).
   const std::string scene = write_scene("ballbench_bad_setting.toml", std::string(kSchemaExample) + "[settings.ode]\nbogus = 1\n");
   expect_one_line_error(cli("run --scene " + scene + " --engine home --steps 2"), scene + ":26: settings.ode.bogus");

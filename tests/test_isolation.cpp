@@ -29,7 +29,7 @@
 namespace ballbench {
 namespace {
 
-enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin };
+enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin, Slow };
 
 // Balls in free flight, mirrored at the walls (no ball-ball collisions), misbehaving at step `at`.
 class TestEngine : public Engine {
@@ -39,6 +39,7 @@ class TestEngine : public Engine {
     ++k_;
     if (k_ == at_) misbehave();
     if (m_ == Misbehaviour::EnergyGrowth && k_ >= at_) state_.vel *= 2.0;  // kinetic energy x4 per step
+    if (m_ == Misbehaviour::Slow) std::this_thread::sleep_for(std::chrono::milliseconds(100));
     state_.pos += dt * state_.vel;
     state_.t += dt;
     if (box_.kind != ContainerKind::Box) return;
@@ -128,6 +129,17 @@ TEST(Isolation, AHangTimesOutAtTheLimit) {
   const Result r = isolated(test_engine("hang", Misbehaviour::Hang), 1.0);
   EXPECT_EQ(r.status, RunStatus::timed_out);
   EXPECT_NE(r.error.find("time limit of 1 s"), std::string::npos) << r.error;
+}
+
+// A slow engine that still returns from its steps stops at the first step boundary past its time
+// limit, and the steps it made are measured and kept (a hang, stuck in a step, is killed later).
+TEST(Isolation, ASlowRunStopsAtItsTimeLimitKeepingItsSteps) {
+  const Result r = isolated(test_engine("slow", Misbehaviour::Slow), 1.0);
+  EXPECT_EQ(r.status, RunStatus::timed_out);
+  EXPECT_NE(r.error.find("the time limit passed after step"), std::string::npos) << r.error;
+  EXPECT_GT(r.steps_done, 0);
+  EXPECT_LT(r.steps_done, r.steps);
+  EXPECT_EQ(r.metrics.count("samples"), r.steps_done + 1);
 }
 
 TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {

@@ -141,6 +141,11 @@ void run(const RunArgs& a) {
   options.steps = a.steps ? *a.steps : -1;
   for (const auto& s : a.sets) add_setting(options.overrides, s);
   check_settings(scene, options.overrides);
+  // A setting for an engine this run does not run would be ignored: say so instead.
+  for (const auto& [engine, table] : options.overrides.items())
+    if (std::none_of(engines.begin(), engines.end(), [&](const EngineEntry* e) { return e->info.name == engine; }))
+      throw InputError(fmt::format("--set {}.{}: {} is not among --engine ({}), so the setting would change nothing",
+                                   engine, table.empty() ? std::string("KEY") : table.begin().key(), engine, a.engines));
   check_outputs(scene, a);
   check_trajectory_size(scene, engines, a);
   if (!a.no_reference) use_reference(options);

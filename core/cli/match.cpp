@@ -621,7 +621,9 @@ void print_match(const MatchResult& m, std::optional<double> target) {
     if (oc.role != role_name(EngineRole::ours)) continue;
     const std::string label = run_label(oc.engine, oc.profile);
     if (!oc.reached)
-      fmt::print("{}: did not meet the spec{}\n", label, against_target(std::nullopt));
+      fmt::print("{}: did not meet the spec{}{}\n", label,
+                 oc.stopped.empty() ? "" : fmt::format(" (its search stopped at {})", oc.stopped),
+                 against_target(std::nullopt));
     else if (const auto at_least = cheapest ? std::nullopt : ratio_at_least(m, oc))
       fmt::print("{}: over {:.1f}x cheaper than every external engine (each stopped at the ceiling of {} ns or did "
                  "not meet the spec){}\n",
