@@ -519,7 +519,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
                                 std::min<size_t>(o.jobs, searches.size())));
   std::mutex done_mutex;
   size_t done = 0;
-  // Runs the searches whose `phase` is `in_phase`, `o.jobs` at once.
+  // Runs the searches of one phase, `o.jobs` at once: first those that set the ceiling, then the rest.
   const auto run_phase = [&](bool in_phase) {
     std::vector<size_t> items;
     for (size_t i = 0; i < searches.size(); ++i)
