@@ -72,7 +72,8 @@ TEST(Cli, EveryCommandTakesQuiet) {
   for (const char* command : {"run --scene no-such-scene --engine home", "report --engine no-such-engine",
                               "sweep --scene no-such-scene --engine home", "stress --scene no-such-scene --engine home",
                               "match --scene no-such-scene --engine home", "merge --out x no-such-shard.json",
-                              "view no-such-run.json", "regress --baseline no-such-baseline.json"}) {
+                              "view no-such-run.json", "regress --baseline no-such-baseline.json",
+                              "settle --scene no-such-scene --out x.toml", "conform --engine no-such-engine"}) {
     const Outcome o = cli(std::string(command) + " --quiet");
     EXPECT_EQ(o.status, 2) << command << ": " << o.err;
     EXPECT_EQ(o.err.find("--quiet"), std::string::npos) << command << ": " << o.err;
@@ -246,6 +247,14 @@ radius = 0.25
   EXPECT_NE(row("home-seed").find("unsupported"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("it needs friction"), std::string::npos) << o.out;
   for (const char* engine : {"home", "exact", "box2d/tuned"}) EXPECT_NE(row(engine).find(" ok "), std::string::npos) << o.out;
+}
+
+// A count that is not a whole number says so, with the range it must be in (CLI11's own check
+// said "not in range" of 1.5, which is in range).
+TEST(Cli, ACountThatIsNotWholeSaysSo) {
+  for (const char* value : {"1.5", "0x3", "21"})
+    expect_one_line_error(cli(std::string("match --scene seed-box --engine home --max-halvings ") + value),
+                          std::string("--max-halvings: expected a whole number from 0 to 20, got '") + value + "'");
 }
 
 TEST(Cli, SettingsOfEnginesNotRunAreCheckedToo) {

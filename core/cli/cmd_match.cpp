@@ -75,7 +75,7 @@ void add_match(CLI::App& app) {
                   "asks every engine for it (home's default profile builds itself for it)")
       ->delimiter(',');
   cmd->add_option("--max-halvings", a->options.max_halvings, "finest step tried: dt / 2^this (default 6)")
-      ->check(CLI::Range(0, 20));
+      ->check(whole_in_range(0, 20));
   cmd->add_option("--budget", a->options.budget_runs,
                   "work for each engine and profile's search, in runs of the whole scene at its own step dt (n x steps "
                   "ball steps each; a try at dt/2^k costs 2^k, one stopped early its share): the same tries on any "
@@ -89,10 +89,10 @@ void add_match(CLI::App& app) {
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
                   "at its middle; the median is reported (default 3; 0: its own run's time)")
-      ->check(CLI::Range(0, 100));
+      ->check(whole_in_range(0, 100));
   cmd->add_option("--jobs", a->options.jobs,
                   "searches at once (default: the cores); the configurations found are timed alone afterwards")
-      ->check(CLI::Range(1, 256));
+      ->check(whole_in_range(1, 256));
   cmd->add_option("--target", a->target,
                   "a ratio our solver's cost should beat the cheapest external engine's by; the output says whether "
                   "it did and by how much it fell short")

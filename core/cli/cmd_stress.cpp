@@ -62,7 +62,7 @@ void add_stress(CLI::App& app) {
       ->delimiter(',');
   cmd->add_option("--steps", a->options.steps, "steps per run (default 200, at most 1e9)")->check(kStepCount);
   cmd->add_option("--levels", a->options.levels, "doublings tried per knob (default 6: up to 32 x)")
-      ->check(CLI::Range(1, 20));
+      ->check(whole_in_range(1, 20));
   cmd->add_option("--energy-tolerance", a->options.energy_tolerance,
                   "a run fails when its energy is off the reference (or grew) by more than this fraction (default 0.1)")
       ->check(kPositiveNumber);

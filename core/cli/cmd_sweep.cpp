@@ -78,7 +78,7 @@ void add_sweep(CLI::App& app) {
       ->check(kPositiveNumber);
   cmd->add_flag("--no-knobs", a->no_knobs, "vary the step size only, not the engines' own knobs");
   cmd->add_option("--repeats", a->options.repeats, "timing runs per point; the median is reported (default 3)")
-      ->check(CLI::Range(1, 1000));
+      ->check(whole_in_range(1, 1000));
   cmd->add_option("--json", a->json, "JSON output (default sweep-SCENE.json)")->check(kOutputFile);
   cmd->add_option("--csv", a->csv, "CSV output (default: the JSON path with .csv)")->check(kOutputFile);
   cmd->add_option("--timeout", a->options.isolation.timeout_s, "seconds each run may take (default 120)")

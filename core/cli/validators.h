@@ -24,6 +24,21 @@ inline const CLI::Validator kPositiveNumber(
     },
     "POSITIVE", "positive number");
 
+// A whole number from `least` to `most` (CLI11's Range says "not in range" of 1.5 or 0x10).
+inline CLI::Validator whole_in_range(long long least, long long most) {
+  return CLI::Validator(
+      [least, most](std::string& text) -> std::string {
+        char* end = nullptr;
+        errno = 0;
+        const long long v = std::strtoll(text.c_str(), &end, 10);
+        if (end == text.c_str() || *end != '\0' || errno == ERANGE || v < least || v > most)
+          return "expected a whole number from " + std::to_string(least) + " to " + std::to_string(most) + ", got '" +
+                 text + "'";
+        return {};
+      },
+      "INT in [" + std::to_string(least) + " - " + std::to_string(most) + "]", "whole number in range");
+}
+
 // A whole number from 1 to `most`; `too_many` names the cap in the refusal.
 inline CLI::Validator whole_number_validator(long long most, std::string too_many, std::string name,
                                              std::string description) {
