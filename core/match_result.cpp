@@ -155,7 +155,7 @@ nlohmann::json to_json(const MatchResult& m) {
                         {"work", o.work}, {"stored", o.stored}, {"timing_stored", o.timing_stored},
                         {"stop", search_stop_text(o.stop)}, {"stopped", o.stopped}, {"command", o.command}});
   return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
-          {"scene_class", m.scene_class}, {"n", m.n},        {"dt", m.dt},
+          {"scene_class", m.scene_class}, {"use_case", m.use_case}, {"n", m.n},        {"dt", m.dt},
           {"spec", m.spec.to_json()}, {"budget_runs", m.budget_runs}, {"run_ball_steps", m.run_ball_steps},
           {"ceiling", m.ceiling}, {"ceiling_ns", m.ceiling_ns}, {"context", m.context}, {"interrupted", m.interrupted},
           {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
@@ -168,6 +168,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
   m.scene = j.at("scene").get<std::string>();
   m.scene_source = j.at("scene_source").get<std::string>();
   m.scene_class = j.at("scene_class").get<std::string>();
+  m.use_case = j.value("use_case", "");  // files written before it was recorded have none
   m.n = j.at("n").get<int>();
   m.dt = j.at("dt").get<double>();
   for (const auto& [key, value] : j.at("spec").items()) {

@@ -72,6 +72,7 @@ struct MatchOutcome {
 
 struct MatchResult {
   std::string scene, scene_source, scene_class;
+  std::string use_case;  // the scene's (Scene::use_case), for the report's first screen
   int n = 0;
   double dt = 0;  // the scene's
   AccuracySpec spec;

@@ -50,6 +50,7 @@ struct RequestedMetrics {
 struct Scene {
   std::string name;
   std::string source;          // file the scene came from, for messages
+  std::string use_case;        // what a game asks of its engine that the scene stands for ("a pile at rest"), or ""
   double dt = 0.01;            // step size (s)
   double duration = 1.0;       // simulated time (s)
   Eigen::Vector2d gravity{0, 0};  // (m/s^2)

@@ -354,7 +354,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   if (doc.empty())
     throw InputError(fmt::format("{}:1: scene: the file is empty (a scene needs dt, duration and balls)", source));
   TableReader top(doc, source, "");
-  top.check_keys({"name", "description", "dt", "duration", "gravity", "restitution", "friction", "inertia",
+  top.check_keys({"name", "description", "use_case", "dt", "duration", "gravity", "restitution", "friction", "inertia",
                   "allow_overlap", "animated", "container", "ball", "random", "lattice", "metrics", "accuracy", "settings"});
 
   Scene s;
@@ -362,6 +362,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
   s.random_placement = random_placement;
   s.seed_offset = seed_offset;
   s.name = top.string("name", std::filesystem::path(source).stem().string());
+  s.use_case = top.string("use_case", "");
   // The name is used in default output paths (`sweep` writes sweep-NAME.json) and in reports: it
   // must stay one file name in the working folder.
   if (top.node("name")) {

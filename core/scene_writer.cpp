@@ -32,6 +32,7 @@ SceneSnapshot scene_at_state(const Scene& scene, const State& state, const std::
   toml::table doc;
   doc.insert("name", name);
   doc.insert("description", fmt::format("{} at t = {:g} s", scene.name, state.t));
+  if (!scene.use_case.empty()) doc.insert("use_case", scene.use_case);
   doc.insert("dt", scene.dt);
   doc.insert("duration", duration);
   doc.insert("gravity", vec2(scene.gravity.x(), scene.gravity.y()));

@@ -7,6 +7,7 @@
 
 #include "balls_text.h"
 #include "markdown_cell.h"
+#include "page_links.h"
 #include "result.h"
 
 namespace ballbench {
@@ -29,19 +30,18 @@ std::string worst_term_text(const MatchTry& t, const AccuracySpec& spec) {
   return worst;
 }
 
-void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {
-  md += fmt::format("## {}\n\n", accuracy_heading(m.scene));
-  md += fmt::format("{}, class `{}`, the scene's dt = {:g} s. Spec: {}.", balls_text(m.n), m.scene_class, m.dt,
-                    m.spec.text());
-  if (!m.interrupted.empty()) md += fmt::format(" **Interrupted by {}: the rows below are what ran.**", m.interrupted);
-  md += "\n\n";
-  // The cheapest first; then what did not meet the spec.
+// The searches' outcomes, the cheapest first; then what did not meet the spec.
+std::vector<const MatchOutcome*> ranked_rows(const MatchResult& m) {
   std::vector<const MatchOutcome*> rows;
   for (const MatchOutcome& oc : m.outcomes) rows.push_back(&oc);
   std::stable_sort(rows.begin(), rows.end(), [](const MatchOutcome* a, const MatchOutcome* b) {
     if (a->reached != b->reached) return a->reached;
     return a->reached && a->cost_ns < b->cost_ns;
   });
+  return rows;
+}
+
+void put_match_table(std::string& md, const MatchResult& m, const std::vector<const MatchOutcome*>& rows) {
   std::vector<std::string> terms;
   for (const SpecTermDef& d : spec_terms())
     if (m.spec[d.term]) terms.push_back(d.key);
@@ -67,6 +67,10 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     }
     md += fmt::format(" {} |\n", oc->tries);
   }
+}
+
+// How the cost was measured and how the searches were bounded, when and by which build.
+void put_match_method(std::string& md, const MatchResult& m) {
   md += "\nCost: the engine's step time per ball per scene step in CPU time (a step of dt/8 costs 8 of its steps), "
         "the found configuration timed after the searches over a tenth of its run from the state it saved there, "
         "scaled to the whole run, median of the repeats (± half their range); figures as the harness measured them from the states at the scene's step times. "
@@ -82,6 +86,10 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     return m.context.is_object() ? m.context.value(key, std::string("(not recorded)")) : std::string("(not recorded)");
   };
   md += fmt::format(" Measured {} by build {}.\n\n", recorded("date"), recorded("build"));
+}
+
+// Each of our profiles that met the spec against the cheapest external engine that did.
+void put_our_ratios(std::string& md, const MatchResult& m) {
   const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::ours)) continue;
@@ -100,6 +108,18 @@ void section_for(std::string& md, const MatchResult& m, const std::vector<Figure
     else
       md += fmt::format("- **{}** costs {} ns; no external engine met the spec.\n", label, cost_text(oc.cost_ns));
   }
+}
+
+void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {
+  md += fmt::format("## {}\n\n", accuracy_heading(m.scene));
+  md += fmt::format("{}, class `{}`, the scene's dt = {:g} s. Spec: {}.", balls_text(m.n), m.scene_class, m.dt,
+                    m.spec.text());
+  if (!m.interrupted.empty()) md += fmt::format(" **Interrupted by {}: the rows below are what ran.**", m.interrupted);
+  md += "\n\n";
+  const std::vector<const MatchOutcome*> rows = ranked_rows(m);
+  put_match_table(md, m, rows);
+  put_match_method(md, m);
+  put_our_ratios(md, m);
   for (const Figure& f : figures)
     if (f.kind == "front" && f.scene == m.scene)
       md += fmt::format("\n![work-precision front of {}]({})\n\n*{}*\n", m.scene, f.file, f.caption);
@@ -160,9 +180,9 @@ std::string accuracy_heading(const std::string& scene) { return fmt::format("Equ
 
 std::string accuracy_anchor(const std::string& scene) { return heading_anchor(accuracy_heading(scene)); }
 
-std::string accuracy_section(const ReportInputs& in, const std::vector<Figure>& figures) {
+std::string accuracy_section(const MatchResult& m, const std::vector<Figure>& figures) {
   std::string md;
-  for (const MatchResult& m : in.matches) section_for(md, m, figures);
+  section_for(md, m, figures);
   return md;
 }
 

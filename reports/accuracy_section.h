@@ -37,6 +37,7 @@ std::string at_least_text(double ratio);
 std::string accuracy_heading(const std::string& scene);
 std::string accuracy_anchor(const std::string& scene);
 
-std::string accuracy_section(const ReportInputs& in, const std::vector<Figure>& figures);
+// One scene's equal-accuracy section.
+std::string accuracy_section(const MatchResult& m, const std::vector<Figure>& figures);
 
 }  // namespace ballbench

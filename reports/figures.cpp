@@ -220,71 +220,97 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
 // its radius in them. And a colour that first appears in a later frame comes out black: every
 // colour a frame may use is in the first one (the frames grey), and text is black, whose
 // antialiasing shades the titles of the first frame hold.
-Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
-  const std::string base = slug(scene) + "-animation";
+// How the GIF samples the runs' frames and lays their panels out.
+struct AnimationLayout {
+  size_t stride = 1, frames = 0;  // GIF frame k shows recorded frame k * stride
+  size_t cols = 1;
+  double pw = 0, ph = 0, width = 0, height = 0, scale = 0;  // plot area, canvas (pixels); pixels per metre
+  View view;
+  // The recorded frame a run shows at GIF frame k: its last one once it stopped.
+  size_t held(const Result* r, size_t k) const { return std::min(k * stride, r->series.frames.size() - 1); }
+};
+
+constexpr std::string_view kStoppedGrey = "#bbbbbb";
+constexpr double kSide = 400, kTitle = 26, kGap = 12, kGdPixelsPerPointSize = 3;
+
+// Pixels: two columns from three runs on, each plot area at most kSide square, the view's shape.
+AnimationLayout animation_layout(const std::vector<const Result*>& runs) {
   constexpr size_t kGifFrames = 80;  // 8 s at 10 frames per second, and the GIF under 2 MB
+  AnimationLayout l;
   size_t recorded = 0;
   for (const Result* r : runs) recorded = std::max(recorded, r->series.frames.size());
-  const size_t stride = std::max<size_t>(1, (recorded + kGifFrames - 1) / kGifFrames);
-  const size_t frames = (recorded + stride - 1) / stride;  // GIF frame k shows recorded frame k * stride
-  auto held = [&](const Result* r, size_t k) { return std::min(k * stride, r->series.frames.size() - 1); };
+  l.stride = std::max<size_t>(1, (recorded + kGifFrames - 1) / kGifFrames);
+  l.frames = (recorded + l.stride - 1) / l.stride;
   std::vector<std::array<double, 2>> everything;
   double reach = 0;
   for (const Result* r : runs) {
     for (size_t b = 0; b < r->series.frames.front().size(); ++b) reach = std::max(reach, ball_radius(*r, b));
-    for (size_t k = 0; k < frames; ++k)
-      everything.insert(everything.end(), r->series.frames[held(r, k)].begin(), r->series.frames[held(r, k)].end());
+    for (size_t k = 0; k < l.frames; ++k)
+      everything.insert(everything.end(), r->series.frames[l.held(r, k)].begin(), r->series.frames[l.held(r, k)].end());
   }
-  const View view = scene_view(runs.front()->series.box, everything, reach);
-  // Pixels: two columns from three runs on, each plot area at most kSide square, the view's shape.
-  constexpr std::string_view kStoppedGrey = "#bbbbbb";
-  constexpr double kSide = 400, kTitle = 26, kGap = 12, kGdPixelsPerPointSize = 3;
-  const size_t cols = runs.size() <= 2 ? runs.size() : 2, rows = (runs.size() + cols - 1) / cols;
-  const double vw = view.x1 - view.x0, vh = view.y1 - view.y0;
-  const double pw = std::round(vw >= vh ? kSide : kSide * vw / vh), ph = std::round(vw >= vh ? kSide * vh / vw : kSide);
-  const double scale = pw / vw;  // pixels per metre, the same both ways
-  const double width = kGap + cols * (kSide + kGap), height = kGap + rows * (ph + kTitle + kGap);
+  l.view = scene_view(runs.front()->series.box, everything, reach);
+  l.cols = runs.size() <= 2 ? runs.size() : 2;
+  const size_t rows = (runs.size() + l.cols - 1) / l.cols;
+  const double vw = l.view.x1 - l.view.x0, vh = l.view.y1 - l.view.y0;
+  l.pw = std::round(vw >= vh ? kSide : kSide * vw / vh), l.ph = std::round(vw >= vh ? kSide * vh / vw : kSide);
+  l.scale = l.pw / vw;  // the same both ways
+  l.width = kGap + l.cols * (kSide + kGap), l.height = kGap + rows * (l.ph + kTitle + kGap);
+  return l;
+}
+
+// Each run's balls, a gnuplot data block per GIF frame.
+void write_animation_data(const std::vector<const Result*>& runs, const AnimationLayout& l, const std::string& base,
+                          const fs::path& dir) {
+  for (const Result* r : runs) {
+    std::ofstream f(dir / fmt::format("{}-{}.dat", base, slug(run_label(*r))));
+    for (size_t k = 0; k < l.frames; ++k) {
+      const auto& frame = r->series.frames[l.held(r, k)];
+      for (size_t b = 0; b < frame.size(); ++b) f << frame[b][0] << ' ' << frame[b][1] << ' ' << ball_radius(*r, b) << '\n';
+      f << "\n\n";
+    }
+  }
+}
+
+// Run i's panel of GIF frame k.
+void put_animation_panel(std::ostream& gp, const AnimationLayout& l, const Result* r, size_t i, size_t k,
+                         const std::string& base) {
+  const size_t h = l.held(r, k);
+  const bool stopped = h < k * l.stride;
+  const double t = r->series.frame_t[h];
+  const double left = kGap + (i % l.cols) * (kSide + kGap) + (kSide - l.pw) / 2,
+               top = kGap + (i / l.cols) * (l.ph + kTitle + kGap) + kTitle;
+  gp << fmt::format("set lmargin at screen {}\nset rmargin at screen {}\nset tmargin at screen {}\nset bmargin at screen {}\n",
+                    left / l.width, (left + l.pw) / l.width, 1 - top / l.height, 1 - (top + l.ph) / l.height)
+     << "unset label\n";
+  if (stopped)
+    gp << "set title " << quoted(fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t)) << "\nset label 1 "
+       << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r)))
+       << " at graph 0.5, graph 0.5 center front font ',13'\n";
+  else
+    gp << "set title " << quoted(fmt::format("{}   t = {:.1f} s", run_label(*r), t)) << "\n";
+  if (const std::string note = outside_note(l.view, r->series.frames[h]); !note.empty())
+    gp << "set label 2 " << quoted(note) << " at graph 0.02, graph 0.04 left front font ',9'\n";
+  gp << fmt::format("plot '{0}-{1}.dat' index {2} using 1:2:(size($3)) with points pt 7 ps variable lc rgb '{3}', "
+                    "'' index {2} using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'\n",
+                    base, slug(run_label(*r)), k, stopped ? std::string(kStoppedGrey) : run_style(r->engine, r->profile).colour);
+}
+
+Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
+  const std::string base = slug(scene) + "-animation";
+  const AnimationLayout l = animation_layout(runs);
   std::ofstream gp(dir / (base + ".gp"));
-  gp << fmt::format("set terminal gif animate delay 10 optimize size {},{} font 'sans,10'\n", width, height)
+  gp << fmt::format("set terminal gif animate delay 10 optimize size {},{} font 'sans,10'\n", l.width, l.height)
      << "set termoption noenhanced\nset output '" << base << ".gif'\nunset key\nunset xtics\nunset ytics\n"
      << "set border lc rgb '" << kStoppedGrey << "'\n"
-     << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", view.x0, view.x1, view.y0, view.y1)
-     << fmt::format("size(r) = r * {} / {}  # a radius in metres as a gd point size\n", scale, kGdPixelsPerPointSize);
+     << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", l.view.x0, l.view.x1, l.view.y0, l.view.y1)
+     << fmt::format("size(r) = r * {} / {}  # a radius in metres as a gd point size\n", l.scale, kGdPixelsPerPointSize);
   if (const auto& b = runs.front()->series.box)
     gp << fmt::format("set object 1 rect from {},{} to {},{} fs empty border rgb '#c03030' lw 2 back\n", (*b)[0], (*b)[1],
                       (*b)[2], (*b)[3]);
-  for (const Result* r : runs) {
-    std::ofstream f(dir / fmt::format("{}-{}.dat", base, slug(run_label(*r))));
-    for (size_t k = 0; k < frames; ++k) {
-      const auto& frame = r->series.frames[held(r, k)];
-      for (size_t b = 0; b < frame.size(); ++b) f << frame[b][0] << ' ' << frame[b][1] << ' ' << ball_radius(*r, b) << '\n';
-      f << "\n\n";  // a gnuplot data block per frame
-    }
-  }
-  for (size_t k = 0; k < frames; ++k) {
+  write_animation_data(runs, l, base, dir);
+  for (size_t k = 0; k < l.frames; ++k) {
     gp << "set multiplot\n";
-    for (size_t i = 0; i < runs.size(); ++i) {
-      const Result* r = runs[i];
-      const size_t h = held(r, k);
-      const bool stopped = h < k * stride;
-      const double t = r->series.frame_t[h];
-      const double left = kGap + (i % cols) * (kSide + kGap) + (kSide - pw) / 2, top = kGap + (i / cols) * (ph + kTitle + kGap) + kTitle;
-      gp << fmt::format("set lmargin at screen {}\nset rmargin at screen {}\nset tmargin at screen {}\nset bmargin at screen {}\n",
-                        left / width, (left + pw) / width, 1 - top / height, 1 - (top + ph) / height)
-         << "unset label\n";
-      if (stopped)
-        gp << "set title " << quoted(fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t))
-           << "\nset label 1 "
-           << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r)))
-           << " at graph 0.5, graph 0.5 center front font ',13'\n";
-      else
-        gp << "set title " << quoted(fmt::format("{}   t = {:.1f} s", run_label(*r), t)) << "\n";
-      if (const std::string note = outside_note(view, r->series.frames[h]); !note.empty())
-        gp << "set label 2 " << quoted(note) << " at graph 0.02, graph 0.04 left front font ',9'\n";
-      gp << fmt::format("plot '{0}-{1}.dat' index {2} using 1:2:(size($3)) with points pt 7 ps variable lc rgb '{3}', "
-                        "'' index {2} using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'\n",
-                        base, slug(run_label(*r)), k, stopped ? std::string(kStoppedGrey) : run_style(r->engine, r->profile).colour);
-    }
+    for (size_t i = 0; i < runs.size(); ++i) put_animation_panel(gp, l, runs[i], i, k, base);
     gp << "unset multiplot\n";
   }
   gp.close();
@@ -293,7 +319,7 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
           fmt::format("The scene in motion ({} frames, animated GIF): the thesis's algorithm, ours and an external "
                       "engine side by side, balls to scale in their engine's colour; a run that stopped early shows its "
                       "last frame greyed, with when and why it stopped.",
-                      frames)};
+                      l.frames)};
 }
 
 // The trajectory viewer (viewer_page.h): every run of the scene that has frames, on one page.

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "markdown_buffer.h"
+#include "markdown_cell.h"
 #include "metrics/angle_of_repose.h"
 #include "no_data.h"
 #include "ordered_set.h"
@@ -14,27 +16,11 @@
 namespace ballbench {
 namespace {
 
-// Appends formatted text; the format string is checked at compile time.
-struct Markdown {
-  fmt::memory_buffer out;
-  template <class... Args>
-  void operator()(fmt::format_string<Args...> f, Args&&... args) {
-    fmt::format_to(std::back_inserter(out), f, std::forward<Args>(args)...);
-  }
-};
-
-// A markdown table cell: a `|` would end it.
-std::string cell(const std::string& text) {
-  std::string out;
-  for (char c : text) c == '|' ? out += "\\|" : out += c;
-  return out;
-}
-
 // A run that made no step (refused, or failed to build) has no figures: its status and why.
 bool ran(const Result& r) { return r.steps_done > 0; }
 std::string status_text(const Result& r) {
   if (r.status == RunStatus::ok) return "ok";
-  return r.error.empty() ? run_status_text(r.status) : fmt::format("{}: {}", run_status_text(r.status), cell(r.error));
+  return r.error.empty() ? run_status_text(r.status) : fmt::format("{}: {}", run_status_text(r.status), markdown_cell(r.error));
 }
 
 std::string or_none(const std::optional<double>& v, const char* format) {
@@ -47,7 +33,7 @@ std::string source_text(const Result& r) {
 }
 
 // One scene of a ball rolling on the floor: final speed and time to roll against the closed forms.
-void put_rolling(Markdown& put, const std::string& scene, const std::vector<const Result*>& rows) {
+void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vector<const Result*>& rows) {
   const Result* any = nullptr;
   for (const Result* r : rows)
     if (r->metrics.has("rolling.expected_speed")) any = r;
@@ -83,7 +69,7 @@ void put_rolling(Markdown& put, const std::string& scene, const std::vector<cons
 }
 
 // The heaps side by side: one column per scene that measures an angle of repose.
-void put_repose(Markdown& put, const std::vector<std::string>& scenes,
+void put_repose(MarkdownBuffer& put, const std::vector<std::string>& scenes,
                 const std::vector<std::vector<const Result*>>& rows_of) {
   put("### Angle of repose\n\nBalls let go from a loose block on the floor of a wide box (granular column collapse) "
       "come to rest as a heap whose flanks' slope depends on friction: the same balls with friction and without. "
@@ -112,7 +98,7 @@ void put_repose(Markdown& put, const std::vector<std::string>& scenes,
       if (!ran(r) || r.status != RunStatus::ok) {
         put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.metrics.number("angle_of_repose"), "{:.1f}"))
                    : std::string(run_status_text(r.status)));
-        if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], cell(r.error)));
+        if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], markdown_cell(r.error)));
         continue;
       }
       const auto angle = r.metrics.number("angle_of_repose");
@@ -147,8 +133,8 @@ std::string friction_section(const std::vector<Result>& results, const std::vect
       if (r.scene == scene) out.push_back(&r);
     return out;
   };
-  Markdown put;
-  put("## Friction\n\nEvery engine and profile on the scenes that judge friction and rotation against what "
+  MarkdownBuffer put;
+  put("Every engine and profile on the scenes that judge friction and rotation against what "
                  "they must do: a ball sliding to roll and a spinning ball dropped, against closed forms, and a heap "
                  "of balls with and without friction, by its angle of repose. Engines without friction refuse these "
                  "scenes (a run that ignored the friction would look right and be wrong); each refusal is shown with "

@@ -1,6 +1,6 @@
 #pragma once
-// Results (JSON files) -> REPORT.md. It reads result files only: every number in the report can be
-// traced to a file in the results folder.
+// Results (JSON files) -> REPORT.md and its pages. It reads result files only: every number in the
+// report can be traced to a file in the results folder.
 #include <map>
 #include <optional>
 #include <string>
@@ -49,9 +49,22 @@ struct Figure {
 // Reads a results folder written by `ballbench report`.
 ReportInputs read_report_inputs(const std::string& results_dir);
 
-// A Markdown heading's anchor as a code host makes it: lower case, punctuation dropped, spaces as '-'.
-std::string heading_anchor(const std::string& heading);
+// One page of the report: REPORT.md (the answer, on one screen) or a page of evidence under pages/.
+struct ReportPage {
+  std::string path;  // relative to the report's folder
+  std::string title;
+  std::string text;  // Markdown
+};
 
-std::string render_report(const ReportInputs& in, const std::vector<Figure>& figures = {});
+// Scene pages are scenes/SCENE.md; the other pages of evidence are under pages/.
+inline constexpr const char* kScenePagePrefix = "scenes/";
+std::string scene_page_path(const std::string& scene);
+
+// The folders the report renders into beside REPORT.md (its results/ are written by the runs): each
+// is the report's own, emptied by --fresh and pruned of pages no longer rendered.
+inline constexpr const char* kRenderedFolders[] = {"figures", "pages", "scenes"};
+
+// Every page, REPORT.md first, its links resolved (page_links.h).
+std::vector<ReportPage> render_report(const ReportInputs& in, const std::vector<Figure>& figures = {});
 
 }  // namespace ballbench

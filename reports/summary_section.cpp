@@ -1,111 +1,127 @@
 #include "summary_section.h"
 
 #include <algorithm>
-#include <cmath>
+#include <set>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "accuracy_section.h"
+#include "balls_text.h"
+#include "json_value.h"
+#include "markdown_cell.h"
 #include "result.h"
 
 namespace ballbench {
 namespace {
 
-// The engine and profile with the smallest error on the front's axis at the scene's own step, the
-// profile as it is: who is most accurate before anyone refines. Where the spec has no principal
-// term (only counts), those that meet it at the scene's step.
-std::string most_accurate_at_dt(const MatchResult& m) {
-  std::vector<std::pair<double, std::string>> at_dt;
-  for (const MatchTry& t : m.tries)
-    if (t.halvings == 0 && t.knob.empty())
-      if (const auto e = front_error(t, m.spec)) at_dt.emplace_back(*e, run_label(t.engine, t.profile));
-  std::stable_sort(at_dt.begin(), at_dt.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  const auto term = principal_term(m.spec);
-  if (!term) {
-    std::vector<std::string> met;
-    for (const MatchTry& t : m.tries)
-      if (t.halvings == 0 && t.knob.empty() && t.met) met.push_back(run_label(t.engine, t.profile));
-    return met.empty() ? "none meets it at dt" : fmt::format("meet it at dt: {}", fmt::join(met, ", "));
+std::string term_words(SpecTerm t, double bound) {
+  switch (t) {
+    case SpecTerm::overlap: return fmt::format("overlap ≤ {:g}% of a radius", 100 * bound);
+    case SpecTerm::tunnelling: return bound == 0 ? "no tunnelling" : fmt::format("≤ {:g} tunnelled", bound);
+    case SpecTerm::sticking: return bound == 0 ? "no sticking" : fmt::format("≤ {:g} stuck", bound);
+    case SpecTerm::rest_speed: return fmt::format("at rest (RMS speed ≤ {:.2g} m/s)", bound);
+    case SpecTerm::energy_drift: return fmt::format("energy kept to {:g}%", 100 * bound);
+    case SpecTerm::energy_error: return fmt::format("energy within {:g}% of the reference's", 100 * bound);
+    case SpecTerm::horizon: return fmt::format("follows the reference for ≥ {:g} s", bound);
+    case SpecTerm::rolling: return fmt::format("rolls at its closed-form speed to {:g}%", 100 * bound);
   }
-  if (at_dt.empty()) return "n/a";
-  // Figures a millionth of the bound apart are round-off: no ranking among them.
-  const double level = std::max(at_dt.front().first, *m.spec[*term] * 1e-6);
-  std::vector<std::string> equal;
-  for (const auto& [e, label] : at_dt)
-    if (e <= level) equal.push_back(label);
-  if (equal.size() == 1) return fmt::format("{} ({} {:.2g})", equal.front(), spec_term(*term).key, at_dt.front().first);
-  const size_t shown = std::min<size_t>(equal.size(), 4);
-  return fmt::format("{} equal, {} below {:.0e}: {}{}", equal.size(), spec_term(*term).key, level * 1.0001,
-                     fmt::join(equal.begin(), equal.begin() + shown, ", "),
-                     equal.size() > shown ? fmt::format(" and {} more", equal.size() - shown) : "");
+  return "";
 }
 
-// The cheapest of `role` that met the spec; where none did, the nearest miss, so the reader still
-// has a name and a figure.
-std::string found_text(const MatchResult& m, EngineRole role) {
-  const MatchOutcome* oc = cheapest_reached(m, role_name(role));
-  if (!oc) {
-    const MatchOutcome* near = nearest_unreached(m, role_name(role));
-    return near ? fmt::format("none; nearest: {} ({})", run_label(near->engine, near->profile),
-                              miss_text(m, *near))
-                : "none";
+// "chipmunk as shipped, step dt/64, iterations = 5": a configuration found.
+std::string configuration_words(const MatchResult& m, const MatchOutcome& oc) {
+  const MatchTry& t = m.tries[oc.found];
+  const std::string profile = oc.profile == "stock"   ? " as shipped"
+                              : oc.profile == "tuned" ? " tuned"
+                              : oc.profile == "default" ? ""
+                                                        : fmt::format(" ({})", oc.profile);
+  const std::string knob = t.knob.empty() ? "" : fmt::format(", {} = {}", t.knob, json_text(t.value));
+  return fmt::format("**{}**{}, step {}{}", oc.engine, profile, step_text(t.halvings), knob);
+}
+
+// The pick's cells: configuration and cost, or the nearest miss.
+std::pair<std::string, std::string> pick_cells(const MatchResult& m, EngineRole role) {
+  if (const MatchOutcome* oc = cheapest_reached(m, role_name(role)))
+    return {configuration_words(m, *oc), cost_spread_text(*oc)};
+  const MatchOutcome* near = nearest_unreached(m, role_name(role));
+  return {near ? fmt::format("none met it; nearest: {} ({})", run_label(near->engine, near->profile), miss_text(m, *near))
+               : "none ran",
+          "n/a"};
+}
+
+std::string ratio_cell(const MatchResult& m) {
+  const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
+  const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
+  if (ours && ext) return cheaper_text(ext->cost_ns / ours->cost_ns);
+  if (const auto at_least = ours ? ratio_at_least(m, *ours) : std::nullopt) return at_least_text(*at_least);
+  if (ours) return "undecided: no external engine met it within the budget";
+  return ext ? "ours did not meet it" : "n/a";
+}
+
+std::string recorded(const nlohmann::json& context, const char* key) {
+  return context.is_object() ? context.value(key, std::string()) : std::string();
+}
+
+// How the figures were made: cost, the searches' budget and ceiling, when and by which build. Parts
+// of several builds are named, never mixed silently.
+std::string provenance(const ReportInputs& in) {
+  double budget = 0, ceiling = 0;
+  std::set<std::string> builds, dates, steps;
+  for (const MatchResult& m : in.matches) {
+    steps.insert(fmt::format("{:g} s", m.dt));
+    budget = std::max(budget, m.budget_runs), ceiling = std::max(ceiling, m.ceiling_ns > 0 ? m.ceiling : 0.0);
+    if (const auto b = recorded(m.context, "build"); !b.empty()) builds.insert(b);
+    if (const auto d = recorded(m.context, "date"); !d.empty()) dates.insert(d.substr(0, 10));
   }
-  return fmt::format("{}, {}: {} ns", run_label(oc->engine, oc->profile), configuration_text(m.tries[oc->found]),
-                     cost_text(oc->cost_ns));
+  std::string md = "Cost: the engine's CPU time per ball per scene step (ns), the configuration found timed alone "
+                   "(the median of three windows of its run, ± half their range).";
+  md += fmt::format(" dt: the scene's own step ({}); a step of dt/64 makes 64 steps per scene step.",
+                    steps.size() == 1 ? *steps.begin() + " in each" : fmt::format("{}", fmt::join(steps, ", ")));
+  if (budget > 0)
+    md += fmt::format(" Each search could spend the work of {:g} runs of its scene at dt{}.", budget,
+                      ceiling > 0 ? fmt::format(", and stopped a try at {:g}x our cost (an engine past it cannot be "
+                                                "the cheapest)", ceiling)
+                                  : "");
+  md += " Every word: [terms](pages/terms.md).";
+  const std::string run_build = recorded(in.run, "build");
+  if (!run_build.empty()) builds.insert(run_build);
+  md += fmt::format(" Measured {} on {} ({} cores), {} suite, by build {}{}.\n\n",
+                    dates.empty() ? recorded(in.run, "date") : fmt::format("{}", fmt::join(dates, ", ")),
+                    recorded(in.run, "cpu"), in.run.is_object() ? json_text(in.run.value("cores", nlohmann::json())) : "?",
+                    in.run.is_object() ? in.run.value("suite", "quick") : "quick", fmt::join(builds, ", "),
+                    builds.size() > 1 ? ": **parts of several builds** (each scene's page names its own)" : "");
+  return md;
 }
 
 }  // namespace
 
+std::string spec_words(const AccuracySpec& spec) {
+  std::vector<std::string> words;
+  for (const SpecTermDef& d : spec_terms())
+    if (const auto& bound = spec[d.term]) words.push_back(term_words(d.term, *bound));
+  return fmt::format("{}", fmt::join(words, ", "));
+}
+
 std::string summary_section(const ReportInputs& in, const std::vector<Figure>& figures) {
-  if (in.matches.empty()) return "";
-  std::string md = "## Summary\n\n";
-  md += "Each engine is asked for the same accuracy: for every scene a stated spec (overlap, tunnelling, rest, energy, "
-        "closed forms; [the terms](../scenarios/README.md#accuracy)), and each engine and profile's cheapest configuration that meets it "
-        "(its step size dt/2^k and its own knobs, found by `ballbench match` within a budget of work, so the same on any machine). Cost is the "
-        "engine's own step time per ball per scene step, each found configuration timed alone (the median of "
-        "three windows of its run).";
-  double ceiling = 0;
-  for (const MatchResult& m : in.matches) ceiling = std::max(ceiling, m.ceiling_ns > 0 ? m.ceiling : 0.0);
-  if (ceiling > 0)
-    md += fmt::format(" A try stops once it costs {:g} times our solver's cost (the ceiling): an engine past it "
-                      "cannot be the cheapest and is not searched to its end.",
-                      ceiling);
-  md += "\n\n";
-  md += "| scene (class) | spec | cheapest external engine that meets it | ours | ours against it | most accurate at "
-        "the scene's dt |\n|---|---|---|---|---|---|\n";
-  std::vector<std::string> misses;
-  bool undecided = false;  // a row where ours met the spec and no external engine did within its budget
+  std::string md =
+      "Which 2D ball-physics engine to pick for a scene like yours, at equal accuracy. Each use case below has one "
+      "accuracy spec; for every engine and profile, `ballbench match` finds the cheapest configuration (a step size "
+      "and at most one of the engine's own settings) that meets it. The table names the cheapest external engine "
+      "and our solver, `home`, against it.\n\n";
+  if (in.matches.empty()) return md + "No equal-accuracy results in this report.\n\n";
+  md += "| use case (scene) | spec | cheapest external engine | cost (ns) | ours | cost (ns) | ours against it "
+        "|\n|---|---|---|---:|---|---:|---|\n";
   for (const MatchResult& m : in.matches) {
-    const MatchOutcome* ext = cheapest_reached(m, role_name(EngineRole::external));
-    const MatchOutcome* ours = cheapest_reached(m, role_name(EngineRole::ours));
-    std::string ratio = "n/a";
-    if (ours && ext) ratio = cheaper_text(ext->cost_ns / ours->cost_ns);
-    else if (const auto at_least = ours ? ratio_at_least(m, *ours) : std::nullopt) ratio = at_least_text(*at_least);
-    else if (ours) ratio = "undecided", undecided = true;
-    else if (ext) ratio = "ours did not meet it";
-    md += fmt::format("| [`{}`](#{}) ({}) | {} | {} | {} | {} | {} |\n", m.scene, accuracy_anchor(m.scene), m.scene_class,
-                      m.spec.text(), found_text(m, EngineRole::external), found_text(m, EngineRole::ours), ratio, most_accurate_at_dt(m));
-    std::vector<std::string> failed;
-    for (const MatchOutcome& oc : m.outcomes)
-      if (!oc.reached && verdict_of(m, oc) != MatchVerdict::unsupported)
-        failed.push_back(fmt::format("{} ({})", run_label(oc.engine, oc.profile), miss_text(m, oc)));
-    if (!failed.empty())
-      misses.push_back(fmt::format("- [`{}`](#{}): {}.", m.scene, accuracy_anchor(m.scene), fmt::join(failed, "; ")));
+    const auto [ext, ext_cost] = pick_cells(m, EngineRole::external);
+    const auto [ours, our_cost] = pick_cells(m, EngineRole::ours);
+    md += fmt::format("| [{}](#{}) (`{}`, {}) | {} | {} | {} | {} | {} | {} |\n",
+                      m.use_case.empty() ? m.scene : m.use_case, accuracy_anchor(m.scene), m.scene, balls_text(m.n),
+                      spec_words(m.spec), markdown_cell(ext), ext_cost, markdown_cell(ours), our_cost, ratio_cell(m));
   }
-  if (undecided)
-    md += "\nWhere no external engine met the spec within its search's budget, the ratio waits on longer "
-          "searches (the external engines need their finest steps there): `ballbench match --scene SCENE --budget "
-          "2000 --target 10` runs one, and [core/solver/PERFORMANCE.md](../core/solver/PERFORMANCE.md#where-the-"
-          "targets-stand) holds those measured.\n";
-  if (!misses.empty())
-    md += fmt::format("\nDid not meet the spec at any configuration tried (the nearest miss; \"out of budget\": the "
-                      "search's work budget ran out first; \"over the ceiling\": its tries passed a multiple of our "
-                      "solver's cost and were stopped there):\n\n{}\n",
-                      fmt::join(misses, "\n"));
+  md += "\n" + provenance(in);
   for (const Figure& f : figures)
-    if (f.kind == "fronts") md += fmt::format("\n![every scene's work-precision front]({})\n\n*{}*\n", f.file, f.caption);
-  md += "\n";
+    if (f.kind == "fronts") md += fmt::format("![every scene's work-precision front]({})\n\n*{}*\n\n", f.file, f.caption);
   return md;
 }
 

@@ -102,22 +102,13 @@ int viewer_frames(const Scene& scene, int runs) {
       std::clamp(std::floor(kViewerFrameBudget / per_frame), 1.0, static_cast<double>(std::max(1L, scene.steps()))));
 }
 
-std::string viewer_page(const std::vector<const Result*>& runs) {
-  if (runs.empty()) throw InputError("no runs to show");
-  const Result* shown = nullptr;  // the first run with frames: the scene's geometry
-  for (const Result* r : runs) {
-    if (r->scene != runs.front()->scene || r->n != runs.front()->n)
-      throw InputError(fmt::format("runs of different scenes ({} with {} balls, {} with {}): a page shows one scene",
-                                   runs.front()->scene, runs.front()->n, r->scene, r->n));
-    if (!shown && !r->series.frames.empty()) shown = r;
-  }
-  if (!shown) throw InputError("no run has frames to show");
-  // A results file is read, not trusted: its frames must be what a run writes, or the page would
-  // draw garbage (a null as -9.2e18) or the count would exhaust memory.
-  constexpr int kMaxFrameBalls = 1000;  // the runner keeps frames of scenes up to this many balls
-  constexpr double kMaxCoordinate = 1e12;  // m: a scene's own bound on coordinates
-  if (shown->n < 1 || shown->n > kMaxFrameBalls)
-    throw InputError(fmt::format("n: {} balls, not a run with frames (those have 1 to {} balls)", shown->n, kMaxFrameBalls));
+namespace {
+
+// A results file is read, not trusted: its frames must be what a run writes, or the page would draw
+// garbage (a null as -9.2e18) or the count would exhaust memory.
+constexpr double kMaxCoordinate = 1e12;  // m: a scene's own bound on coordinates
+
+void check_frames(const std::vector<const Result*>& runs) {
   for (size_t k = 0; k < runs.size(); ++k) {
     const Result& r = *runs[k];
     const std::string where = fmt::format("run {} ({})", k + 1, printable(run_label(r), 200));
@@ -143,6 +134,24 @@ std::string viewer_page(const std::vector<const Result*>& runs) {
                                          where, f, b, v, kMaxCoordinate));
     }
   }
+}
+
+}  // namespace
+
+std::string viewer_page(const std::vector<const Result*>& runs) {
+  if (runs.empty()) throw InputError("no runs to show");
+  const Result* shown = nullptr;  // the first run with frames: the scene's geometry
+  for (const Result* r : runs) {
+    if (r->scene != runs.front()->scene || r->n != runs.front()->n)
+      throw InputError(fmt::format("runs of different scenes ({} with {} balls, {} with {}): a page shows one scene",
+                                   runs.front()->scene, runs.front()->n, r->scene, r->n));
+    if (!shown && !r->series.frames.empty()) shown = r;
+  }
+  if (!shown) throw InputError("no run has frames to show");
+  constexpr int kMaxFrameBalls = 1000;  // the runner keeps frames of scenes up to this many balls
+  if (shown->n < 1 || shown->n > kMaxFrameBalls)
+    throw InputError(fmt::format("n: {} balls, not a run with frames (those have 1 to {} balls)", shown->n, kMaxFrameBalls));
+  check_frames(runs);
   const Result& s = *shown;
   std::vector<double> radius = s.series.radius;
   if (static_cast<int>(radius.size()) != s.n) radius.assign(s.n, s.series.radius_mean);  // files without radii

@@ -7,6 +7,7 @@
 
 #include "bench_results.h"
 #include "input_error.h"
+#include "report_text.h"
 #include "report_writer.h"
 
 namespace ballbench {
@@ -84,7 +85,7 @@ TEST(BenchResults, ReadsHarnessBenchmarksAndTheReportShowsThem) {
   ReportInputs in;
   in.run = nlohmann::json::object();
   in.harness = b;
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   for (const char* want : {"## Harness overhead", "| home | gas | 100000 | 10 | 35.0 | 38.5 | 1.10 |",
                            "| home | gas | 100000 | 1 | 40.0 | 110.0 | 2.75 |", "failed: out of memory",
                            "keeping 1.33 of 2 cores", "together **0.12** of the engine's step"})
@@ -111,7 +112,7 @@ TEST(BenchResults, TheScalingTablesRankNoEngineAndTellOursByRole) {
   in.run = nlohmann::json::object();
   in.bench = b;
   in.roles = {{"mine", EngineRole::ours}, {"oracle", EngineRole::reference}, {"seed", EngineRole::thesis}};
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   EXPECT_EQ(md.find("against the fastest"), std::string::npos) << md;
   EXPECT_NE(md.find("not which is cheaper"), std::string::npos) << md;
   EXPECT_NE(md.find("`mine` at 1000 balls: 100000.0 steps per second"), std::string::npos) << md;
@@ -144,7 +145,7 @@ TEST(BenchResults, TheReportShowsWhatIsTheEngineAndWhatIsThePipe) {
   ReportInputs in;
   in.run = nlohmann::json::object();
   in.bench = b;
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   EXPECT_NE(md.find("| rapier/tuned | gas | 1000 | 1739 | 1210 | 262 |"), std::string::npos) << md;
   EXPECT_EQ(md.find("| home | gas | 1000 |"), std::string::npos) << md;  // in this process: no pipe
 }

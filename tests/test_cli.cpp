@@ -491,7 +491,7 @@ esac
   EXPECT_NE(o.err.find("--benchmark_filter='^none/': no benchmark matched it"), std::string::npos) << o.err;
   const std::string bench = slurp((dir / "out" / "results" / "bench.json").string());
   EXPECT_NE(bench.find("step/home/default/gas/1000"), std::string::npos) << bench;
-  EXPECT_NE(slurp((dir / "out" / "REPORT.md").string()).find("## Scaling"), std::string::npos);
+  EXPECT_NE(slurp((dir / "out" / "pages" / "scaling.md").string()).find("## Scaling"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
 

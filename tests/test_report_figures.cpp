@@ -10,6 +10,7 @@
 #include <string>
 
 #include "figures.h"
+#include "report_text.h"
 #include "report_writer.h"
 #include "viewer_page.h"
 
@@ -53,9 +54,9 @@ TEST(ReportFigures, TheEnergyKeySaysWhenARunStopped) {
 TEST(ReportFigures, TheGlossaryGivesEachUnitOnce) {
   ReportInputs in;
   in.run = nlohmann::json::object();  // results/run.json, here with nothing in it
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   for (const char* once : {"- **slip at end (m/s)**: ", "- **time to roll (s)**: ", "- **angle of repose (deg)**: "})
-    EXPECT_NE(md.find(once), std::string::npos) << once << "\n" << md.substr(md.find("## Glossary"));
+    EXPECT_NE(md.find(once), std::string::npos) << once << "\n" << md.substr(md.find("## Table columns"));
   for (const char* twice : {"(m/s)** (m/s)", "(s)** (s)", "(deg)** (deg)"})
     EXPECT_EQ(md.find(twice), std::string::npos) << twice;
   EXPECT_NE(md.find("- **momentum drift (max abs)** (kg m/s): "), std::string::npos) << "a unit not in the header stays";

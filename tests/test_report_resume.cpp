@@ -8,11 +8,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
 
+#include "page_links.h"
 #include "registry.h"
 #include "result.h"
 #include "viewer_page.h"
@@ -35,6 +37,48 @@ std::string cheap_engines() {
 std::string slurp(const fs::path& path) {
   std::ifstream in(path);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// REPORT.md and every page of the report in `dir`, joined: what a reader can reach from it.
+std::string report_text(const fs::path& dir) {
+  std::string text = slurp(dir / "REPORT.md");
+  std::vector<fs::path> pages;
+  for (const char* folder : {"scenes", "pages"})
+    if (fs::exists(dir / folder))
+      for (const auto& e : fs::directory_iterator(dir / folder)) pages.push_back(e.path());
+  std::sort(pages.begin(), pages.end());
+  for (const auto& p : pages) text += slurp(p);
+  return text;
+}
+
+// Every link of the report's pages that leads nowhere: a file that is not there, or an anchor that
+// its page has no heading for.
+std::vector<std::string> broken_links(const fs::path& dir) {
+  std::vector<fs::path> pages = {dir / "REPORT.md"};
+  for (const char* folder : {"scenes", "pages"})
+    if (fs::exists(dir / folder))
+      for (const auto& e : fs::directory_iterator(dir / folder)) pages.push_back(e.path());
+  std::vector<std::string> broken;
+  for (const fs::path& page : pages) {
+    const std::string text = slurp(page);
+    for (size_t open = text.find("]("); open != std::string::npos; open = text.find("](", open + 2)) {
+      const std::string target = text.substr(open + 2, text.find(')', open + 2) - open - 2);
+      if (target.find("://") != std::string::npos) continue;
+      const size_t hash = target.find('#');
+      const fs::path file = hash == 0 ? page : (page.parent_path() / target.substr(0, hash)).lexically_normal();
+      // A link out of the report's folder is into the source tree (scenarios/README.md), not here.
+      if (file.lexically_relative(dir.lexically_normal()).string().starts_with("..")) continue;
+      if (!fs::exists(file)) {
+        broken.push_back(page.filename().string() + ": " + target);
+        continue;
+      }
+      if (hash == std::string::npos || file.extension() != ".md") continue;
+      const auto anchors = page_anchors(slurp(file));
+      if (std::find(anchors.begin(), anchors.end(), target.substr(hash + 1)) == anchors.end())
+        broken.push_back(page.filename().string() + ": " + target);
+    }
+  }
+  return broken;
 }
 
 class ReportResume : public ::testing::Test {
@@ -188,7 +232,8 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
   EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
   ASSERT_TRUE(fs::exists(out() / "REPORT.md"));
   // The quick suite's other parts: a sweep and a stability frontier, each with its figure.
-  const std::string md = slurp(out() / "REPORT.md");
+  const std::string md = report_text(out()), front = slurp(out() / "REPORT.md");
+  EXPECT_EQ(broken_links(out()), std::vector<std::string>{});
   for (const char* want : {"## Work against precision: `seed-box`", "figures/seed-box-work-precision.png",
                            "## Stability frontier: `seed-box`", "figures/seed-box-frontier.png",
                            "## Restitution calibration", "| ball-wall 0.1 | ball-wall 1 | ball-wall 10 | ball-ball 0.1 |",
@@ -199,18 +244,20 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            "Over 3 random placements", "| exact | 3 |",
                            // the friction section: rolling against the closed forms, engines without friction
                            // refusing with the reason, and both heaps' angles side by side
-                           "## Friction", "### `slide-to-roll`: rolling against the closed form",
+                           "# Friction", "### `slide-to-roll`: rolling against the closed form",
                            "### `spin-drop`: rolling against the closed form",
                            "| home-seed | default | unsupported: home-seed cannot run scene 'spin-drop'",
                            "| engine | `rough-pile` (deg) | `smooth-pile` (deg) |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
-  // Equal accuracy first: the summary, each match scene's section with its front, and every try's CSV.
-  for (const char* want : {"## Summary", "| [`seed-box`](#equal-accuracy-seed-box) (gas) |",
-                           "## Equal accuracy: `seed-box`", "## Equal accuracy: `seed-bowl`",
-                           "figures/seed-bowl-front.png", "figures/fronts.png"})
+  // The answer first, on its own page: the use cases, each linked to its scene's page, which holds
+  // the equal-accuracy section with its front; every try's CSV beside.
+  for (const char* want : {"| use case (scene) |", "](scenes/seed-box.md#equal-accuracy-seed-box) (`seed-box`, ",
+                           "figures/fronts.png", "[Terms](pages/terms.md)"})
+    EXPECT_NE(front.find(want), std::string::npos) << want;
+  EXPECT_EQ(front.find("## Every engine"), std::string::npos) << "the scene tables are on the scenes' pages";
+  for (const char* want : {"## Equal accuracy: `seed-box`", "## Equal accuracy: `seed-bowl`", "figures/seed-bowl-front.png"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
-  EXPECT_LT(md.find("## Summary"), md.find("## Scene `seed-box`"));
   for (const char* file : {"figures/seed-box-front.png", "figures/fronts.png", "results/match-seed-bowl.csv"})
     EXPECT_TRUE(fs::exists(out() / file)) << file;
   // The seed scenes in motion: an animated GIF each (one graphic control block per frame), under 2 MB.
@@ -227,7 +274,8 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
     ASSERT_TRUE(fs::exists(viewer)) << scene;
     EXPECT_LT(static_cast<double>(fs::file_size(viewer)), kViewerPageBytes) << scene;
     EXPECT_NE(slurp(viewer).find("\"scene\":\"" + std::string(scene) + "\""), std::string::npos) << scene;
-    EXPECT_NE(md.find("**Trajectory viewer**: [figures/" + std::string(scene) + "-viewer.html]"), std::string::npos) << scene;
+    EXPECT_NE(md.find("**Trajectory viewer**: [figures/" + std::string(scene) + "-viewer.html](../figures/"), std::string::npos)
+        << scene;
   }
   EXPECT_TRUE(fs::exists(out() / "results" / "sweep-seed-box.csv"));
   EXPECT_EQ(md.find("## Scaling"), std::string::npos);  // --no-bench, and the report says so
@@ -268,8 +316,9 @@ TEST_F(ReportResume, FullRunsEveryPartOfTheCompleteEvidence) {
   }
   // Two placements of each scene instead of the full suite's ten: the parts are what is checked.
   ASSERT_EQ(report("--full --seeds 2"), 0) << err_;
-  const std::string md = slurp(out() / "REPORT.md");
-  for (const char* want : {"## Scene `pile`", "## Work against precision: `seed-bowl`", "## Stability frontier: `seed-bowl`",
+  const std::string md = report_text(out());
+  EXPECT_TRUE(fs::exists(out() / "scenes" / "pile.md"));
+  for (const char* want : {"# `pile`", "## Work against precision: `seed-bowl`", "## Stability frontier: `seed-bowl`",
                            "Over 2 random placements"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_NE(slurp(out() / "results" / "run.json").find("\"suite\": \"full\""), std::string::npos);
@@ -277,6 +326,7 @@ TEST_F(ReportResume, FullRunsEveryPartOfTheCompleteEvidence) {
   ASSERT_EQ(report("--fresh"), 0) << err_;
   EXPECT_FALSE(fs::exists(results("pile")));
   EXPECT_FALSE(fs::exists(out() / "results" / "sweep-seed-bowl.json"));
+  EXPECT_FALSE(fs::exists(out() / "scenes" / "pile.md")) << "nor its pages";
 }
 
 TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
@@ -316,8 +366,9 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
                                           "smooth-pile.json", "stress-seed-box.json",
                                           "sweep-seed-box.csv", "sweep-seed-box.json", "match-seed-box.json",
                                           "match-seed-box.csv", "match-seed-bowl.json", "match-seed-bowl.csv"}));
-  const std::string md = slurp(merged / "REPORT.md");
-  for (const char* want : {"## Scene `seed-box`", "## Scene `seed-bowl`", "## Work against precision: `seed-box`",
+  const std::string md = report_text(merged);
+  EXPECT_EQ(broken_links(merged), std::vector<std::string>{});
+  for (const char* want : {"# `seed-box`", "# `seed-bowl`", "## Work against precision: `seed-box`",
                            "## Stability frontier: `seed-box`", "## Restitution calibration"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_NE(slurp(merged / "results" / "run.json").find("\"shards\""), std::string::npos);

@@ -9,6 +9,7 @@
 
 #include "bench_results.h"
 #include "metrics/meter_set.h"
+#include "report_text.h"
 #include "report_writer.h"
 #include "result.h"
 
@@ -38,18 +39,20 @@ Result run(std::string engine, std::string scene, const SceneFeatures& f, double
   return r;
 }
 
-// The text of the section that starts with `heading`, up to the next heading of its level.
+// The text of the section that starts with `heading`, up to the next heading.
 std::string section(const std::string& md, const std::string& heading) {
   const size_t at = md.find(heading);
   if (at == std::string::npos) return "";
-  const size_t end = md.find("\n## ", at + heading.size());
+  const size_t end = md.find("\n#", at + heading.size());
   return md.substr(at, end == std::string::npos ? std::string::npos : end - at);
 }
 
-// The first table line of `text` (its header).
+// The header lines of `text`'s tables, joined (a wide table is split into several).
 std::string header(const std::string& text) {
-  const size_t at = text.find("\n| engine |");
-  return at == std::string::npos ? "" : text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+  std::string out;
+  for (size_t at = text.find("\n| engine |"); at != std::string::npos; at = text.find("\n| engine |", at + 1))
+    out += text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+  return out;
 }
 
 ReportInputs inputs(std::vector<Result> results) {
@@ -61,11 +64,11 @@ ReportInputs inputs(std::vector<Result> results) {
 
 TEST(ReportSections, AScenesTableHasTheColumnsThatMeanSomethingOnItAndTheRestInItsAppendix) {
   const SceneFeatures pile = features(true, true, false), gas = features(false, false, true);
-  const std::string md =
-      render_report(inputs({run("a", "pile", pile, 10), run("b", "pile", pile, 20), run("a", "gas", gas, 10),
-                            run("b", "gas", gas, 20)}));
-  const std::string pile_table = header(section(md, "## Scene `pile`"));
-  const std::string gas_table = header(section(md, "## Scene `gas`"));
+  const auto pages = render_report(inputs({run("a", "pile", pile, 10), run("b", "pile", pile, 20),
+                                           run("a", "gas", gas, 10), run("b", "gas", gas, 20)}));
+  const std::string pile_page = page_text(pages, "scenes/pile.md"), gas_page = page_text(pages, "scenes/gas.md");
+  const std::string pile_table = header(section(pile_page, "## Every engine"));
+  const std::string gas_table = header(section(gas_page, "## Every engine"));
   // Walls and gravity: no momentum; restitution below 1: the energy left, not a drift.
   EXPECT_EQ(pile_table.find("momentum drift"), std::string::npos) << pile_table;
   EXPECT_EQ(pile_table.find("energy drift"), std::string::npos) << pile_table;
@@ -76,15 +79,13 @@ TEST(ReportSections, AScenesTableHasTheColumnsThatMeanSomethingOnItAndTheRestInI
   EXPECT_NE(gas_table.find("momentum drift"), std::string::npos) << gas_table;
   EXPECT_NE(gas_table.find("energy drift"), std::string::npos) << gas_table;
   EXPECT_EQ(gas_table.find("E final / E0"), std::string::npos) << gas_table;
-  // The pile's other columns in its appendix, at the end.
-  const std::string appendix = section(md, "### Appendix: `pile`");
+  // The pile's other columns below its table, on its page.
+  const std::string appendix = pile_page.substr(pile_page.find("### The other columns"));
   EXPECT_NE(header(appendix).find("momentum drift"), std::string::npos) << appendix;
   EXPECT_NE(header(appendix).find("penetration max"), std::string::npos) << appendix;
-  EXPECT_GT(md.find("### Appendix: `pile`"), md.find("## Glossary"));
-  EXPECT_NE(md.find("[appendix](#appendix-pile)"), std::string::npos);
   // The energy a restitution below 1 loses is physics, not drift; a gas's drift is the engine's.
-  EXPECT_EQ(section(md, "## Scene `pile`").find("energy drifted"), std::string::npos);
-  EXPECT_NE(section(md, "## Scene `gas`").find("energy drifted by up to 50%"), std::string::npos);
+  EXPECT_EQ(pile_page.find("energy drifted"), std::string::npos);
+  EXPECT_NE(gas_page.find("energy drifted by up to 50%"), std::string::npos);
 }
 
 TEST(ReportSections, AChaoticSceneRanksByTheHorizonNotTheFinalError) {
@@ -96,20 +97,20 @@ TEST(ReportSections, AChaoticSceneRanksByTheHorizonNotTheFinalError) {
   }
   runs[1].reference.pos_rms_final = 6.0, runs[1].reference.horizon = 1.96;
   runs[2].reference.pos_rms_final = 4.4, runs[2].reference.horizon = 0.05;
-  const std::string md = render_report(inputs(runs));
-  const std::string scene = section(md, "## Scene `box`");
+  const std::string md = page_text(render_report(inputs(runs)), "scenes/box.md");
+  const std::string scene = section(md, "## Every engine");
   EXPECT_NE(header(scene).find("horizon (s)"), std::string::npos) << scene;
   EXPECT_EQ(header(scene).find("pos error"), std::string::npos) << scene;
   EXPECT_NE(scene.find("**1.96**"), std::string::npos) << scene;  // the later horizon
   EXPECT_NE(scene.find("Chaotic"), std::string::npos) << scene;
-  // The final error is in the appendix, where nothing is marked best.
-  const std::string appendix = section(md, "### Appendix: `box`");
+  // The final error is among the other columns, where nothing is marked best.
+  const std::string appendix = md.substr(md.find("### The other columns"));
   EXPECT_NE(header(appendix).find("pos error"), std::string::npos) << appendix;
   EXPECT_EQ(appendix.find("**"), std::string::npos) << appendix;
 
   // Where an engine stays with the reference the scene is not chaotic: the final error ranks.
   runs[1].reference.horizon.reset();
-  const std::string calm = section(render_report(inputs(runs)), "## Scene `box`");
+  const std::string calm = section(page_text(render_report(inputs(runs)), "scenes/box.md"), "## Every engine");
   EXPECT_NE(header(calm).find("pos error"), std::string::npos) << calm;
   EXPECT_NE(calm.find("**4.4**"), std::string::npos) << calm;
 }
@@ -122,17 +123,18 @@ TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
   diverged.status = RunStatus::diverged, diverged.diverged_step = 40, diverged.steps_done = 40;
   Result refused = run("lazy", "bowl", bowl, 0);
   refused.status = RunStatus::unsupported, refused.steps_done = 0, refused.error = "no walls";
-  const std::string md =
-      render_report(inputs({fast_but_broken, diverged, refused, run("a", "bowl", bowl, 10), run("b", "bowl", bowl, 20)}));
-  const std::string scene = section(md, "## Scene `bowl`");
-  // Timings at the scene's own step are not ranked (the engines reach different accuracies there):
-  // no run is "fastest", least of all one that tunnels or diverged.
-  for (const char* t : {"**10.0**", "**1.0**", "**0.5**", "**20.0**"}) EXPECT_EQ(scene.find(t), std::string::npos) << t;
+  const std::string scene = page_text(
+      render_report(inputs({fast_but_broken, diverged, refused, run("a", "bowl", bowl, 10), run("b", "bowl", bowl, 20)})),
+      "scenes/bowl.md");
+  // No cost at the scene's own step (the engines reach different accuracies there): no run is
+  // "fastest", least of all one that tunnels or diverged.
+  EXPECT_EQ(scene.find("ns/ball-step"), std::string::npos) << scene;
+  EXPECT_EQ(scene.find("ns per ball-step"), std::string::npos) << scene;
   // Wall tunnelling and sticking are 0 in every ok run: no best among equals; the pair tunnelling
   // ranks the runs that did not tunnel above the one that did.
-  EXPECT_NE(scene.find("| a 1 | default | ok | 0.5 | 0 | **0** | 0 | 0 |"), std::string::npos) << scene;
+  EXPECT_NE(scene.find("| a | default | ok | 0.5 | 0 | **0** | 0 | 0 |"), std::string::npos) << scene;
   // The refused run has no figures: n/a, never a dash or a zero, and never bold.
-  const size_t row = scene.find("| lazy 1 |");
+  const size_t row = scene.find("| lazy |");
   ASSERT_NE(row, std::string::npos) << scene;
   const std::string line = scene.substr(row, scene.find('\n', row) - row);
   EXPECT_NE(line.find("| unsupported | n/a |"), std::string::npos) << line;
@@ -146,7 +148,7 @@ TEST(ReportSections, ThePlacementsOverlapIsSaidApartFromTheEnginesPenetration) {
   std::vector<Result> runs = {run("a", "box", box, 10), run("b", "box", box, 20)};
   for (Result& r : runs) r.metrics.set("penetration.initial", 0.472), r.metrics.set("penetration.max", 0.472);
   runs[0].metrics.set("penetration.after_start", 0.01), runs[1].metrics.set("penetration.after_start", 0.2);
-  const std::string scene = section(render_report(inputs(runs)), "## Scene `box`");
+  const std::string scene = section(page_text(render_report(inputs(runs)), "scenes/box.md"), "## Every engine");
   EXPECT_NE(scene.find("overlapping by up to 0.472 of a radius (every engine, `penetration.initial`)"),
             std::string::npos)
       << scene;
@@ -159,8 +161,11 @@ TEST(ReportSections, SettingsAreALinkToTheResultsFileNotInlineJson) {
   r.settings = {{"secret_knob", 42}};
   ReportInputs in = inputs({r, run("b", "box", features(true, false, true), 20)});
   in.result_files["box"] = "results/box.json";
-  const std::string md = render_report(in);
-  EXPECT_NE(section(md, "## Engine settings").find("[results/box.json](results/box.json)"), std::string::npos) << md;
+  const std::string md = all_pages(render_report(in));
+  // Linked from the engines page, one folder down.
+  EXPECT_NE(page_text(render_report(in), "pages/engines.md").find("[results/box.json](../results/box.json)"),
+            std::string::npos)
+      << md;
   EXPECT_EQ(md.find("secret_knob"), std::string::npos);
 }
 
@@ -201,7 +206,7 @@ TEST(ReportSections, ASleepingPileGetsNoRateAndTheScalingRanksNoEngine) {
   ReportInputs in = inputs({});
   in.bench = b;
   in.roles = {{"mine", EngineRole::ours}};
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   // At the scene's own step, each engine at whatever accuracy that gives: no ratio between them.
   EXPECT_EQ(md.find(" against the fastest"), std::string::npos) << md;
   EXPECT_EQ(md.find("0.0x"), std::string::npos) << md;
@@ -223,7 +228,7 @@ TEST(ReportSections, AMergedReportShowsEveryShardsMachineAndWhatWasLeftOut) {
       {"cpu": "Epyc B", "cores": 64, "command": "ballbench report --shard 2/2 --no-bench", "date": "d2",
        "shard": {"index": 2, "count": 2}, "ran": ["table:seed-bowl"],
        "left_out": ["the scaling and harness overhead sections: --no-bench"]}]})");
-  const std::string md = render_report(in);
+  const std::string md = all_pages(render_report(in));
   for (const char* want : {"This report: `ballbench merge a b --out m`", "| | shard 1/2 | shard 2/2 |",
                            "| cpu | Xeon A | Epyc B |", "| cores | 2 | 64 |",
                            "| parts | table:seed-box, calibration | table:seed-bowl |",

@@ -14,6 +14,7 @@
 #include "input_error.h"
 #include "interrupt.h"
 #include "match.h"
+#include "report_writer.h"
 #include "run_engines.h"
 #include "sweep_result.h"
 
@@ -116,7 +117,8 @@ void merge_reports(const MergeArgs& a) {
   {  // what the merge writes (OUT/results, OUT/figures, OUT/REPORT.md) holds nothing it reads
     std::vector<PathUse> uses = noted_input_files();
     for (const auto& folder : a.shards) uses.push_back({"SHARD", (fs::path(folder) / "results/run.json").string(), false});
-    for (const char* part : {"results", "figures"}) uses.push_back({"--out", (fs::path(a.out) / part).string(), true, true});
+    uses.push_back({"--out", (fs::path(a.out) / "results").string(), true, true});
+    for (const char* part : kRenderedFolders) uses.push_back({"--out", (fs::path(a.out) / part).string(), true, true});
     uses.push_back({"--out", (fs::path(a.out) / "REPORT.md").string(), true});
     check_path_clashes(uses);
   }

@@ -494,6 +494,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
   if (!o.isolation.enabled) o.jobs = 1;  // engines in this process run one at a time
   MatchResult m;
   m.scene = scene.name, m.scene_source = scene.source, m.scene_class = scene_class_name(scene_class(scene));
+  m.use_case = scene.use_case;
   m.n = scene.n(), m.dt = scene.dt, m.spec = o.spec, m.context = context;
   m.budget_runs = o.budget_runs, m.run_ball_steps = long(scene.n()) * scene.steps();
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;

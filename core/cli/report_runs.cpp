@@ -1,0 +1,298 @@
+#include "report_runs.h"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "bench_results.h"
+#include "data_file.h"
+#include "input_error.h"
+#include "interrupt.h"
+#include "match.h"
+#include "progress.h"
+#include "registry.h"
+#include "restitution_calibration.h"
+#include "scene_loader.h"
+#include "stability_frontier.h"
+#include "sweep.h"
+#include "viewer_page.h"
+
+namespace ballbench::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A progress line on stderr, unless --quiet.
+template <class... Args>
+void progress_line(fmt::format_string<Args...> f, Args&&... args) {
+  if (!Progress::quiet) fmt::print(stderr, f, std::forward<Args>(args)...);
+}
+
+bool contains(const std::vector<std::string>& names, const std::string& name) {
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+// A results file holding exactly the runs a report makes of `scene` (every engine x profile),
+// left by an earlier report that stopped later on: reusing it resumes the report. Files are written
+// whole (write_results_file), so one that reads back is complete.
+bool complete_results(const std::string& path, const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                      int seeds) {
+  if (!std::filesystem::exists(path)) return false;
+  std::vector<Result> found;
+  try {
+    found = read_results_file(path);
+  } catch (const InputError&) {
+    return false;
+  }
+  std::vector<std::string> want, have;
+  for (int k = 0; k < seeds; ++k)
+    for (const auto* e : engines)
+      for (const auto& p : profiles_for(*e, "all")) want.push_back(fmt::format("{}/{}/{}", e->info.name, p, k));
+  for (const auto& r : found) {
+    if (r.status == RunStatus::interrupted) return false;  // a report stopped in this part
+    if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n()) return false;
+    have.push_back(fmt::format("{}/{}/{}", r.engine, r.profile, r.seed_offset));
+  }
+  std::sort(want.begin(), want.end()), std::sort(have.begin(), have.end());
+  return want == have;
+}
+
+// A sweep or frontier file left by an earlier report that reads back and ran to its end.
+template <class Read>
+bool uninterrupted(const std::string& path, Read read) {
+  if (!fs::exists(path)) return false;
+  try {
+    return read(path).interrupted.empty();
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
+// Runs benchmark binary `bin` once per filter into `path` (Google Benchmark's JSON, via its own
+// --benchmark_out, the processes' outputs joined); its console table goes to stderr as progress.
+// `found` says whether an output holds what the filter asked for. A missing binary is reported and
+// the section skipped ("`section` skipped: ..."); a filter whose run failed or found nothing is
+// reported and left out, and the other filters' results stand. Returns what was left out, for the
+// report to say (one line each).
+std::vector<std::string> run_bench(const std::string& bin, const std::vector<std::string>& filters, std::optional<double> min_time,
+               double budget_s, const std::string& path, const std::string& section,
+               const std::function<bool(const BenchResults&)>& found) {
+  std::vector<std::string> left_out;
+  if (bin.empty() || ::access(bin.c_str(), X_OK) != 0) {
+    fmt::print(stderr, "{} skipped: no benchmark at {} (build with -DBALLBENCH_BENCH=ON)\n", section, bin);
+    return {fmt::format("the {} section: no benchmark binary at {} (built without -DBALLBENCH_BENCH=ON)", section,
+                        fs::path(bin).filename().string())};
+  }
+  progress_line("running {} for the {} section\n", bin, section);
+  // One process per filter, so a filter that runs one benchmark alone (the 10^6 bowl) has its peak
+  // resident set to itself.
+  nlohmann::json joined;
+  for (size_t k = 0; k < filters.size(); ++k) {
+    const std::string& filter = filters[k];
+    const std::string tmp = create_temp_beside(path, "the benchmark output");  // this report's own
+    const std::string cmd =
+        fmt::format("'{}' --benchmark_filter='{}' {} --budget_s={} --benchmark_out='{}' --benchmark_out_format=json {}",
+                    bin, filter, min_time ? fmt::format("--benchmark_min_time={}", *min_time) : "", budget_s, tmp,
+                    Progress::quiet ? ">/dev/null 2>&1" : "1>&2");
+    const int rc = std::system(cmd.c_str());
+    // std::system ignores SIGINT while it waits; a benchmark ended by the terminal's SIGINT (or a
+    // SIGTERM) is this report's interrupt too, raised here so that interrupt.h sees it.
+    const int sig = WIFSIGNALED(rc) ? WTERMSIG(rc) : WIFEXITED(rc) && WEXITSTATUS(rc) > 128 ? WEXITSTATUS(rc) - 128 : 0;
+    if (sig == SIGINT || sig == SIGTERM || interrupt_signal()) {
+      fs::remove(tmp);
+      if (!interrupt_signal()) std::raise(sig);
+      return left_out;
+    }
+    std::string why = rc == 0            ? ""
+                      : WIFEXITED(rc)    ? fmt::format("it failed (exit status {})", WEXITSTATUS(rc))
+                      : WIFSIGNALED(rc)  ? fmt::format("it was killed by signal {}", WTERMSIG(rc))
+                                         : fmt::format("it failed (wait status {})", rc);
+    // Google Benchmark writes nothing, and exits 0, when its filter matches no benchmark.
+    const bool empty = why.empty() && fs::file_size(tmp) == 0;
+    if (empty) why = "no benchmark matched it (`--benchmark_list_tests` lists them)", fs::remove(tmp);
+    if (why.empty()) try {
+        if (!found(read_bench_file(tmp))) why = "no benchmark matched " + filter;
+      } catch (const InputError& e) {
+        why = e.what();
+      }
+    if (!why.empty()) {  // this filter's part is left out; the others' stand
+      fmt::print(stderr, "{}: part skipped: {} --benchmark_filter='{}': {}{}\n", section, bin, filter, why,
+                 empty ? "" : "; its output is in " + tmp);
+      left_out.push_back(fmt::format("part of the {} section, --benchmark_filter='{}': {}", section, filter, why));
+      continue;
+    }
+    const nlohmann::json part = parse_json_file(tmp, "Google Benchmark JSON");
+    if (joined.is_null()) joined = part;
+    else for (const auto& b : part.at("benchmarks")) joined["benchmarks"].push_back(b);
+    fs::remove(tmp);
+  }
+  if (joined.is_null()) {
+    fmt::print(stderr, "{} skipped: no part of it ran\n", section);
+    return left_out;
+  }
+  write_file_atomically(path, joined.dump(2) + "\n", "the benchmark results");
+  return left_out;
+}
+
+std::string path_of(const ReportRun& run, const ReportPart& part) { return run.results_dir + "/" + part_file(part); }
+
+// Every engine and profile at the scene's own step, on each placement the suite asks for.
+void run_table(const ReportRun& run, const ReportPart& part) {
+  const Scene scene = load_scene(part.scene);
+  const int seeds = scene.random_placement ? run.suite.seeds : 1;
+  RunOptions options;
+  // The error against `exact` (or a converged run) in every row, but for the heaps.
+  if (!contains(run.suite.unreferenced, part.scene)) use_reference(options);
+  // A scene marked `animated` (the thesis's): in the viewer and a GIF, as many frames as a page of every run holds.
+  if (scene.animated) options.frames = viewer_frames(scene, static_cast<int>(run_count(run.engines, "all")));
+  std::vector<Result> runs = run_all(scene, run.engines, "all", options, run.quiet, run.isolation);
+  // Further placements, for the ensemble table: without frames (the animation and the viewer are of offset 0).
+  options.frames = 0;
+  run_further_placements(runs, scene, seeds, [&](int k) { return load_scene(part.scene, k); }, run.engines, "all",
+                         options, run.quiet, run.isolation);
+  write_results_file(path_of(run, part), runs);
+}
+
+void run_match_part(const ReportRun& run, const ReportPart& part) {
+  const Scene scene = load_scene(part.scene);
+  MatchOptions o;
+  o.spec = scene_spec(scene);
+  o.budget_runs = run.suite.match_budget;
+  o.ceiling = run.suite.match_ceiling;
+  o.max_halvings = run.suite.match_max_halvings;
+  o.store = run.store;
+  o.jobs = std::max(1, int(std::thread::hardware_concurrency()));
+  o.isolation = run.isolation;
+  o.reference = reference_engine();
+  o.converged_reference = converged_reference_engine();
+  o.quiet = run.quiet;
+  write_match_files(run_match(scene, run.matched, o, run_context()), path_of(run, part),
+                    fmt::format("{}/match-{}.csv", run.results_dir, part.scene));
+}
+
+void run_sweep_part(const ReportRun& run, const ReportPart& part) {
+  SweepOptions o;
+  o.repeats = 5;
+  o.quiet = run.quiet;
+  o.reference = reference_engine();
+  o.isolation = run.isolation;
+  write_sweep_files(run_sweep(load_scene(part.scene), run.swept, o, run_context()), path_of(run, part),
+                    fmt::format("{}/sweep-{}.csv", run.results_dir, part.scene));
+}
+
+void run_stress_part(const ReportRun& run, const ReportPart& part) {
+  const Scene scene = load_scene(part.scene);
+  StressOptions o;
+  o.profile = "all";
+  o.levels = run.suite.stress_levels;
+  o.quiet = run.quiet;
+  o.reference = reference_engine();
+  o.isolation = run.isolation;
+  if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
+  write_frontier_file(path_of(run, part), run_frontier(scene, run.swept, o, run_context()));
+}
+
+void run_calibration_part(const ReportRun& run, const ReportPart& part) {
+  CalibrationOptions o;
+  o.isolation.timeout_s = run.suite.timeout_s;
+  write_calibration_file(path_of(run, part), run_calibration(run.engines, o, run_context()));
+}
+
+std::string harness_path(const ReportRun& run) { return run.results_dir + "/harness.json"; }
+
+// The step benchmark, then the harness benchmark beside it (their ratios from one machine).
+void run_bench_part(const ReportRun& run, const ReportPart& part) {
+  const auto also = [&](const std::vector<std::string>& lines) {
+    if (run.left_out) run.left_out->insert(run.left_out->end(), lines.begin(), lines.end());
+  };
+  const ReportSuite& s = run.suite;
+  if (!fs::exists(path_of(run, part)))
+    also(run_bench(run.bench_binary, s.bench_filters, s.bench_min_time, s.bench_budget_s, path_of(run, part),
+                   "scaling", [](const BenchResults& b) { return !b.rows.empty() || !b.pipe.empty(); }));
+  if (interrupt_signal()) return;
+  if (!fs::exists(harness_path(run)))
+    also(run_bench((fs::path(run.bench_binary).parent_path() / "ballbench_harness_benchmark").string(),
+                   {s.harness_filter}, std::nullopt, s.bench_budget_s, harness_path(run), "harness overhead",
+                   [](const BenchResults& b) { return !b.harness.empty(); }));
+}
+
+// How each kind of part runs and is known complete.
+struct PartRunner {
+  PartKind kind;
+  void (*run)(const ReportRun&, const ReportPart&);
+  bool (*complete)(const ReportRun&, const ReportPart&);
+  const char* done;  // the progress line's verb
+};
+
+const PartRunner kRunners[] = {
+    {PartKind::table, run_table,
+     [](const ReportRun& r, const ReportPart& p) {
+       const Scene scene = load_scene(p.scene);
+       return complete_results(path_of(r, p), scene, r.engines, scene.random_placement ? r.suite.seeds : 1);
+     },
+     "ran"},
+    {PartKind::match, run_match_part,
+     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_match_file); }, "matched"},
+    {PartKind::sweep, run_sweep_part,
+     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_sweep_file); }, "swept"},
+    {PartKind::stress, run_stress_part,
+     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_frontier_file); },
+     "stressed"},
+    {PartKind::calibration, run_calibration_part,
+     [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)); }, "calibrated"},
+    {PartKind::bench, run_bench_part,
+     [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)) && fs::exists(harness_path(r)); },
+     "benchmarked"},
+};
+
+const PartRunner& runner(PartKind k) {
+  for (const PartRunner& r : kRunners)
+    if (r.kind == k) return r;
+  throw std::logic_error("a part kind without a runner");
+}
+
+}  // namespace
+
+// A benchmark binary built beside this executable (build/<preset>/bench/ next to core/cli/).
+std::string default_bench_binary(const std::string& name) {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  return (self.parent_path().parent_path().parent_path() / "bench" / name).string();
+}
+
+void choose_engines(ReportRun& run, const std::vector<const EngineEntry*>& engines) {
+  // Sweeps, frontiers and matches may leave out engines whose runs are costly: each of their points
+  // is a run of its own, which starts the engine's process (a Node engine: 0.1 to 0.4 s) or Open MPI
+  // and thousands of DEM sub-steps (LAMMPS), hundreds of times over. Their scene tables,
+  // calibration and benchmarks have every engine.
+  for (const std::string& name : run.suite.match_costly_engines)
+    if (!contains(engine_names(), name))
+      throw InputError(fmt::format("the suite's match_costly_engines: unknown engine '{}'", name));
+  run.engines = run.swept = run.matched = engines;
+  if (run.suite.costly_engines) return;
+  std::erase_if(run.swept, [](const EngineEntry* e) { return e->info.costly_runs; });
+  std::erase_if(run.matched, [&](const EngineEntry* e) {
+    return e->info.costly_runs && !contains(run.suite.match_costly_engines, e->info.name);
+  });
+}
+
+bool part_complete(const ReportRun& run, const ReportPart& part) { return runner(part.kind).complete(run, part); }
+
+void run_part(const ReportRun& run, const ReportPart& part) {
+  const PartRunner& r = runner(part.kind);
+  r.run(run, part);
+  if (!interrupt_signal()) progress_line("{} {}\n", r.done, part.scene.empty() ? part_word(part) : part.scene);
+}
+
+}  // namespace ballbench::cli
