@@ -28,7 +28,7 @@ const std::array<SpecTermDef, kSpecTermCount>& spec_terms() {
       {SpecTerm::horizon, "horizon", "s", true, true, false,
        "how long every ball stays within a tenth of the mean radius (RMS) of the reference run; at least this"},
       {SpecTerm::rolling, "rolling", "", false, false, false,
-       "the rolling ball's final speed against its closed form, |v - v_closed| / |v_closed|"},
+       "each rolling ball's final speed against its own closed form, the largest |v - v_closed| / |v_closed|"},
   }};
   return terms;
 }

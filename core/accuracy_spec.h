@@ -26,7 +26,7 @@ enum class SpecTerm {
   energy_drift,  // the largest relative drift of the total energy (scenes that conserve it)
   energy_error,  // the largest relative energy error against the reference
   horizon,       // how long the positions stay within the horizon tolerance of the reference (s)
-  rolling,       // the rolling ball's final speed against its closed form, relative
+  rolling,       // each rolling ball's final speed against its own closed form, the largest relative error
 };
 inline constexpr int kSpecTermCount = 8;
 
@@ -76,7 +76,7 @@ struct SceneAccuracy {
 enum class SceneClass {
   gas,      // no gravity: balls fly and collide
   pile,     // gravity and a box: balls settle onto each other (piles, bowls, heaps)
-  rolling,  // a scene that asks for `rolling`: one ball against its closed form
+  rolling,  // a scene that asks for `rolling`: balls on the floor, each against its closed form
   free,     // gravity without a box
 };
 const char* scene_class_name(SceneClass c);

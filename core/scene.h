@@ -43,7 +43,7 @@ const char* inertia_name(Inertia inertia);  // "disk", "sphere"
 // Metrics a scene asks for in its [metrics] table, beyond those every run gets: each is computed
 // only where asked, since each needs a scene built for it (scenarios/README.md).
 struct RequestedMetrics {
-  bool rolling = false;          // one ball on the floor: its final speed against the closed forms (metrics/rolling.h)
+  bool rolling = false;          // balls on the floor: their final speeds against their closed forms (metrics/rolling.h)
   bool angle_of_repose = false;  // a heap on the floor: the slope of its flanks (metrics/angle_of_repose.h)
 };
 

@@ -335,7 +335,6 @@ void read_requested_metrics(const toml::node& node, const std::string& source, S
   const bool floor = s.container.kind == ContainerKind::Box && s.gravity.x() == 0 && s.gravity.y() < 0;
   if (s.metrics.rolling) {
     if (!floor) r.fail(r.node("rolling"), "rolling", "needs a floor: a box container and gravity straight down [0, -g]");
-    if (s.n() != 1) r.fail(r.node("rolling"), "rolling", fmt::format("needs exactly one ball, the scene has {}", s.n()));
     if (!(s.friction > 0)) r.fail(r.node("rolling"), "rolling", "needs friction above 0 (a frictionless ball never rolls)");
   }
   if (s.metrics.angle_of_repose && !floor)

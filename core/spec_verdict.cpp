@@ -1,6 +1,5 @@
 #include "spec_verdict.h"
 
-#include <cmath>
 #include <vector>
 
 #include <fmt/format.h>
@@ -25,12 +24,7 @@ std::optional<double> metric_figure(SpecTerm t, const Lookup& number) {
     case SpecTerm::energy_drift: return number("energy.max_rel_drift");
     case SpecTerm::energy_error:
     case SpecTerm::horizon: return std::nullopt;
-    case SpecTerm::rolling:
-      {
-        const auto speed = number("rolling.speed"), expected = number("rolling.expected_speed");
-        if (!speed || !expected || *expected == 0) return std::nullopt;
-        return std::abs(*speed - *expected) / std::abs(*expected);
-      }
+    case SpecTerm::rolling: return number("rolling.error");
   }
   return std::nullopt;
 }

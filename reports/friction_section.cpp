@@ -32,24 +32,38 @@ std::string source_text(const Result& r) {
   return p.parent_path().filename() == "scenarios" ? "scenarios/" + p.filename().string() : r.scene_source;
 }
 
-// One scene of a ball rolling on the floor: final speed and time to roll against the closed forms.
+// One scene of balls rolling on the floor: final speed and time to roll against the closed forms;
+// of several balls, the one farthest from its own (the rolling meter's pick, metrics/rolling_metric.cpp).
 void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vector<const Result*>& rows) {
   const Result* any = nullptr;
   for (const Result* r : rows)
     if (r->metrics.has("rolling.expected_speed")) any = r;
+  const bool one = any->n == 1;
+  const auto time = [&](const char* before) {
+    return any->metrics.has("rolling.expected_time_to_roll")
+               ? fmt::format("{}**{:.3f} s**", before, any->metrics.value("rolling.expected_time_to_roll"))
+               : std::string();
+  };
   put("### `{}`: rolling against the closed form\n\n", scene);
-  put("`{}`; closed forms from the scene (core/metrics/rolling.h): it ends rolling at **{:.4g} m/s**{}.\n\n",
-      source_text(*any), any->metrics.value("rolling.expected_speed"),
-      any->metrics.has("rolling.expected_time_to_roll")
-          ? fmt::format(" from t = **{:.3f} s**", any->metrics.value("rolling.expected_time_to_roll"))
-          : "");
-  put("The time to roll is the first sample from which the ball rolls (slip below the roll tolerance), so it lies "
-      "up to a step after the closed form; `never`: still slipping at the end.\n\n");
-  put("| engine | profile | status | final speed (m/s) | vs closed form | time to roll (s) | vs closed form | slip at end "
-      "(m/s) |\n|---|---|---|---:|---:|---:|---:|---:|\n");
+  if (one)
+    put("`{}`; closed forms from the scene (core/metrics/rolling.h): it ends rolling at **{:.4g} m/s**{}.\n\n",
+        source_text(*any), any->metrics.value("rolling.expected_speed"), time(" from t = "));
+  else
+    put("`{}`, {} balls; closed forms from the scene (core/metrics/rolling.h): each ball ends rolling at its own "
+        "(v0_i - k r_i w0_i) / (1 + k) (v0_i / (1 + k) without spin){}. The table shows the ball farthest from its "
+        "closed form.\n\n",
+        source_text(*any), any->n, time(", every one by t = "));
+  put("The time to roll is the first sample from which {} (slip below the roll tolerance), so it lies up to a step "
+      "after the closed form; `never`: still slipping at the end.\n\n",
+      one ? "the ball rolls" : "every ball rolls");
+  // Of several balls, each run's farthest may be another ball: its closed form beside its speed.
+  put("| engine | profile | status | {} | vs closed form | time to roll (s) | vs closed form | slip at end "
+      "(m/s) |\n|---|---|---|---:|{}---:|---:|---:|---:|\n",
+      one ? "final speed (m/s)" : "farthest ball's final speed (m/s) | its closed form (m/s)", one ? "" : "---:|");
   for (const Result* r : rows) {
     if (!ran(*r)) {
-      put("| {0} | {1} | {2} | {3} | {3} | {3} | {3} | {3} |\n", r->engine, r->profile, status_text(*r), kNoData);
+      put("| {0} | {1} | {2} | {3} |{4} {3} | {3} | {3} | {3} |\n", r->engine, r->profile, status_text(*r), kNoData,
+          one ? "" : fmt::format(" {} |", kNoData));
       continue;
     }
     const MetricValues& m = r->metrics;
@@ -62,8 +76,9 @@ void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vecto
     }
     if (t && expected_time) time_error = fmt::format("{:+.3f} s", *t - *expected_time);
     const auto slip = m.number("slip.final_max");
-    put("| {} | {} | {} | {} | {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r), or_none(speed, "{:.4f}"),
-        speed_error, t ? fmt::format("{:.2f}", *t) : "never", time_error, slip ? fmt::format("{:.2g}", *slip) : kNoData);
+    put("| {} | {} | {} | {} |{} {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r),
+        or_none(speed, "{:.4f}"), one ? "" : fmt::format(" {} |", or_none(expected, "{:.4f}")), speed_error,
+        t ? fmt::format("{:.2f}", *t) : "never", time_error, slip ? fmt::format("{:.2g}", *slip) : kNoData);
   }
   put("\n");
 }

@@ -16,6 +16,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "report_part.h"
 
 namespace ballbench {
 
@@ -63,7 +64,7 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   // The equal-accuracy scenes in the suite's order (run.json's parts), then any others by name.
   const auto parts = in.run.is_object() ? in.run.value("parts", std::vector<std::string>{}) : std::vector<std::string>{};
   const auto rank = [&](const MatchResult& m) {
-    return std::find(parts.begin(), parts.end(), "match:" + m.scene) - parts.begin();
+    return std::find(parts.begin(), parts.end(), part_word({PartKind::match, m.scene})) - parts.begin();
   };
   std::stable_sort(in.matches.begin(), in.matches.end(),
                    [&](const MatchResult& a, const MatchResult& b) { return rank(a) < rank(b); });

@@ -7,10 +7,12 @@
 
 #include "input_error.h"
 #include "metrics/angle_of_repose.h"
+#include "metrics/meter_set.h"
 #include "metrics/rolling.h"
 #include "registry.h"
 #include "runner.h"
 #include "scene_loader.h"
+#include "spec_verdict.h"
 
 namespace ballbench {
 namespace {
@@ -111,7 +113,7 @@ TEST(AngleOfRepose, OfAStaircaseHeapIsNearItsSlope) {
 // Slide to roll (scenarios/slide-to-roll.toml, v0 3 m/s, mu 0.5, a disk, k = 1/2): v0 / (1 + k)
 // = 2 m/s from t = v0 k / ((1 + k) mu g) = 0.2039 s, the README's numbers.
 TEST(RollingClosedForm, SlideToRoll) {
-  const RollingClosedForm c = rolling_closed_form(load_scene("slide-to-roll"));
+  const RollingClosedForm c = rolling_closed_form(load_scene("slide-to-roll"), 0);
   EXPECT_DOUBLE_EQ(c.speed, 2.0);
   ASSERT_TRUE(c.time_to_roll);
   EXPECT_NEAR(*c.time_to_roll, 3.0 * 0.5 / (1.5 * 0.5 * 9.81), 1e-12);
@@ -128,7 +130,7 @@ TEST(RollingClosedForm, SpinDropSlidesOffTheImpactThenRolls) {
   const double vi = std::sqrt(2 * g * 1.0), t_land = std::sqrt(2 * 1.0 / g);
   const double v = 1 - mu * vi, w = 20 - mu * vi * r / I;  // 0.114 m/s, 12.9 rad/s
   const double t_slide = (v + w * r) / (mu * g + mu * g * r * r / I);
-  const RollingClosedForm c = rolling_closed_form(s);
+  const RollingClosedForm c = rolling_closed_form(s, 0);
   EXPECT_NEAR(c.speed, -1.0, 1e-12);
   EXPECT_NEAR(c.speed, v - mu * g * t_slide, 1e-12);  // the hand-stepped ball ends at the same speed
   ASSERT_TRUE(c.time_to_roll);
@@ -155,13 +157,94 @@ radius = 0.25
 [metrics]
 rolling = true
 )";
-  const RollingClosedForm sticking = rolling_closed_form(parse_scene(text, "s.toml"));
+  const RollingClosedForm sticking = rolling_closed_form(parse_scene(text, "s.toml"), 0);
   ASSERT_TRUE(sticking.time_to_roll);
   EXPECT_NEAR(*sticking.time_to_roll, std::sqrt(2 / 9.81), 1e-12);
   text.replace(text.find("restitution = 0.0"), 17, "restitution = 0.5");
-  const RollingClosedForm bouncing = rolling_closed_form(parse_scene(text, "s.toml"));
+  const RollingClosedForm bouncing = rolling_closed_form(parse_scene(text, "s.toml"), 0);
   EXPECT_FALSE(bouncing.time_to_roll);
   EXPECT_NEAR(bouncing.speed, -1.0, 1e-12);
+}
+
+// Two balls sliding on the floor (a disk, mu 0.5): one at 3 m/s, one dropped 0.5 m at 1.5 m/s with
+// restitution 0; each has its own closed form, from its own row of the scene.
+const char* kTwoBalls = R"(dt = 0.01
+duration = 1.0
+gravity = [0.0, -9.81]
+restitution = 0.0
+friction = 0.5
+[container]
+min = [0.0, 0.0]
+max = [20.0, 4.0]
+[[ball]]
+pos = [4.0, 0.25]
+vel = [3.0, 0.0]
+radius = 0.25
+[[ball]]
+pos = [1.0, 0.8]
+vel = [1.5, 0.0]
+radius = 0.3
+mass = 2.0
+[metrics]
+rolling = true
+)";
+
+TEST(RollingClosedForm, IsEachBallsOwn) {
+  const Scene s = parse_scene(kTwoBalls, "s.toml");
+  ASSERT_EQ(s.n(), 2);
+  const double g = 9.81, mu = 0.5, k = 0.5;
+  const RollingClosedForm first = rolling_closed_form(s, 0), second = rolling_closed_form(s, 1);
+  EXPECT_DOUBLE_EQ(first.speed, 2.0);
+  ASSERT_TRUE(first.time_to_roll);
+  EXPECT_NEAR(*first.time_to_roll, 3.0 * k / ((1 + k) * mu * g), 1e-12);
+  // The second falls 0.5 m onto the floor (its own radius: 0.8 - 0.3), meets it at sqrt(2 g 0.5),
+  // whose Coulomb impulse (mu vi (1 + 1 / k) = 4.7 m/s of slip) stops the 1.5 m/s slip: it rolls
+  // as it lands.
+  EXPECT_DOUBLE_EQ(second.speed, 1.0);
+  ASSERT_TRUE(second.time_to_roll);
+  EXPECT_NEAR(*second.time_to_roll, std::sqrt(2 * 0.5 / g), 1e-12);
+}
+
+// The meter judges each ball against its own closed form and reports the one farthest from it:
+// ball 1 ends 2% off its 1 m/s, ball 0 0.5% off its 2 m/s, so ball 1's speed and closed form, and
+// the error 0.02, which is the spec's `rolling` figure. The time to roll is the later ball's: the
+// dropped one's, which rolls as it lands (0.319 s; the other from 0.204 s).
+TEST(RollingMeter, ReportsTheBallFarthestFromItsClosedForm) {
+  const Scene s = parse_scene(kTwoBalls, "s.toml");
+  State end = s.initial;
+  end.vel(0, 0) = 2.01, end.vel(1, 0) = 1.02;
+  MeterSet meters(s, {});
+  meters.final_state(end);
+  Result r;
+  r.metrics = meters.values();
+  r.steps_done = 100;
+  EXPECT_DOUBLE_EQ(*r.metrics.number("rolling.speed"), 1.02);
+  EXPECT_DOUBLE_EQ(*r.metrics.number("rolling.expected_speed"), 1.0);
+  EXPECT_NEAR(*r.metrics.number("rolling.error"), 0.02, 1e-12);
+  EXPECT_NEAR(*r.metrics.number("rolling.expected_time_to_roll"), std::sqrt(2 * 0.5 / 9.81), 1e-12);
+  EXPECT_EQ(spec_figure(SpecTerm::rolling, r), r.metrics.number("rolling.error"));
+  // The other way round, ball 0 is the farther, and below the ball that is exact.
+  end.vel(0, 0) = 1.9, end.vel(1, 0) = 1.0;
+  MeterSet again(s, {});
+  again.final_state(end);
+  EXPECT_DOUBLE_EQ(*again.values().number("rolling.speed"), 1.9);
+  EXPECT_DOUBLE_EQ(*again.values().number("rolling.expected_speed"), 2.0);
+  EXPECT_NEAR(*again.values().number("rolling.error"), 0.05, 1e-12);
+}
+
+// A ball whose closed form is 0 (at rest on the floor) has no relative error: the scene's error is
+// none, and the spec reports it not measured rather than met.
+TEST(RollingMeter, AClosedFormOfZeroLeavesTheErrorNone) {
+  std::string text = kTwoBalls;
+  text.replace(text.find("vel = [1.5, 0.0]"), 16, "vel = [0.0, 0.0]");
+  const Scene s = parse_scene(text, "s.toml");
+  State end = s.initial;
+  end.vel(0, 0) = 2.0;
+  MeterSet meters(s, {});
+  meters.final_state(end);
+  const MetricValues v = meters.values();
+  EXPECT_FALSE(v.number("rolling.error"));
+  EXPECT_DOUBLE_EQ(*v.number("rolling.expected_speed"), 0.0);  // the ball that has none
 }
 
 std::string error_of(const std::string& text) {
@@ -193,11 +276,16 @@ TEST(RequestedMetrics, AreReadAndCheckedAgainstWhatTheyNeed) {
   EXPECT_EQ(error_of(base + "[metrics]\nroling = true\n"), "s.toml:12: metrics.roling: unknown key, did you mean 'rolling'?");
   EXPECT_EQ(error_of(base + "[metrics]\nrolling = 1\n"), "s.toml:12: metrics.rolling: expected true or false, got an integer");
   EXPECT_EQ(error_of("metrics = 3\n" + base), "s.toml:1: metrics: expected a table [metrics], got an integer");
-  std::string two = base + "[[ball]]\npos = [2.0, 0.25]\nradius = 0.25\n[metrics]\nrolling = true\n";
-  EXPECT_EQ(error_of(two), "s.toml:15: metrics.rolling: needs exactly one ball, the scene has 2");
+  std::string tilted = base + "[metrics]\nrolling = true\n";
+  tilted.replace(tilted.find("[0.0, -9.81]"), 12, "[1.0, -9.81]");
+  EXPECT_EQ(error_of(tilted), "s.toml:12: metrics.rolling: needs a floor: a box container and gravity straight down [0, -g]");
   std::string smooth = base + "[metrics]\nrolling = true\n";
   smooth.replace(smooth.find("friction = 0.5"), 14, "friction = 0.0");
   EXPECT_EQ(error_of(smooth), "s.toml:12: metrics.rolling: needs friction above 0 (a frictionless ball never rolls)");
+  // Any number of balls, each on its own closed form.
+  const Scene many = parse_scene(base + "[[ball]]\npos = [2.0, 0.25]\nvel = [1.0, 0.0]\nradius = 0.25\n[metrics]\nrolling = true\n", "s.toml");
+  EXPECT_TRUE(many.metrics.rolling);
+  EXPECT_EQ(many.n(), 2);
   std::string sideways = base + "[metrics]\nangle_of_repose = true\n";
   sideways.replace(sideways.find("[0.0, -9.81]"), 12, "[9.81, 0.0]");
   EXPECT_EQ(error_of(sideways),
@@ -213,6 +301,8 @@ TEST(RequestedMetrics, AreComputedOnlyWhereAsked) {
   ASSERT_EQ(roll.status, RunStatus::ok) << roll.error;
   ASSERT_TRUE(roll.metrics.number("rolling.speed") && roll.metrics.number("rolling.expected_speed") && roll.metrics.number("rolling.expected_time_to_roll"));
   EXPECT_NEAR(*roll.metrics.number("rolling.speed"), 2.0, 0.005 * 2.0);
+  ASSERT_TRUE(roll.metrics.number("rolling.error"));
+  EXPECT_DOUBLE_EQ(*roll.metrics.number("rolling.error"), std::abs(*roll.metrics.number("rolling.speed") - 2.0) / 2.0);
   EXPECT_FALSE(roll.metrics.number("angle_of_repose"));
   const Result plain = run_engine(load_scene("corridor"), find_engine("box2d"), o);
   EXPECT_FALSE(plain.metrics.number("rolling.speed") || plain.metrics.number("rolling.expected_speed") || plain.metrics.number("angle_of_repose"));

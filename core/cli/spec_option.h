@@ -21,7 +21,7 @@ inline AccuracySpec ask_scene_for(Scene& scene, const std::vector<std::string>& 
   if (spec.empty()) throw InputError("--spec: every term dropped: a spec needs at least one bound");
   // A term the scene cannot measure would leave every engine "not measured": refused before any run.
   if (spec[SpecTerm::rolling] && !scene.metrics.rolling)
-    throw InputError(fmt::format("--spec rolling: {} has no rolling closed form (one ball on a floor with friction, "
+    throw InputError(fmt::format("--spec rolling: {} has no rolling closed form (balls on a floor with friction, "
                                  "[metrics] rolling = true), so no engine could be judged by it: drop it with "
                                  "rolling=none",
                                  scene.name));

@@ -4,12 +4,12 @@
 
 namespace ballbench {
 
-RollingClosedForm rolling_closed_form(const Scene& scene) {
-  const double k = inertia_factor(scene.inertia), r = scene.radius(0), mu = scene.friction, g = -scene.gravity.y();
-  const double v0 = scene.initial.vel(0, 0), vy0 = scene.initial.vel(0, 1), w0 = scene.spin(0);
+RollingClosedForm rolling_closed_form(const Scene& scene, int i) {
+  const double k = inertia_factor(scene.inertia), r = scene.radius(i), mu = scene.friction, g = -scene.gravity.y();
+  const double v0 = scene.initial.vel(i, 0), vy0 = scene.initial.vel(i, 1), w0 = scene.spin(i);
   RollingClosedForm out;
   out.speed = (v0 - k * r * w0) / (1 + k);
-  const double gap = scene.initial.pos(0, 1) - r - scene.container.min.y();  // above the floor (m)
+  const double gap = scene.initial.pos(i, 1) - r - scene.container.min.y();  // above the floor (m)
   const double slowing = mu * g * (1 + 1 / k);                                // of the slip while sliding (m/s^2)
   double u = v0 + w0 * r, t = 0;
   if (gap > 0 || vy0 > 0) {

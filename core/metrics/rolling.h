@@ -1,6 +1,7 @@
 #pragma once
-// One ball on the floor of a box under gravity, with Coulomb friction mu: what it must end doing,
-// in closed form from the scene (scenes that ask, [metrics] rolling = true).
+// A ball on the floor of a box under gravity, with Coulomb friction mu: what it must end doing,
+// in closed form from the scene (scenes that ask, [metrics] rolling = true), each ball on its own:
+// the scene keeps its balls from meeting each other or a side wall, which no closed form here covers.
 // - Speed: friction, gravity and the floor's push all act along lines through the contact point
 //   under the centre, so the ball's angular momentum about that point, m r v + I w, is kept, from
 //   the first contact through any impact to rolling (v = -w r): with I = k m r^2,
@@ -25,7 +26,7 @@ struct RollingClosedForm {
   std::optional<double> time_to_roll;  // (s); none for a ball that bounces
 };
 
-// For a scene that asks for `rolling` (one ball, a floor, friction above 0: scene_loader.cpp checks).
-RollingClosedForm rolling_closed_form(const Scene& scene);
+// Ball i of a scene that asks for `rolling` (a floor, friction above 0: scene_loader.cpp checks).
+RollingClosedForm rolling_closed_form(const Scene& scene, int i);
 
 }  // namespace ballbench
