@@ -11,6 +11,7 @@
 
 #include "engine_settings.h"
 #include "runner.h"
+#include "project_scene.h"
 #include "scene_loader.h"
 
 namespace ballbench {
@@ -88,7 +89,7 @@ radius = 0.1
 // Masses 1 and 3, v1 = 2, v2 = 0, e = 1, in open space (scenarios/two-ball-3.toml): thesis
 // eq. 11-12 give v1' = -1, v2' = 1.
 double head_on(const EngineEntry& engine, const std::string& profile) {
-  const Scene s = load_scene("two-ball-3");
+  const Scene s = load_project_scene("two-ball-3");
   auto eng = build(engine, profile, s);
   for (long k = 0; k < s.steps(); ++k) eng->step(s.dt);
   State st;
@@ -140,7 +141,7 @@ radius = 0.25
 double seed_box_escapes(const EngineEntry& engine, const std::string& profile) {
   RunOptions o;
   o.profile = profile;
-  const Scene s = load_scene("seed-box");
+  const Scene s = load_project_scene("seed-box");
   const Result r = run_engine(s, engine, o);
   if (r.status != RunStatus::ok) return HUGE_VAL;
   return r.metrics.count("tunnelling.wall");
@@ -172,7 +173,7 @@ RoughCase build_rough(const EngineEntry& engine, const std::string& profile, con
 // measured from the deceleration between t = 0.03 and 0.13 s, while it slides (the friction in
 // force).
 double slide_to_roll(const EngineEntry& engine, const std::string& profile, const char* inertia) {
-  Scene s = load_scene("slide-to-roll");  // v0 3 m/s, friction 0.5, g 9.81, r 0.25, m 1
+  Scene s = load_project_scene("slide-to-roll");  // v0 3 m/s, friction 0.5, g 9.81, r 0.25, m 1
   s.inertia = inertia == std::string("sphere") ? Inertia::sphere : Inertia::disk;
   RoughCase rough = build_rough(engine, profile, s);
   if (!rough.engine) return rough.figure;
@@ -193,7 +194,7 @@ double slide_to_roll(const EngineEntry& engine, const std::string& profile, cons
 // closing at mu g (1 + 1/k));
 // mu = 0.8: it rolls from the impact on. Figure: the relative error of the final speed.
 double spin_drop(const EngineEntry& engine, const std::string& profile, double mu) {
-  Scene s = load_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
+  Scene s = load_project_scene("spin-drop");  // v0 (1, 0), w0 20 rad/s, r 0.25, m 1, dropped from 1 m, e 0
   s.friction = mu;
   RoughCase rough = build_rough(engine, profile, s);
   if (!rough.engine) return rough.figure;
@@ -278,7 +279,7 @@ mass = {m1}
 // seed-box's 20 balls at up to 35 m/s in a 7 m box without gravity or friction, every impact
 // elastic (e = 1), 10 s: the kinetic energy at the end against the start's, relative.
 double gas_energy(const EngineEntry& engine, const std::string& profile) {
-  Scene s = load_scene("seed-box");
+  Scene s = load_project_scene("seed-box");
   s.restitution = 1.0;
   s.duration = 10.0;
   auto eng = build(engine, profile, s);

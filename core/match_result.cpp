@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "data_file.h"
+#include "enum_words.h"
 #include "engine.h"
 #include "input_error.h"
 #include "json_value.h"
@@ -16,27 +17,21 @@
 namespace ballbench {
 namespace {
 
-constexpr std::array<std::pair<SearchStop, const char*>, 5> kStopTexts{{
-    {SearchStop::none, ""},
-    {SearchStop::finest_step, "finest step"},
-    {SearchStop::budget, "budget"},
-    {SearchStop::ceiling, "ceiling"},
-    {SearchStop::interrupt, "interrupt"},
-}};
+// "" for none: an outcome that met the spec has no stop.
+constexpr EnumWords<SearchStop, 5> kStopWords{"search stop",
+                                              {{
+                                                  {SearchStop::none, ""},
+                                                  {SearchStop::finest_step, "finest step"},
+                                                  {SearchStop::budget, "budget"},
+                                                  {SearchStop::ceiling, "ceiling"},
+                                                  {SearchStop::interrupt, "interrupt"},
+                                              }}};
 
 }  // namespace
 
-const char* search_stop_text(SearchStop s) {
-  for (const auto& [stop, text] : kStopTexts)
-    if (stop == s) return text;
-  return "";
-}
+const char* search_stop_text(SearchStop s) { return kStopWords.word(s); }
 
-SearchStop search_stop_from_text(std::string_view text) {
-  for (const auto& [stop, t] : kStopTexts)
-    if (t == text) return stop;
-  throw InputError(fmt::format("unknown search stop '{}' (known: finest step, budget, ceiling, interrupt)", text));
-}
+SearchStop search_stop_from_text(std::string_view text) { return kStopWords.value(text); }
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
 

@@ -13,7 +13,8 @@ struct PartKindDef {
 constexpr PartKindDef kKinds[] = {
     {PartKind::table, "table", "", true},           {PartKind::match, "match", "match-", true},
     {PartKind::sweep, "sweep", "sweep-", true},     {PartKind::stress, "stress", "stress-", true},
-    {PartKind::calibration, "calibration", "", false}, {PartKind::bench, "bench", "", false},
+    {PartKind::conform, "conform", "", false},         {PartKind::calibration, "calibration", "", false},
+    {PartKind::bench, "bench", "", false},
 };
 
 const PartKindDef& def(PartKind k) {
@@ -53,6 +54,7 @@ std::vector<ReportPart> report_parts(const ReportSuite& suite, bool bench) {
   each(PartKind::match, suite.match_scenes);
   each(PartKind::sweep, suite.sweep_scenes);
   each(PartKind::stress, suite.stress_scenes);
+  parts.push_back({PartKind::conform, ""});
   parts.push_back({PartKind::calibration, ""});
   if (bench) parts.push_back({PartKind::bench, ""});
   return parts;

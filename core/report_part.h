@@ -1,7 +1,7 @@
 #pragma once
 // The parts of a report (`ballbench report`), each run once and kept as its results file(s): a
 // scene's comparison table, an equal-accuracy search, a sweep, a stability frontier, the
-// restitution calibration, the benchmarks. A shard runs every N-th part; a report that stopped
+// closed-form checks of every engine, the restitution calibration, the benchmarks. A shard runs every N-th part; a report that stopped
 // resumes from the parts it finished.
 #include <optional>
 #include <string>
@@ -12,11 +12,11 @@
 
 namespace ballbench {
 
-enum class PartKind { table, match, sweep, stress, calibration, bench };
+enum class PartKind { table, match, sweep, stress, conform, calibration, bench };
 
 struct ReportPart {
   PartKind kind = PartKind::table;
-  std::string scene;  // "" for the calibration and the benchmarks
+  std::string scene;  // "" for the parts of every engine (conform, calibration, bench)
   bool operator==(const ReportPart&) const = default;
 };
 

@@ -1,5 +1,7 @@
 #include "scene_loader.h"
 
+#include "project_scene.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -511,6 +513,10 @@ Scene load_scene_file(const std::string& path, int64_t seed_offset) {
 std::string scenario_dir() {
   if (const char* env = std::getenv("BALLBENCH_SCENARIOS"); env && *env) return env;
   return BALLBENCH_SCENARIO_DIR;
+}
+
+Scene load_project_scene(const std::string& name) {
+  return load_scene_file(std::string(BALLBENCH_SCENARIO_DIR) + "/" + name + ".toml");
 }
 
 std::vector<std::string> builtin_scene_names() {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "balls_text.h"
+#include "conform_section.h"
 #include "markdown_cell.h"
 #include "page_links.h"
 #include "result.h"
@@ -41,7 +42,8 @@ std::vector<const MatchOutcome*> ranked_rows(const MatchResult& m) {
   return rows;
 }
 
-void put_match_table(std::string& md, const MatchResult& m, const std::vector<const MatchOutcome*>& rows) {
+void put_match_table(std::string& md, const ReportInputs& in, const MatchResult& m,
+                     const std::vector<const MatchOutcome*>& rows) {
   std::vector<std::string> terms;
   for (const SpecTermDef& d : spec_terms())
     if (m.spec[d.term]) terms.push_back(d.key);
@@ -51,7 +53,7 @@ void put_match_table(std::string& md, const MatchResult& m, const std::vector<co
   for (size_t k = 0; k < terms.size(); ++k) md += "---:|";
   md += "---:|\n";
   for (const MatchOutcome* oc : rows) {
-    const std::string label = run_label(oc->engine, oc->profile);
+    const std::string label = run_label(oc->engine, oc->profile) + refuted_mark(in, oc->engine, oc->profile);
     const int shown = oc->reached ? oc->found : oc->best;
     const MatchVerdict v = verdict_of(m, *oc);
     md += fmt::format("| {} | {} | ", label,
@@ -110,14 +112,14 @@ void put_our_ratios(std::string& md, const MatchResult& m) {
   }
 }
 
-void section_for(std::string& md, const MatchResult& m, const std::vector<Figure>& figures) {
+void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, const std::vector<Figure>& figures) {
   md += fmt::format("## {}\n\n", accuracy_heading(m.scene));
   md += fmt::format("{}, class `{}`, the scene's dt = {:g} s. Spec: {}.", balls_text(m.n), m.scene_class, m.dt,
                     m.spec.text());
   if (!m.interrupted.empty()) md += fmt::format(" **Interrupted by {}: the rows below are what ran.**", m.interrupted);
   md += "\n\n";
   const std::vector<const MatchOutcome*> rows = ranked_rows(m);
-  put_match_table(md, m, rows);
+  put_match_table(md, in, m, rows);
   put_match_method(md, m);
   put_our_ratios(md, m);
   for (const Figure& f : figures)
@@ -180,9 +182,9 @@ std::string accuracy_heading(const std::string& scene) { return fmt::format("Equ
 
 std::string accuracy_anchor(const std::string& scene) { return heading_anchor(accuracy_heading(scene)); }
 
-std::string accuracy_section(const MatchResult& m, const std::vector<Figure>& figures) {
+std::string accuracy_section(const ReportInputs& in, const MatchResult& m, const std::vector<Figure>& figures) {
   std::string md;
-  section_for(md, m, figures);
+  section_for(md, in, m, figures);
   return md;
 }
 

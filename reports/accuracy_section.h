@@ -38,6 +38,6 @@ std::string accuracy_heading(const std::string& scene);
 std::string accuracy_anchor(const std::string& scene);
 
 // One scene's equal-accuracy section.
-std::string accuracy_section(const MatchResult& m, const std::vector<Figure>& figures);
+std::string accuracy_section(const ReportInputs& in, const MatchResult& m, const std::vector<Figure>& figures);
 
 }  // namespace ballbench

@@ -14,6 +14,7 @@
 #include <fmt/ranges.h>
 
 #include "json_value.h"
+#include "conform_section.h"
 #include "markdown_buffer.h"
 #include "result.h"
 #include "balls_text.h"
@@ -110,6 +111,7 @@ std::string engines_section(const ReportInputs& in) {
       made.value("date", "?"));
   put_left_out(put, in.run);
   put_engines(put, in);
+  put("{}", conform_section(in));
   put_machines(put, in.run);
   return put.str();
 }

@@ -38,6 +38,17 @@ std::string line_style(const std::string& engine, const std::string& profile) {
   return fmt::format("lc rgb '{}' dt {}", s.colour, s.dash);
 }
 
+// A line with the run's markers on it.
+std::string linespoints_style(const std::string& engine, const std::string& profile) {
+  return fmt::format("{} pt {}", line_style(engine, profile), run_style(engine, profile).point);
+}
+
+// Points of the same run that are not on its line (a knob set): its marker, open.
+std::string open_points_style(const std::string& engine, const std::string& profile) {
+  const RunStyle s = run_style(engine, profile);
+  return fmt::format("lc rgb '{}' pt {}", s.colour, s.open_point());
+}
+
 // A ball's radius in a picture: its own where the result has every ball's, else the mean.
 double ball_radius(const Result& r, size_t b) {
   return r.series.radius.size() > b ? r.series.radius[b] : r.series.radius_mean;
@@ -343,10 +354,11 @@ Figure viewer_figure(const std::string& scene, const std::vector<const Result*>&
 Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
   const std::string base = slug(sw.scene) + "-work-precision";
   std::vector<std::string> order;  // engine/profile in the sweep's order
-  std::map<std::string, std::string> looks;  // its line style
+  std::map<std::string, std::string> looks, knob_looks;  // its line style; its knobs' points
   for (const SweepPoint& p : sw.points) {
     const std::string l = run_label(p.engine, p.profile);
-    if (p.engine != sw.reference) add_once(order, l), looks[l] = line_style(p.engine, p.profile);
+    if (p.engine != sw.reference)
+      add_once(order, l), looks[l] = linespoints_style(p.engine, p.profile), knob_looks[l] = open_points_style(p.engine, p.profile);
   }
   std::vector<double> dts;
   for (const SweepPoint& p : sw.points)
@@ -367,9 +379,10 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
     }
     line << "\n", knobs << "\n";  // never empty: gnuplot rejects a data file without points
     if (drawn == 0) continue;
-    plot += fmt::format("{}'{}-{}-dt.dat' using 1:2:3:4 with xerrorlines {} lw 2 pt 7 ps 0.8 title '{}', "
-                        "'{}-{}-knobs.dat' using 1:2 with points {} pt 6 ps 1.2 notitle",
-                        plot.empty() ? "" : ", ", base, name, looks[order[k]], order[k], base, name, looks[order[k]]);
+    plot += fmt::format("{}'{}-{}-dt.dat' using 1:2:3:4 with xerrorlines {} lw 2 ps 0.8 title '{}', "
+                        "'{}-{}-knobs.dat' using 1:2 with points {} ps 1.2 notitle",
+                        plot.empty() ? "" : ", ", base, name, looks[order[k]], order[k], base, name,
+                        knob_looks[order[k]]);
   }
   // Two panels: every point, and the top two decades of error, where engines that differ by a
   // factor of two would otherwise share a pixel when another engine is at round-off.
@@ -441,7 +454,7 @@ std::vector<Figure> scaling_figures(const BenchResults& bench, const fs::path& d
     add_once(scenes, r.scene);
     const std::string l = run_label(r.engine, r.profile);
     add_once(order, l);
-    looks[l] = line_style(r.engine, r.profile);
+    looks[l] = linespoints_style(r.engine, r.profile);
   }
   std::vector<Figure> figures;
   for (const std::string& scene : scenes) {
@@ -458,7 +471,7 @@ std::vector<Figure> scaling_figures(const BenchResults& bench, const fs::path& d
         else failed.push_back(&r);
       }
       if (points)
-        plot += fmt::format("{}'{}' with linespoints {} lw 2 pt 7 ps 0.8 title {}", plot.empty() ? "" : ", ", data,
+        plot += fmt::format("{}'{}' with linespoints {} lw 2 ps 0.8 title {}", plot.empty() ? "" : ", ", data,
                             looks[label], quoted(label));
     }
     const std::vector<std::string> missing = missing_lines(failed);

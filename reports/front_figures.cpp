@@ -93,12 +93,28 @@ std::string plot_series(const std::vector<Series>& series, bool titles) {
   std::string plot;
   for (const Series& s : series) {
     const std::string c = fmt::format("lc rgb '{}'", s.style.colour);
-    plot += fmt::format("{}'{}' index 0 with lines lw 2 dt {} {} {}, '{}' index 1 with points pt 7 ps 1.2 {} notitle, "
-                        "'{}' index 2 with points pt 6 ps 1.2 {} notitle",
+    plot += fmt::format("{}'{}' index 0 with lines lw 2 dt {} {} {}, '{}' index 1 with points pt {} ps 1.2 {} notitle, "
+                        "'{}' index 2 with points pt {} ps 1.2 {} notitle",
                         plot.empty() ? "" : ", ", s.data, s.style.dash, c,
-                        titles ? fmt::format("title '{}'", s.label) : "notitle", s.data, c, s.data, c);
+                        titles ? fmt::format("title '{}'", s.label) : "notitle", s.data, s.style.point, c, s.data,
+                        s.style.open_point(), c);
   }
   return plot;
+}
+
+// The picks, ringed: the cheapest external configuration that met the spec, and ours. The file is
+// never empty (gnuplot rejects a data file without points).
+std::string write_picks(const MatchResult& m, const std::string& base) {
+  const std::string path = base + "-picks.dat";
+  std::ofstream f(path);
+  int n = 0;
+  for (const char* role : {"external", "ours"})
+    if (const MatchOutcome* oc = cheapest_reached(m, role)) {
+      const MatchTry& t = m.tries[oc->found];
+      f << spec_axis_x(t, m.spec) << ' ' << t.cost_ns << '\n', ++n;
+    }
+  if (n == 0) f << "NaN NaN\n";
+  return fmt::format(", '{}' with points pt 6 ps 3 lw 2 lc rgb '#000000' {}", path, n ? "title 'the picks'" : "notitle");
 }
 
 std::string not_drawn(const MatchResult& m) {
@@ -117,25 +133,24 @@ Figure scene_front(const MatchResult& m) {
   const std::string base = slug(m.scene) + "-front";
   std::vector<Series> series;
   for (const MatchOutcome& oc : m.outcomes)
-    if (auto s = write_series(m, oc, axis, base, false)) series.push_back(std::move(*s));
+    if (auto s = write_series(m, oc, axis, base, true)) series.push_back(std::move(*s));
   std::ofstream gp(base + ".gp");
   gp << "set terminal pngcairo size 900,520 font 'sans,10'\nset output '" << base << ".png'\n"
      << "set title 'Equal accuracy on " << m.scene << ": cost against error, every configuration tried'\n"
-     << "set xlabel '" << axis.label << "'\nset ylabel 'cost (ns per ball per scene step)'\n"
+     << "set xlabel 'error / spec: the worst term over its bound (at most 1 meets the spec)'\n"
+     << "set ylabel 'cost (ns per ball per scene step)'\n"
      << "set logscale xy\nset format x '%g'\nset format y '%g'\nset grid\nset key outside right top\n"
-     << fmt::format("set arrow from {0}, graph 0 to {0}, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n", axis.bound)
-     << x_range(series, axis.bound)
-     << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, true)) << '\n';
+     << "set arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n" << x_range(series, 1)
+     << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, true)) << write_picks(m, base) << '\n';
   gp.close();
   run_gnuplot(base + ".gp");
   return {"front", m.scene, "figures/" + base + ".png",
-          fmt::format("Cost against {} on `{}`: each engine and profile's tries, the profile as it is from dt down "
-                      "(the line) and each knob on top of it; filled: met the spec ({}), open: did not; the dashed line "
-                      "is the spec's bound.{}{}",
-                      axis.term ? spec_term(*axis.term).key : "error over the spec", m.scene, m.spec.text(),
-                      axis.term ? " A figure of 0 is drawn at a thousandth of the bound."
-                                : " A try at 0 on every term is drawn at 0.001.",
-                      not_drawn(m))};
+          fmt::format("Cost against error on `{}`, on the overview's axes: each engine and profile's tries, the "
+                      "profile as it is from dt down (the line) and each knob on top of it, the error the spec's worst "
+                      "term over its bound; filled: met the spec ({}), open: did not; ringed: the picks (the cheapest "
+                      "external engine and ours that met it); the dashed line is the spec. A try at 0 on every term "
+                      "is drawn at 0.001.{}",
+                      m.scene, m.spec.text(), not_drawn(m))};
 }
 
 // Every scene's front in one figure, the error over the spec's bound so that 1 means the spec on
@@ -165,15 +180,17 @@ Figure all_fronts(const std::vector<MatchResult>& matches) {
        << "set xlabel 'error / spec (the worst term)'\nset ylabel 'ns per ball per scene step'\n"
        << "unset arrow\nset arrow from 1, graph 0 to 1, graph 1 nohead dt 2 lw 1.5 lc rgb '#000000'\n"
        << x_range(series, 1)
-       << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, false)) << '\n';
+       << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, false))
+       << write_picks(m, slug(m.scene) + "-fronts") << '\n';
   }
   // The legend: every engine and profile once, drawn as its line.
   gp << fmt::format("set origin 0,0\nset size 1,{}\n", legend_h / height)
      << "unset arrow\nunset logscale\nunset title\nunset xlabel\nunset ylabel\nunset border\nunset tics\nunset grid\n"
      << "set xrange [0:1]\nset yrange [0:1]\nset key center center horizontal maxrows 4 width 2\nplot ";
   for (size_t k = 0; k < legend.size(); ++k)
-    gp << (k ? ", " : "") << fmt::format("NaN with linespoints lw 2 pt 7 dt {} lc rgb '{}' title '{}'",
-                                         legend[k].style.dash, legend[k].style.colour, legend[k].label);
+    gp << (k ? ", " : "") << fmt::format("NaN with linespoints lw 2 pt {} dt {} lc rgb '{}' title '{}'",
+                                         legend[k].style.point, legend[k].style.dash, legend[k].style.colour,
+                                         legend[k].label);
   if (legend.empty()) gp << "NaN notitle";
   gp << "\nunset multiplot\n";
   gp.close();
@@ -181,7 +198,8 @@ Figure all_fronts(const std::vector<MatchResult>& matches) {
   return {"fronts", "", "figures/fronts.png",
           "Every scene's work-precision front: cost against the spec's worst term over its bound (the dashed "
           "line at 1: at most 1 meets the spec; 0 drawn at 0.001), each engine and profile's tries; filled: met the "
-          "spec, open: did not."};
+          "spec, open: did not; ringed: the picks (the cheapest external engine and ours that met it). Each engine has "
+          "its colour, each profile its marker and line (terms: profiles)."};
 }
 
 }  // namespace

@@ -45,6 +45,8 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.bench = read_bench_file(f.string());
     } else if (name == "harness.json") {
       in.harness = read_bench_file(f.string());
+    } else if (name == "conform.json") {
+      in.conform = read_conform_file(f.string());
     } else if (name == "calibration.json") {
       in.calibration = read_calibration_file(f.string());
     } else if (name.starts_with("match-")) {

@@ -76,7 +76,7 @@ ReportPage scene_page(const ReportInputs& in, const std::string& scene, const Fi
   const std::string use_case = m && !m->use_case.empty() ? ": " + m->use_case : "";
   page.text = fmt::format("# `{}`{}\n\n", scene, use_case);
   if (const std::string line = scene_line(in, scene); !line.empty()) page.text += line + ".\n\n";
-  if (m) page.text += accuracy_section(*m, figures);
+  if (m) page.text += accuracy_section(in, *m, figures);
   page.text += scene_section(in, scene, figures);
   return page;
 }

@@ -10,6 +10,7 @@
 
 #include "bench_results.h"
 #include "calibration_result.h"
+#include "conform_result.h"
 #include "engine.h"
 #include "frontier_result.h"
 #include "match_result.h"
@@ -29,6 +30,7 @@ struct ReportInputs {
   std::optional<BenchResults> bench; // results/bench.json (bench/ballbench_step_benchmark)
   std::optional<BenchResults> harness;  // results/harness.json (bench/ballbench_harness_benchmark)
   std::optional<CalibrationResult> calibration;  // results/calibration.json
+  std::optional<ConformResult> conform;          // results/conform.json
   // Engine name -> role (the registry's engine_roles(), given by the caller); a name not in it is
   // external.
   std::map<std::string, EngineRole> roles;

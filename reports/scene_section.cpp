@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "conform_section.h"
 #include "ensemble.h"
 #include "json_value.h"
 #include "figure_markdown.h"
@@ -45,7 +46,7 @@ std::string verdict(const Result& r) {
   const auto& m = r.metrics;
   const long tunnel_wall = m.count("tunnelling.wall"), tunnel_pair = m.count("tunnelling.pair");
   const long stick_wall = m.count("sticking.wall"), stick_pair = m.count("sticking.pair");
-  const long tunnels = tunnel_wall + tunnel_pair, sticks = stick_wall + stick_pair;
+  const long tunnels = m.tunnelled(), sticks = m.stuck();
   parts.push_back(tunnels ? fmt::format("tunnelled {} ({} through walls, {} through balls)", times(tunnels),
                                         tunnel_wall, tunnel_pair)
                           : "no tunnelling");
@@ -186,8 +187,8 @@ constexpr size_t kTableColumns = 8;
 
 // A scene's table of the columns placed at `place`, the best of each ranked column in bold
 // (`bold` false: none).
-void put_scene_table(MarkdownBuffer& put, const std::vector<const Result*>& rows, const std::vector<Column>& all,
-                     Place place, bool bold) {
+void put_scene_table(MarkdownBuffer& put, const ReportInputs& in, const std::vector<const Result*>& rows,
+                     const std::vector<Column>& all, Place place, bool bold) {
   std::vector<const Column*> cols;
   for (const Column& c : all)
     if (c.place == place || &c == &all.front()) cols.push_back(&c);
@@ -201,7 +202,7 @@ void put_scene_table(MarkdownBuffer& put, const std::vector<const Result*>& rows
     for (size_t k = from; k < to; ++k) put("---|");
     put("\n");
     for (const Result* r : rows) {
-      put("| {} | {} |", r->engine, r->profile);
+      put("| {}{} | {} |", r->engine, refuted_mark(in, r->engine, r->profile), r->profile);
       for (size_t k = from; k < to; ++k) {
         const Column* c = cols[k];
         std::string cell = r->measured() || c == cols.front() ? c->text(*r) : kNoData;
@@ -249,13 +250,13 @@ void put_initial_overlap(MarkdownBuffer& put, const std::vector<const Result*>& 
 }
 
 // The scene's columns that its table leaves out because they do not rank engines there, unmarked.
-void put_other_columns(MarkdownBuffer& put, const std::vector<const Result*>& rows) {
+void put_other_columns(MarkdownBuffer& put, const ReportInputs& in, const std::vector<const Result*>& rows) {
   const std::vector<Column> cols = scene_columns(rows, scene_view(rows));
   if (std::none_of(cols.begin(), cols.end(), [](const Column& c) { return c.place == Place::appendix; })) return;
   put("### The other columns\n\nThe figures the table above leaves out because they do not rank engines on this "
       "scene (the final error on a chaotic scene, a momentum drift where walls and gravity act, the energy drift "
       "where restitution below 1 loses energy by design, the penetration including the placement's), unmarked.\n\n");
-  put_scene_table(put, rows, cols, Place::appendix, false);
+  put_scene_table(put, in, rows, cols, Place::appendix, false);
   put("\n");
 }
 
@@ -352,7 +353,7 @@ std::string scene_section(const ReportInputs& in, const std::string& scene, cons
       "differ because the engines reach different accuracies at one step. {}\n\n",
       rows.front()->dt, kBestNote);
   put_initial_overlap(put, rows);
-  put_scene_table(put, rows, scene_columns(rows, view), Place::table, true);
+  put_scene_table(put, in, rows, scene_columns(rows, view), Place::table, true);
   for (const Result* r : rows)
     if (r->reference.available && r->reference.reference != "exact") {
       put("\nError against {} (a converged run: `exact` cannot run this scene).\n", r->reference.reference);
@@ -368,7 +369,7 @@ std::string scene_section(const ReportInputs& in, const std::string& scene, cons
   put_viewer(put, figures, scene);
   put_ensemble(put, in, scene);
   for (const char* kind : {"energy", "picture", "animation"}) put_figures(put, figures, kind, scene);
-  put_other_columns(put, rows);
+  put_other_columns(put, in, rows);
   return put.str();
 }
 

@@ -8,6 +8,7 @@
 
 #include "accuracy_section.h"
 #include "balls_text.h"
+#include "conform_section.h"
 #include "json_value.h"
 #include "markdown_cell.h"
 #include "result.h"
@@ -30,20 +31,21 @@ std::string term_words(SpecTerm t, double bound) {
 }
 
 // "chipmunk as shipped, step dt/64, iterations = 5": a configuration found.
-std::string configuration_words(const MatchResult& m, const MatchOutcome& oc) {
+std::string configuration_words(const ReportInputs& in, const MatchResult& m, const MatchOutcome& oc) {
   const MatchTry& t = m.tries[oc.found];
   const std::string profile = oc.profile == "stock"   ? " as shipped"
                               : oc.profile == "tuned" ? " tuned"
                               : oc.profile == "default" ? ""
                                                         : fmt::format(" ({})", oc.profile);
   const std::string knob = t.knob.empty() ? "" : fmt::format(", {} = {}", t.knob, json_text(t.value));
-  return fmt::format("**{}**{}, step {}{}", oc.engine, profile, step_text(t.halvings), knob);
+  return fmt::format("**{}**{}, step {}{}{}", oc.engine, profile, step_text(t.halvings), knob,
+                     refuted_mark(in, oc.engine, oc.profile));
 }
 
 // The pick's cells: configuration and cost, or the nearest miss.
-std::pair<std::string, std::string> pick_cells(const MatchResult& m, EngineRole role) {
+std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const MatchResult& m, EngineRole role) {
   if (const MatchOutcome* oc = cheapest_reached(m, role_name(role)))
-    return {configuration_words(m, *oc), cost_spread_text(*oc)};
+    return {configuration_words(in, m, *oc), cost_spread_text(*oc)};
   const MatchOutcome* near = nearest_unreached(m, role_name(role));
   return {near ? fmt::format("none met it; nearest: {} ({})", run_label(near->engine, near->profile), miss_text(m, *near))
                : "none ran",
@@ -113,8 +115,8 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
   md += "| use case (scene) | spec | cheapest external engine | cost (ns) | ours | cost (ns) | ours against it "
         "|\n|---|---|---|---:|---|---:|---|\n";
   for (const MatchResult& m : in.matches) {
-    const auto [ext, ext_cost] = pick_cells(m, EngineRole::external);
-    const auto [ours, our_cost] = pick_cells(m, EngineRole::ours);
+    const auto [ext, ext_cost] = pick_cells(in, m, EngineRole::external);
+    const auto [ours, our_cost] = pick_cells(in, m, EngineRole::ours);
     md += fmt::format("| [{}](#{}) (`{}`, {}) | {} | {} | {} | {} | {} | {} |\n",
                       m.use_case.empty() ? m.scene : m.use_case, accuracy_anchor(m.scene), m.scene, balls_text(m.n),
                       spec_words(m.spec), markdown_cell(ext), ext_cost, markdown_cell(ours), our_cost, ratio_cell(m));

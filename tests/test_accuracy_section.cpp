@@ -79,13 +79,13 @@ TEST(AccuracySection, TheSummaryAnswersWithThePickAndTheRatioInWords) {
 TEST(AccuracySection, OneBallIsOneBall) {
   MatchResult one = pile();
   one.n = 1;
-  const std::string md = accuracy_section(one, {});
+  const std::string md = accuracy_section(ReportInputs{}, one, {});
   EXPECT_NE(md.find("\n1 ball, class `pile`"), std::string::npos) << md;
-  EXPECT_NE(accuracy_section(pile(), {}).find("\n500 balls, class `pile`"), std::string::npos);
+  EXPECT_NE(accuracy_section(ReportInputs{}, pile(), {}).find("\n500 balls, class `pile`"), std::string::npos);
 }
 
 TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
-  const std::string md = accuracy_section(pile(), {});
+  const std::string md = accuracy_section(ReportInputs{}, pile(), {});
   EXPECT_NE(md.find("## Equal accuracy: `pile`"), std::string::npos);
   EXPECT_NE(md.find("| home-seed | no: diverged at every step down to dt/64 |"), std::string::npos) << md;
   const auto home = md.find("| home | yes | dt | 900 |"), chip = md.find("| chipmunk/stock | yes | dt/64 | 45000 |"),

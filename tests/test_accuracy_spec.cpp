@@ -360,5 +360,27 @@ TEST(MatchCli, TheRatioLineSaysWhetherTheTargetWasMet) {
       << printed(10);
 }
 
+// A scene whose balls start at rest without gravity has no energy to drift from: a spec bounding
+// the drift, its class's default included, is refused in one line naming the term and its fix.
+TEST(MatchCli, ASpecTheSceneCannotMeasureIsRefusedWithItsFix) {
+  const fs::path dir = fs::temp_directory_path() / ("ballbench-still." + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string scene = (dir / "still.toml").string();
+  std::ofstream(scene) << "dt = 0.01\nduration = 0.1\n[container]\nmin = [-5.0, -5.0]\nmax = [5.0, 5.0]\n"
+                          "[[ball]]\npos = [0.0, 0.0]\nvel = [0.0, 0.0]\nradius = 0.5\n"
+                          "[[ball]]\npos = [2.0, 0.0]\nvel = [0.0, 0.0]\nradius = 0.5\n";
+  const auto r = run_cli("match --scene " + scene + " --engine home --quiet --spec energy_drift=1e-3 --json " +
+                         (dir / "m.json").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--spec energy_drift: still starts with no energy (E0 = 0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("energy_drift=none"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "m.json"));
+  // Without the term it runs.
+  const auto ok = run_cli("match --scene " + scene + " --engine home --profile default --max-halvings 0 --no-knobs "
+                          "--quiet --spec energy_drift=none,overlap=0.01 --json " + (dir / "m.json").string());
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace ballbench

@@ -361,7 +361,7 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
   ASSERT_EQ(command("merge --out " + merged.string() + " " + two.string() + " " + one.string()), 0) << err_;
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());
-  EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "run.json", "seed-box.json", "seed-bowl.json",
+  EXPECT_EQ(files, (std::set<std::string>{"calibration.json", "conform.json", "run.json", "seed-box.json", "seed-bowl.json",
                                           "slide-to-roll.json", "spin-drop.json", "rough-box.json", "rough-pile.json",
                                           "smooth-pile.json", "stress-seed-box.json",
                                           "sweep-seed-box.csv", "sweep-seed-box.json", "match-seed-box.json",

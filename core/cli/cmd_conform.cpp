@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 
 #include "commands.h"
+#include "conform_run.h"
+#include "data_file.h"
 #include "conformance.h"
 #include "engine.h"
 #include "input_error.h"
@@ -20,51 +22,32 @@ namespace {
 
 struct ConformArgs {
   std::string engines, profile = "all";
+  std::string json;  // the rows as JSON (core/conform_result.h), or ""
   bool quiet = false;
 };
-
-std::string figure_text(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "inf"; }
 
 void conform(const ConformArgs& a) {
   install_interrupt_handlers();
   const std::vector<const EngineEntry*> engines = parse_engine_list(a.engines);
   check_profile(engines, a.profile);
-  int failed = 0, refuted = 0, refusals = 0, checks = 0;
-  fmt::print("{:<18} {:<22} {:>10} {:>10}  {}\n", "engine/profile", "case", "figure", "tolerance", "verdict");
-  for (const EngineEntry* e : engines) {
-    if (!e->info.unavailable.empty()) {
-      fmt::print("{:<18} unavailable: {}\n", e->info.name, e->info.unavailable);
-      ++checks, ++failed;
-      continue;
-    }
-    for (const std::string& profile : profiles_for(*e, a.profile))
-      for (const ConformCaseDef& d : conform_cases()) {
-        if (interrupt_signal()) break;
-        double figure = 0;
-        try {
-          figure = conform_figure(*e, profile, d.c);
-        } catch (const SceneUnsupported& refused) {
-          // A case the engine says it cannot run: neither a pass nor a refuted claim.
-          fmt::print("{:<18} {:<22} {:>10} {:>10}  refused: {}\n", run_label(e->info.name, profile), d.key, "-",
-                     figure_text(d.tolerance), refused.what());
-          ++checks, ++refusals;
-          continue;
-        }
-        const bool pass = figure <= d.tolerance;
-        const bool claimed = *d.capability && claims(e->info.caps, d.capability);
-        const bool refutes = claimed && !(figure < d.refutes);
-        ++checks, failed += !pass, refuted += refutes;
-        fmt::print("{:<18} {:<22} {:>10} {:>10}  {}{}\n", run_label(e->info.name, profile), d.key, figure_text(figure),
-                   figure_text(d.tolerance), pass ? "pass" : "FAIL",
-                   refutes ? fmt::format(" (refutes its claim of {}: {} or more)", d.capability, figure_text(d.refutes))
-                           : "");
-      }
+  if (!a.json.empty()) {
+    std::vector<PathUse> uses = noted_input_files();
+    uses.push_back({"--json", a.json, true});
+    check_path_clashes(uses);
+    check_writable(a.json, "the conformance results", true);
   }
-  fmt::print("{} checks: {} passed, {} failed, {} refused{}\n", checks, checks - failed - refusals, failed, refusals,
-             refuted ? fmt::format("; {} refute a capability the engine claims", refuted) : "");
+  fmt::print("{:<18} {:<22} {:>10} {:>10}  {}\n", "engine/profile", "case", "figure", "tolerance", "verdict");
+  const ConformResult c = run_conform(engines, a.profile, run_context(), true);
+  size_t failed = 0, refused = 0, refuted = 0;
+  for (const ConformRow& r : c.rows)
+    failed += r.verdict == ConformVerdict::fail, refused += r.verdict == ConformVerdict::refused,
+        refuted += !r.refuted.empty();
+  fmt::print("{} checks: {} passed, {} failed, {} refused{}\n", c.rows.size(), c.rows.size() - failed - refused, failed,
+             refused, refuted ? fmt::format("; {} refute a capability the engine claims", refuted) : "");
   fmt::print("the closed forms:\n");
   for (const ConformCaseDef& d : conform_cases()) fmt::print("  {:<22} {}\n", d.key, d.closed_form);
-  exit_if_interrupted("the checks above ran");
+  if (!a.json.empty()) write_conform_file(a.json, c);
+  exit_if_interrupted(a.json.empty() ? "the checks above ran" : "the checks above ran, and are in " + a.json);
   if (failed > 0) throw CheckFailed{1};
 }
 
@@ -76,6 +59,7 @@ void add_conform(CLI::App& app) {
       "conform", "the closed-form checks on any engine: one line per check, exit 1 where one fails");
   cmd->add_option("--engine", a->engines, "engine name, comma-separated names, process:CMD, or all")->required();
   cmd->add_option("--profile", a->profile, "settings profile, comma-separated profiles, or all (default: all)");
+  cmd->add_option("--json", a->json, "also write every check as JSON (what the report's engines page reads)");
   add_quiet(cmd, a->quiet);
   cmd->callback([a] { conform(*a); });
 }

@@ -43,6 +43,7 @@ void match(MatchArgs& a) {
   const auto engines = parse_engine_list(a.engines);
   check_profile(engines, a.options.profile);
   a.options.spec = ask_scene_for(scene, a.spec);
+  check_measurable(scene, a.options.spec);  // the scene's own spec too: a match judges every try by it
   a.options.spec_texts = a.spec;
   a.options.knobs = !a.no_knobs;
   a.options.reference = reference_engine();

@@ -106,22 +106,8 @@ ReportShard read_report_shard(const std::string& folder) {
   return s;
 }
 
-void merge_reports(const MergeArgs& a) {
-  std::vector<ReportShard> shards;
-  for (const auto& folder : a.shards) {
-    std::error_code ec;
-    if (fs::equivalent(folder, a.out, ec))
-      throw InputError(fmt::format("merge: --out {} is one of the shards: merge into a folder of its own", a.out));
-    shards.push_back(read_report_shard(folder));
-  }
-  {  // what the merge writes (OUT/results, OUT/figures, OUT/REPORT.md) holds nothing it reads
-    std::vector<PathUse> uses = noted_input_files();
-    for (const auto& folder : a.shards) uses.push_back({"SHARD", (fs::path(folder) / "results/run.json").string(), false});
-    uses.push_back({"--out", (fs::path(a.out) / "results").string(), true, true});
-    for (const char* part : kRenderedFolders) uses.push_back({"--out", (fs::path(a.out) / part).string(), true, true});
-    uses.push_back({"--out", (fs::path(a.out) / "REPORT.md").string(), true});
-    check_path_clashes(uses);
-  }
+// Every shard once, of one report.
+void check_shards(const MergeArgs& a, const std::vector<ReportShard>& shards) {
   const ReportShard& first = shards.front();
   std::vector<std::string> seen(first.count + 1);
   for (size_t k = 0; k < shards.size(); ++k) {
@@ -138,8 +124,11 @@ void merge_reports(const MergeArgs& a) {
   }
   for (int i = 1; i <= first.count; ++i)
     if (seen[i].empty()) throw InputError(fmt::format("merge: report shard {}/{} is missing", i, first.count));
-  // Every shard's result files (its parts) into one results folder; a file in two shards is refused.
-  const fs::path results = fs::path(a.out) / "results";
+}
+
+// Every shard's result files (its parts) into one results folder; a file in two shards is refused.
+// Each is copied beside its place, then renamed: a file in results/ is whole, whenever the merge stops.
+size_t copy_results(const MergeArgs& a, const fs::path& results) {
   exit_if_interrupted("nothing written");
   fs::create_directories(results);
   std::vector<std::string> copied;
@@ -150,13 +139,35 @@ void merge_reports(const MergeArgs& a) {
       if (std::find(copied.begin(), copied.end(), name) != copied.end())
         throw InputError(fmt::format("merge: {} is in two shards ({} is one): run each shard into its own folder", name,
                                      folder));
-      // Copied beside its place, then renamed: a file in results/ is whole, whenever the merge stops.
       const std::string target = (results / name).string();
       const std::string tmp = create_temp_beside(target, "a merged result file");
       fs::copy_file(e.path(), tmp, fs::copy_options::overwrite_existing);
       move_file_into_place(tmp, target, "a merged result file");
       copied.push_back(name);
     }
+  return copied.size();
+}
+
+void merge_reports(const MergeArgs& a) {
+  std::vector<ReportShard> shards;
+  for (const auto& folder : a.shards) {
+    std::error_code ec;
+    if (fs::equivalent(folder, a.out, ec))
+      throw InputError(fmt::format("merge: --out {} is one of the shards: merge into a folder of its own", a.out));
+    shards.push_back(read_report_shard(folder));
+  }
+  {  // what the merge writes (OUT/results, OUT/figures, OUT/REPORT.md) holds nothing it reads
+    std::vector<PathUse> uses = noted_input_files();
+    for (const auto& folder : a.shards) uses.push_back({"SHARD", (fs::path(folder) / "results/run.json").string(), false});
+    uses.push_back({"--out", (fs::path(a.out) / "results").string(), true, true});
+    for (const char* part : kRenderedFolders) uses.push_back({"--out", (fs::path(a.out) / part).string(), true, true});
+    uses.push_back({"--out", (fs::path(a.out) / "REPORT.md").string(), true});
+    check_path_clashes(uses);
+  }
+  check_shards(a, shards);
+  const ReportShard& first = shards.front();
+  const fs::path results = fs::path(a.out) / "results";
+  const size_t files = copy_results(a, results);
   // The plan is the shards'; the machines, commands and dates are each shard's (shards), and the
   // merge's own (merge). A merged record has no machine of its own: no shard's stands for all.
   nlohmann::json context = first.context;
@@ -167,7 +178,7 @@ void merge_reports(const MergeArgs& a) {
   context["shards"] = nlohmann::json::array();
   for (const auto& s : shards) context["shards"].push_back(s.context);
   write_file_atomically((results / "run.json").string(), context.dump(2) + "\n", "the run record");
-  fmt::print("merged {} report shards ({} result files) into {}\n", shards.size(), copied.size(), results.string());
+  fmt::print("merged {} report shards ({} result files) into {}\n", shards.size(), files, results.string());
   exit_if_interrupted(fmt::format("the merged results are in {}; REPORT.md not rendered (`ballbench report "
                                   "--render-only --out {}` renders it)",
                                   results.string(), a.out));

@@ -171,30 +171,26 @@ struct RegressArgs {
   double timeout_s = 120;
 };
 
-void regress(const RegressArgs& a) {
-  RunOptions options;
-  for (const auto& s : a.sets) add_setting(options.overrides, s);
-  std::vector<const EngineEntry*> engines;
-  for (const char* name : kEngines) engines.push_back(&find_engine(name));
-  for (const auto& [name, v] : options.overrides.items())
-    if (std::none_of(std::begin(kEngines), std::end(kEngines), [&](const char* e) { return name == e; }))
-      throw InputError(fmt::format("--set {}: regress runs only {}", name, fmt::join(kEngines, ", ")));
-
-  // Read before running, so a missing or broken baseline is reported at once.
-  nlohmann::json baseline;
-  if (!a.update) {
-    baseline = read_baseline_file(a.baseline);
-    if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
-      throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
-    check_baseline(baseline, a.baseline);
-  } else {
+// Read before running, so a missing or broken baseline (or one --update cannot write) is
+// reported at once.
+nlohmann::json baseline_to_compare(const RegressArgs& a) {
+  if (a.update) {
     std::vector<PathUse> uses = noted_input_files();
     uses.push_back({"--baseline", a.baseline, true});
     check_path_clashes(uses);
     check_writable(a.baseline, "the baseline", true);
+    return nullptr;
   }
+  nlohmann::json baseline = read_baseline_file(a.baseline);
+  if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
+    throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
+  check_baseline(baseline, a.baseline);
+  return baseline;
+}
 
-  install_interrupt_handlers();
+// The suite's runs, each as the baseline records it.
+std::vector<nlohmann::json> run_suite(const RegressArgs& a, RunOptions options,
+                                      const std::vector<const EngineEntry*>& engines) {
   std::vector<nlohmann::json> runs;
   for (const SuiteScene& item : suite()) {
     const Scene scene = load_scene(item.scene);
@@ -204,38 +200,41 @@ void regress(const RegressArgs& a) {
     if (interrupt_signal()) break;
     if (!Progress::quiet) fmt::print(stderr, "regress: ran {}\n", scene.name);
   }
-  // A suite cut short is compared with nothing and written nowhere.
-  exit_if_interrupted(fmt::format("the suite was cut short after {} run(s): nothing compared{}", runs.size(),
-                                  a.update ? ", the baseline not rewritten" : ""));
+  return runs;
+}
 
-  if (a.update) {
-    nlohmann::json tolerances = default_tolerances();
-    if (std::filesystem::exists(a.baseline)) {
-      // The baseline's own tolerances win; a metric new since it was written gets its default. A
-      // baseline that cannot be read (the reason to replace it) gives none.
-      try {
-        const nlohmann::json old = read_baseline_file(a.baseline);
-        if (old.is_object() && old.contains("tolerances") && old["tolerances"].is_object()) {
-          nlohmann::json kept = old;
-          kept["runs"] = nlohmann::json::array();
-          check_baseline(kept, a.baseline);
-          tolerances.update(old["tolerances"]);
-        }
-      } catch (const InputError& e) {
-        fmt::print(stderr, "regress: the old baseline's tolerances are not kept ({}): the defaults are written\n",
-                   printable(e.what()));
+// --update: the runs as the new baseline. The old baseline's own tolerances win; a metric new
+// since it was written gets its default. A baseline that cannot be read (the reason to replace it)
+// gives none.
+void write_baseline(const RegressArgs& a, const std::vector<nlohmann::json>& runs) {
+  nlohmann::json tolerances = default_tolerances();
+  if (std::filesystem::exists(a.baseline)) {
+    try {
+      const nlohmann::json old = read_baseline_file(a.baseline);
+      if (old.is_object() && old.contains("tolerances") && old["tolerances"].is_object()) {
+        nlohmann::json kept = old;
+        kept["runs"] = nlohmann::json::array();
+        check_baseline(kept, a.baseline);
+        tolerances.update(old["tolerances"]);
       }
+    } catch (const InputError& e) {
+      fmt::print(stderr, "regress: the old baseline's tolerances are not kept ({}): the defaults are written\n",
+                 printable(e.what()));
     }
-    const MachineInfo m = machine_info();
-    write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},
-                                 {"generated_with", fmt::format("{}, {} build", m.compiler, m.build_type)},
-                                 {"tolerances", tolerances},
-                                 {"runs", runs}}.dump(2) + "\n",
-                          "the baseline");
-    fmt::print("regress: wrote {} ({} runs)\n", a.baseline, runs.size());
-    return;
   }
+  const MachineInfo m = machine_info();
+  write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},
+                               {"generated_with", fmt::format("{}, {} build", m.compiler, m.build_type)},
+                               {"tolerances", tolerances},
+                               {"runs", runs}}.dump(2) + "\n",
+                        "the baseline");
+  fmt::print("regress: wrote {} ({} runs)\n", a.baseline, runs.size());
+}
 
+// Each run against its baseline run: a line per difference beyond its tolerance, per run missing
+// on either side.
+std::vector<std::string> differences(const RegressArgs& a, const nlohmann::json& baseline,
+                                     const std::vector<nlohmann::json>& runs) {
   const nlohmann::json tolerances = baseline.value("tolerances", default_tolerances());
   auto key = [](const nlohmann::json& r) { return json_text(r.value("scene", nlohmann::json())) + " " + json_text(r.value("engine", nlohmann::json())); };
   std::vector<std::string> lines;
@@ -252,7 +251,25 @@ void regress(const RegressArgs& a) {
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a regress baseline: {}", a.baseline, e.what()));
   }
+  return lines;
+}
 
+void regress(const RegressArgs& a) {
+  RunOptions options;
+  for (const auto& s : a.sets) add_setting(options.overrides, s);
+  std::vector<const EngineEntry*> engines;
+  for (const char* name : kEngines) engines.push_back(&find_engine(name));
+  for (const auto& [name, v] : options.overrides.items())
+    if (std::none_of(std::begin(kEngines), std::end(kEngines), [&](const char* e) { return name == e; }))
+      throw InputError(fmt::format("--set {}: regress runs only {}", name, fmt::join(kEngines, ", ")));
+  const nlohmann::json baseline = baseline_to_compare(a);
+  install_interrupt_handlers();
+  const std::vector<nlohmann::json> runs = run_suite(a, options, engines);
+  // A suite cut short is compared with nothing and written nowhere.
+  exit_if_interrupted(fmt::format("the suite was cut short after {} run(s): nothing compared{}", runs.size(),
+                                  a.update ? ", the baseline not rewritten" : ""));
+  if (a.update) return write_baseline(a, runs);
+  const std::vector<std::string> lines = differences(a, baseline, runs);
   if (lines.empty()) {
     fmt::print("regress: {} runs match {}\n", runs.size(), a.baseline);
     return;

@@ -204,7 +204,8 @@ void report(const ReportArgs& a) {
     if (a.no_bench)
       left_out.push_back("the scaling and harness overhead sections, and the pipe's cost: `--no-bench` ran no "
                          "benchmark");
-    ReportRun run{suite, a.out + "/results"};
+    ReportRun run;
+    run.suite = suite, run.results_dir = a.out + "/results";
     fs::create_directories(run.results_dir);
     if (a.no_bench) fs::remove(run.results_dir + "/bench.json"), fs::remove(run.results_dir + "/harness.json");
     const TryStore store(a.store, a.fresh);

@@ -123,19 +123,8 @@ void check_trajectory_size(const Scene& scene, const std::vector<const EngineEnt
                                  a.trajectory, gb, rows, runs, steps, scene.n(), a.trajectory_limit_gb));
 }
 
-void run(const RunArgs& a) {
-  install_interrupt_handlers();
-  Progress::quiet = a.quiet;
-  Scene scene = load_scene(a.scene);
-  limit_handshake_seconds(a.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
-  const auto engines = parse_engine_list(a.engines);
-  ask_scene_for(scene, a.spec);
-  if (a.dt) scene.dt = *a.dt;
-  if (a.duration) scene.duration = *a.duration;
-  if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
-  if (!a.steps && scene.steps() < 1)
-    throw InputError(fmt::format("--dt/--duration: duration {} s is under half a step of {} s: no step to run",
-                                 scene.duration, scene.dt));
+// The run's options from the command line, each checked against the scene and the engines first.
+RunOptions run_options(const Scene& scene, const std::vector<const EngineEntry*>& engines, const RunArgs& a) {
   check_profile(engines, a.profile);
   RunOptions options;
   options.steps = a.steps ? *a.steps : -1;
@@ -159,6 +148,23 @@ void run(const RunArgs& a) {
                                  a.seeds, scene.source));
   if (a.seeds > 1 && !a.trajectory.empty())
     throw InputError("--trajectory with --seeds: give one placement (a trajectory holds one run per engine and profile)");
+  return options;
+}
+
+void run(const RunArgs& a) {
+  install_interrupt_handlers();
+  Progress::quiet = a.quiet;
+  Scene scene = load_scene(a.scene);
+  limit_handshake_seconds(a.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
+  const auto engines = parse_engine_list(a.engines);
+  ask_scene_for(scene, a.spec);
+  if (a.dt) scene.dt = *a.dt;
+  if (a.duration) scene.duration = *a.duration;
+  if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
+  if (!a.steps && scene.steps() < 1)
+    throw InputError(fmt::format("--dt/--duration: duration {} s is under half a step of {} s: no step to run",
+                                 scene.duration, scene.dt));
+  const RunOptions options = run_options(scene, engines, a);
   std::string trajectory_error;
   std::vector<Result> results =
       run_all(scene, engines, a.profile, options, a.quiet, a.isolation, a.trajectory, &trajectory_error);

@@ -474,8 +474,9 @@ class WorkDir {
 
 }  // namespace
 
-MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>& engines, const MatchOptions& options,
-                      const nlohmann::json& context) {
+namespace {
+
+void check_match_options(const Scene& scene, const MatchOptions& options) {
   if (options.max_halvings < 0 || options.max_halvings > 20) throw InputError("--max-halvings: must be within 0 .. 20");
   if (scene.steps() * (1L << options.max_halvings) > 1'000'000'000L)
     throw InputError(fmt::format("--max-halvings {}: {} steps at dt / 2^{} pass the cap of 1e9 steps",
@@ -485,81 +486,87 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
     throw InputError("match: the spec needs a reference run and none is set");
   if (!(options.budget_runs > 0)) throw InputError("--budget: must be above 0");
   if (options.jobs < 1) throw InputError("--jobs: must be at least 1");
-  WorkDir work;
-  MatchOptions o = options;
-  o.work_dir = work.path;
-  // The scene's content as a scene file of its balls at the start: what the store keys it by.
-  const std::string content = scene_at_state(scene, scene.initial, scene.name, scene.duration).text;
-  o.scene_digest = fmt::format("{:016x}", XXH3_64bits(content.data(), content.size()));
-  if (!o.isolation.enabled) o.jobs = 1;  // engines in this process run one at a time
+}
+
+MatchResult match_header(const Scene& scene, const MatchOptions& o, const nlohmann::json& context) {
   MatchResult m;
   m.scene = scene.name, m.scene_source = scene.source, m.scene_class = scene_class_name(scene_class(scene));
   m.use_case = scene.use_case;
   m.n = scene.n(), m.dt = scene.dt, m.spec = o.spec, m.context = context;
   m.budget_runs = o.budget_runs, m.run_ball_steps = long(scene.n()) * scene.steps();
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;
+  return m;
+}
 
-  // The searches, dealt out to the shards; each engine's configurations read here, in this thread
-  // (building an engine to read its settings), before any search starts. Under a ceiling, our
-  // solver's default profile searches first (in every shard: the ceiling is a multiple of it).
+// The searches of one match, with what became of each.
+struct SearchPlan {
   std::vector<std::unique_ptr<Search>> searches;
-  std::vector<bool> taken, first;
+  std::vector<bool> taken;  // this shard's own (the others only search to set the ceiling)
+  std::vector<bool> first;  // sets the ceiling: searched before the rest
+  std::vector<std::optional<MatchOutcome>> outcomes;
+};
+
+// The searches, dealt out to the shards; each engine's configurations read here, in this thread
+// (building an engine to read its settings), before any search starts. Under a ceiling, our
+// solver's default profile searches first (in every shard: the ceiling is a multiple of it).
+SearchPlan plan_searches(const Scene& scene, const std::vector<const EngineEntry*>& engines, const MatchOptions& o) {
+  SearchPlan plan;
   size_t item = 0;
   for (const EngineEntry* e : engines)
     for (const std::string& profile : profiles_for(*e, o.profile)) {
       const bool takes = o.shard.takes(item++);
       const bool sets_ceiling = o.ceiling > 0 && e->info.role == EngineRole::ours && profile == e->info.profiles.front();
       if (!takes && !sets_ceiling) continue;
-      searches.push_back(std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o));
-      taken.push_back(takes), first.push_back(sets_ceiling);
+      plan.searches.push_back(std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o));
+      plan.taken.push_back(takes), plan.first.push_back(sets_ceiling);
     }
-  if (o.ceiling > 0 && std::find(first.begin(), first.end(), true) == first.end())
+  if (o.ceiling > 0 && std::find(plan.first.begin(), plan.first.end(), true) == plan.first.end())
     throw InputError("--ceiling: a multiple of our solver's cost, and our solver (home) is not among --engine");
-  std::vector<std::optional<MatchOutcome>> outcomes(searches.size());
-  Progress progress(fmt::format("match {} ({} searches, {} at once)", scene.name, searches.size(),
-                                std::min<size_t>(o.jobs, searches.size())));
-  std::mutex done_mutex;
-  size_t done = 0;
-  // Runs the searches of one phase, `o.jobs` at once: first those that set the ceiling, then the rest.
-  const auto run_phase = [&](bool in_phase) {
-    std::vector<size_t> items;
-    for (size_t i = 0; i < searches.size(); ++i)
-      if (first[i] == in_phase) items.push_back(i);
-    std::atomic<size_t> next{0};
-    const auto worker = [&] {
-      for (size_t n = next++; n < items.size() && !interrupt_signal(); n = next++) {
-        MatchOutcome oc = searches[items[n]]->run();
-        std::lock_guard lock(done_mutex);
-        outcomes[items[n]] = std::move(oc);
-        if (!o.quiet) progress.update(double(++done) / double(searches.size()));
-      }
-    };
-    std::vector<std::thread> team;
-    for (int j = 1; j < std::min<int>(o.jobs, int(items.size())); ++j) team.emplace_back(worker);
-    worker();
-    for (auto& t : team) t.join();
-  };
-  run_phase(true);
-  if (o.ceiling > 0) {
-    std::optional<double> ours;
-    for (size_t i = 0; i < searches.size(); ++i)
-      if (first[i] && outcomes[i] && outcomes[i]->reached) {
-        const double ns = searches[i]->tries[outcomes[i]->found].cost_ns;
-        ours = ours ? std::min(*ours, ns) : ns;
-      }
-    // Where our solver met nothing, nothing is a multiple of its cost: no ceiling.
-    if (ours) {
-      m.ceiling = o.ceiling, m.ceiling_ns = o.ceiling * *ours;
-      for (auto& s : searches) s->set_ceiling(m.ceiling_ns);
-    }
-  }
-  run_phase(false);
+  plan.outcomes.resize(plan.searches.size());
+  return plan;
+}
 
-  // Every search's tries in the order of the searches; then each found configuration timed alone.
-  for (size_t i = 0; i < searches.size(); ++i) {
-    if (!outcomes[i] || !taken[i]) continue;  // interrupted before it started, or another shard's
-    Search& s = *searches[i];
-    MatchOutcome oc = std::move(*outcomes[i]);
+// Runs the searches of one phase, `o.jobs` at once: those that set the ceiling, or the rest.
+void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Progress& progress, size_t& done) {
+  std::vector<size_t> items;
+  for (size_t i = 0; i < plan.searches.size(); ++i)
+    if (plan.first[i] == setting_ceiling) items.push_back(i);
+  std::mutex done_mutex;
+  std::atomic<size_t> next{0};
+  const auto worker = [&] {
+    for (size_t n = next++; n < items.size() && !interrupt_signal(); n = next++) {
+      MatchOutcome oc = plan.searches[items[n]]->run();
+      std::lock_guard lock(done_mutex);
+      plan.outcomes[items[n]] = std::move(oc);
+      if (!o.quiet) progress.update(double(++done) / double(plan.searches.size()));
+    }
+  };
+  std::vector<std::thread> team;
+  for (int j = 1; j < std::min<int>(o.jobs, int(items.size())); ++j) team.emplace_back(worker);
+  worker();
+  for (auto& t : team) t.join();
+}
+
+// The ceiling from our solver's cheapest configuration found; where it met nothing, nothing is a
+// multiple of its cost: no ceiling.
+void set_ceiling(SearchPlan& plan, const MatchOptions& o, MatchResult& m) {
+  std::optional<double> ours;
+  for (size_t i = 0; i < plan.searches.size(); ++i)
+    if (plan.first[i] && plan.outcomes[i] && plan.outcomes[i]->reached) {
+      const double ns = plan.searches[i]->tries[plan.outcomes[i]->found].cost_ns;
+      ours = ours ? std::min(*ours, ns) : ns;
+    }
+  if (!ours) return;
+  m.ceiling = o.ceiling, m.ceiling_ns = o.ceiling * *ours;
+  for (auto& s : plan.searches) s->set_ceiling(m.ceiling_ns);
+}
+
+// Every search's tries in the order of the searches; each found configuration timed alone.
+void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchResult& m) {
+  for (size_t i = 0; i < plan.searches.size(); ++i) {
+    if (!plan.outcomes[i] || !plan.taken[i]) continue;  // interrupted before it started, or another shard's
+    Search& s = *plan.searches[i];
+    MatchOutcome oc = std::move(*plan.outcomes[i]);
     const int offset = int(m.tries.size());
     if (oc.reached && !interrupt_signal()) {
       const auto w = s.windows.find(oc.found);
@@ -575,19 +582,37 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
     m.tries.insert(m.tries.end(), s.tries.begin(), s.tries.end());
     m.outcomes.push_back(std::move(oc));
   }
+}
+
+}  // namespace
+
+MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>& engines, const MatchOptions& options,
+                      const nlohmann::json& context) {
+  check_match_options(scene, options);
+  WorkDir work;
+  MatchOptions o = options;
+  o.work_dir = work.path;
+  // The scene's content as a scene file of its balls at the start: what the store keys it by.
+  const std::string content = scene_at_state(scene, scene.initial, scene.name, scene.duration).text;
+  o.scene_digest = fmt::format("{:016x}", XXH3_64bits(content.data(), content.size()));
+  if (!o.isolation.enabled) o.jobs = 1;  // engines in this process run one at a time
+  MatchResult m = match_header(scene, o, context);
+  SearchPlan plan = plan_searches(scene, engines, o);
+  Progress progress(fmt::format("match {} ({} searches, {} at once)", scene.name, plan.searches.size(),
+                                std::min<size_t>(o.jobs, plan.searches.size())));
+  size_t done = 0;
+  run_phase(plan, true, o, progress, done);
+  if (o.ceiling > 0) set_ceiling(plan, o, m);
+  run_phase(plan, false, o, progress, done);
+  gather(plan, scene, o, m);
   if (interrupt_signal()) m.interrupted = interrupt_name();
   return m;
 }
 
-void print_match(const MatchResult& m, std::optional<double> target) {
-  fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
-  fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, the found configuration "
-             "timed after the searches over a tenth of its run from the state it saved there, scaled to the whole run, "
-             "median of the repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
-             m.dt);
-  fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
-             "grows is past its bound\n",
-             m.budget_runs, m.budget_runs * double(m.run_ball_steps));
+namespace {
+
+// One line per engine and profile: met or not, the configuration, its cost and figures.
+void print_match_rows(const MatchResult& m) {
   std::vector<std::string> terms;
   for (const SpecTermDef& d : spec_terms())
     if (m.spec[d.term]) terms.push_back(d.key);
@@ -608,7 +633,10 @@ void print_match(const MatchResult& m, std::optional<double> target) {
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
     fmt::print(" {:>5} {:>6}\n", oc.tries, oc.stored);
   }
-  // Our solver against the cheapest external engine that met the spec.
+}
+
+// Each of our profiles against the cheapest external engine that met the spec (and --target).
+void print_our_ratios(const MatchResult& m, std::optional<double> target) {
   const MatchOutcome* cheapest = cheapest_reached(m, role_name(EngineRole::external));
   // The ratio against --target: none where ours did not meet the spec, 0 where no external did.
   const auto against_target = [&](std::optional<double> ratio) {
@@ -636,6 +664,21 @@ void print_match(const MatchResult& m, std::optional<double> target) {
                  cheapest->cost_ns / oc.cost_ns, run_label(cheapest->engine, cheapest->profile),
                  cost_text(cheapest->cost_ns), against_target(cheapest->cost_ns / oc.cost_ns));
   }
+}
+
+}  // namespace
+
+void print_match(const MatchResult& m, std::optional<double> target) {
+  fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
+  fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, the found configuration "
+             "timed after the searches over a tenth of its run from the state it saved there, scaled to the whole run, "
+             "median of the repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
+             m.dt);
+  fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
+             "grows is past its bound\n",
+             m.budget_runs, m.budget_runs * double(m.run_ball_steps));
+  print_match_rows(m);
+  print_our_ratios(m, target);
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.command.empty()) continue;
     const std::string label = run_label(oc.engine, oc.profile);

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 
 #include "bench_results.h"
+#include "conform_run.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -208,6 +209,10 @@ void run_calibration_part(const ReportRun& run, const ReportPart& part) {
   write_calibration_file(path_of(run, part), run_calibration(run.engines, o, run_context()));
 }
 
+void run_conform_part(const ReportRun& run, const ReportPart& part) {
+  write_conform_file(path_of(run, part), run_conform(run.engines, "all", run_context(), false));
+}
+
 std::string harness_path(const ReportRun& run) { return run.results_dir + "/harness.json"; }
 
 // The step benchmark, then the harness benchmark beside it (their ratios from one machine).
@@ -231,7 +236,7 @@ struct PartRunner {
   PartKind kind;
   void (*run)(const ReportRun&, const ReportPart&);
   bool (*complete)(const ReportRun&, const ReportPart&);
-  const char* done;  // the progress line's verb
+  const char* done;  // the progress line: its verb before the scene, or all of it for a part of every engine
 };
 
 const PartRunner kRunners[] = {
@@ -248,11 +253,16 @@ const PartRunner kRunners[] = {
     {PartKind::stress, run_stress_part,
      [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_frontier_file); },
      "stressed"},
+    {PartKind::conform, run_conform_part,
+     [](const ReportRun& r, const ReportPart& p) {
+       return uninterrupted(path_of(r, p), read_conform_file);
+     },
+     "checked every engine against the closed forms"},
     {PartKind::calibration, run_calibration_part,
-     [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)); }, "calibrated"},
+     [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)); }, "calibrated restitution"},
     {PartKind::bench, run_bench_part,
      [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)) && fs::exists(harness_path(r)); },
-     "benchmarked"},
+     "ran the benchmarks"},
 };
 
 const PartRunner& runner(PartKind k) {
@@ -292,7 +302,9 @@ bool part_complete(const ReportRun& run, const ReportPart& part) { return runner
 void run_part(const ReportRun& run, const ReportPart& part) {
   const PartRunner& r = runner(part.kind);
   r.run(run, part);
-  if (!interrupt_signal()) progress_line("{} {}\n", r.done, part.scene.empty() ? part_word(part) : part.scene);
+  if (interrupt_signal()) return;
+  if (part.scene.empty()) progress_line("{}\n", r.done);
+  else progress_line("{} {}\n", r.done, part.scene);
 }
 
 }  // namespace ballbench::cli

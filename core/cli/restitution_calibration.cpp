@@ -67,7 +67,7 @@ CalibrationResult run_calibration(const std::vector<const EngineEntry*>& engines
             // Both scenes start with zero momentum along the contact (the wall's frame for one
             // ball), so the kinetic energy is the energy of the approach.
             if (r.status == RunStatus::ok) p.effective = std::sqrt(std::max(r.metrics.value("energy.final"), 0.0) / r.metrics.value("energy.initial"));
-            if (r.status == RunStatus::ok && r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair") > 0)
+            if (r.status == RunStatus::ok && r.metrics.tunnelled() > 0)
               p.tunnelled = true, p.error = "passed through the contact instead of bouncing";
             out.points.push_back(std::move(p));
           }

@@ -239,77 +239,109 @@ void check_profile(const std::vector<const EngineEntry*>& engines, const std::st
                                    fmt::join(known, ", ")));
 }
 
+namespace {
+
+// Where the runs' trajectories go: one CSV written in this process, or parts from child processes
+// joined. A trajectory that cannot be written (a full disk) loses the trajectory, not the runs:
+// the error is kept for the command to report after its table and JSON.
+class TrajectorySink {
+ public:
+  TrajectorySink(const Scene& scene, const Isolation& isolation, const std::string& path, bool keep_errors)
+      : keep_errors_(keep_errors) {
+    if (path.empty()) return;
+    const bool rotation = scene.features().rotation;
+    if (isolation.enabled) parts_.emplace(path, rotation);
+    else csv_.emplace(path, rotation);
+  }
+  TrajectoryCsv* csv() { return csv_ && lost_.empty() ? &*csv_ : nullptr; }
+  // The next child's part file ("" for none).
+  std::string next_part() {
+    std::string part;
+    if (parts_) keep_going([&] { part = parts_->next_part(); });
+    return part;
+  }
+  void take_last(const std::string& part) {
+    if (parts_ && !part.empty()) keep_going([&] { parts_->take_last(); });
+  }
+  // Closes the file; the error that lost the trajectory, or "".
+  std::string finish() {
+    if (csv_) keep_going([&] { csv_->close(); });
+    if (parts_) keep_going([&] { parts_->finish(); });
+    return lost_;
+  }
+
+ private:
+  void keep_going(const std::function<void()>& write) {
+    if (!lost_.empty()) return;
+    try {
+      write();
+    } catch (const InputError& e) {
+      if (!keep_errors_) throw;
+      lost_ = e.what();
+      parts_.reset();
+    }
+  }
+  bool keep_errors_;
+  std::optional<TrajectoryCsv> csv_;     // in this process
+  std::optional<TrajectoryParts> parts_;  // from child processes
+  std::string lost_;
+};
+
+// One engine and profile, in this process or a child. The settings were checked before the first
+// run; an engine that refuses them only now (an engine process answering its scene with a settings
+// error) fails its own row, not the rows already run.
+Result run_one(const Scene& scene, const EngineEntry& e, RunOptions options, const Isolation& isolation,
+               TrajectorySink& sink) {
+  const auto settings_refused = [&](const InputError& err) {
+    Result r = result_header(scene, e, options);
+    r.status = RunStatus::failed;
+    r.error = fmt::format("the engine refused its settings: {}", err.what());
+    return r;
+  };
+  if (!isolation.enabled) {
+    options.trajectory = sink.csv();
+    try {
+      return run_engine(scene, e, options);
+    } catch (const InputError& err) {
+      return settings_refused(err);
+    }
+  }
+  const std::string part = sink.next_part();
+  Result r;
+  try {
+    r = run_engine_isolated(scene, e, options, IsolationOptions{isolation.timeout_s, part});
+  } catch (const InputError& err) {
+    r = settings_refused(err);
+  }
+  sink.take_last(part);
+  return r;
+}
+
+}  // namespace
+
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
                             const std::string& profile, const RunOptions& base, bool quiet,
                             const Isolation& isolation, const std::string& trajectory_path,
                             std::string* trajectory_error) {
-  std::optional<TrajectoryCsv> trajectory;  // in this process
-  std::optional<TrajectoryParts> parts;     // from child processes
-  if (!trajectory_path.empty()) {
-    const bool rotation = scene.features().rotation;
-    if (isolation.enabled) parts.emplace(trajectory_path, rotation);
-    else trajectory.emplace(trajectory_path, rotation);
-  }
-  // A trajectory that cannot be written (a full disk) loses the trajectory, not the runs: the
-  // error is handed back for the command to report after its table and JSON.
-  std::string lost;
-  const auto keep_going = [&](const std::function<void()>& write) {
-    if (!lost.empty()) return;
-    try {
-      write();
-    } catch (const InputError& e) {
-      if (!trajectory_error) throw;
-      lost = e.what();
-      parts.reset();
-    }
-  };
+  TrajectorySink sink(scene, isolation, trajectory_path, trajectory_error != nullptr);
   std::vector<Result> results;
-  bool stopped = false;
-  for (const EngineEntry* e : engines) {
-    if (stopped) break;
+  for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
       RunOptions options = base;
       options.profile = p;
       if (interrupt_signal()) {  // asked to stop: the rows so far are the result
         // A signal between runs marks the run that was next; one during a run marked that run.
         if (results.empty() || results.back().status != RunStatus::interrupted) results.push_back(not_started(scene, *e, options));
-        stopped = true;
-        break;
+        const std::string lost = sink.finish();
+        if (trajectory_error) *trajectory_error = lost;
+        return results;
       }
       Progress progress(fmt::format("{} ({}) on {}", e->info.name, p, scene.name));
       if (!quiet) options.progress = [&](long done, long total) { progress.update(double(done) / total); };
       options.overrides = base.overrides.value(e->info.name, nlohmann::json::object());
-      // The settings were checked before the first run; an engine that refuses them only now (an
-      // engine process answering its scene with a settings error) fails its own row, not the rows
-      // already run.
-      const auto settings_refused = [&](const InputError& err) {
-        Result r = result_header(scene, *e, options);
-        r.status = RunStatus::failed;
-        r.error = fmt::format("the engine refused its settings: {}", err.what());
-        return r;
-      };
-      if (!isolation.enabled) {
-        if (trajectory && lost.empty()) options.trajectory = &*trajectory;
-        try {
-          results.push_back(run_engine(scene, *e, options));
-        } catch (const InputError& err) {
-          results.push_back(settings_refused(err));
-        }
-        continue;
-      }
-      std::string part;
-      if (parts) keep_going([&] { part = parts->next_part(); });
-      IsolationOptions child{isolation.timeout_s, part};
-      try {
-        results.push_back(run_engine_isolated(scene, *e, options, child));
-      } catch (const InputError& err) {
-        results.push_back(settings_refused(err));
-      }
-      if (parts && !part.empty()) keep_going([&] { parts->take_last(); });
+      results.push_back(run_one(scene, *e, options, isolation, sink));
     }
-  }
-  if (trajectory) keep_going([&] { trajectory->close(); });
-  if (parts) keep_going([&] { parts->finish(); });
+  const std::string lost = sink.finish();
   if (trajectory_error) *trajectory_error = lost;
   return results;
 }

@@ -71,6 +71,57 @@ nlohmann::json plan_record(const Scene& scene, const std::vector<SweepPlanItem>&
           {"reference", o.reference ? o.reference->info.name : ""}, {"repeats", o.repeats}, {"points", points}};
 }
 
+namespace {
+
+// Runs in this process or a child, as asked. A point whose settings the engine refuses (a value of
+// its own sweep_knobs, say) fails that point.
+Result run_point(const Scene& s, const EngineEntry& e, const RunOptions& r, const SweepOptions& o) {
+  try {
+    return o.isolation.enabled ? run_engine_isolated(s, e, r, IsolationOptions{o.isolation.timeout_s, ""})
+                               : run_engine(s, e, r);
+  } catch (const InputError& err) {
+    Result failed = result_header(s, e, r);
+    failed.status = RunStatus::failed;
+    failed.error = fmt::format("the engine refused this point's settings {}: {}", r.overrides.dump(), err.what());
+    return failed;
+  }
+}
+
+// One point: its measured run (error against the reference, metrics; its timing is not used, since
+// the reference stepping in lockstep shares the caches), then the timing runs, the engine alone.
+SweepPoint measure_point(const Scene& scene, const SweepPlanItem& item, size_t k, const SweepOptions& o) {
+  Scene s = scene;
+  s.dt = item.dt;
+  RunOptions options;
+  options.steps = item.steps;
+  options.profile = item.profile;
+  options.overrides = item.overrides;
+  options.reference = item.engine == o.reference ? nullptr : o.reference;
+  const Result r = run_point(s, *item.engine, options, o);
+  SweepPoint p;
+  p.engine = item.engine->info.name, p.profile = item.profile, p.knob = item.knob, p.value = item.value;
+  p.dt = item.dt, p.steps = item.steps, p.settings = r.settings;
+  p.status = r.status, p.error = r.error, p.measured = r.measured();
+  if (options.reference) {
+    p.pos_rms = r.reference.pos_rms_final, p.vel_rms = r.reference.vel_rms_final;
+    p.energy_rel = r.reference.energy_rel_max;
+  }  // else: the reference against itself, error 0 by definition
+  p.tunnelling = r.metrics.tunnelled();
+  p.sticking = r.metrics.stuck();
+  p.plan_index = static_cast<long>(k);
+  options.reference = nullptr;
+  for (int rep = 0; rep < o.repeats && r.status == RunStatus::ok; ++rep) {
+    const Result t = run_point(s, *item.engine, options, o);
+    if (t.status == RunStatus::interrupted) p.status = t.status, p.error = t.error;  // no timing: not ok
+    if (t.status != RunStatus::ok) break;
+    p.ns_per_ball_step.push_back(t.ns_per_ball_step);
+    p.engine_s.push_back(t.engine_process_s.value_or(t.engine_s));  // the engine's own time, as ns_per_ball_step
+  }
+  return p;
+}
+
+}  // namespace
+
 SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>& engines, const SweepOptions& o,
                       const nlohmann::json& context) {
   if (o.repeats < 1) throw InputError("--repeats: must be at least 1");
@@ -82,70 +133,14 @@ SweepResult run_sweep(const Scene& scene, const std::vector<const EngineEntry*>&
   SweepResult out;
   out.plan = plan_record(scene, plan, o);
   out.shard_index = o.shard.index, out.shard_count = o.shard.count;
-  out.scene = scene.name;
-  out.n = scene.n();
-  out.horizon = o.horizon;
-  out.reference = o.reference->info.name;
-  out.repeats = o.repeats;
-  out.context = context;
-  const IsolationOptions child{o.isolation.timeout_s, ""};
+  out.scene = scene.name, out.n = scene.n(), out.horizon = o.horizon;
+  out.reference = o.reference->info.name, out.repeats = o.repeats, out.context = context;
   Progress progress(o.shard.all()
                         ? fmt::format("sweep {} ({} points x {} runs)", scene.name, plan.size(), o.repeats + 1)
                         : fmt::format("sweep {} shard {}/{} ({} of {} points x {} runs)", scene.name, o.shard.index,
                                       o.shard.count, mine.size(), plan.size(), o.repeats + 1));
-  // Runs in this process or a child, as asked.
-  // A point whose settings the engine refuses (a value of its own sweep_knobs, say) fails that point.
-  auto run = [&](const Scene& s, const EngineEntry& e, const RunOptions& r) {
-    try {
-      return o.isolation.enabled ? run_engine_isolated(s, e, r, child) : run_engine(s, e, r);
-    } catch (const InputError& err) {
-      Result failed = result_header(s, e, r);
-      failed.status = RunStatus::failed;
-      failed.error = fmt::format("the engine refused this point's settings {}: {}", r.overrides.dump(), err.what());
-      return failed;
-    }
-  };
   for (size_t m = 0; m < mine.size(); ++m) {
-    const size_t k = mine[m];
-    const SweepPlanItem& item = plan[k];
-    Scene s = scene;
-    s.dt = item.dt;
-    RunOptions options;
-    options.steps = item.steps;
-    options.profile = item.profile;
-    options.overrides = item.overrides;
-    // The measured run: error against the reference, metrics. Its timing is not used, since the
-    // reference stepping in lockstep shares the caches.
-    options.reference = item.engine == o.reference ? nullptr : o.reference;
-    const Result r = run(s, *item.engine, options);
-    SweepPoint p;
-    p.engine = item.engine->info.name;
-    p.profile = item.profile;
-    p.knob = item.knob;
-    p.value = item.value;
-    p.dt = item.dt;
-    p.steps = item.steps;
-    p.settings = r.settings;
-    p.status = r.status;
-    p.error = r.error;
-    p.measured = r.measured();
-    if (options.reference) {
-      p.pos_rms = r.reference.pos_rms_final, p.vel_rms = r.reference.vel_rms_final;
-      p.energy_rel = r.reference.energy_rel_max;
-    }  // else: the reference against itself, error 0 by definition
-    p.tunnelling = r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair");
-    p.sticking = r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair");
-    p.plan_index = static_cast<long>(k);
-    // The timing runs: the engine alone, the same steps.
-    options.reference = nullptr;
-    for (int rep = 0; rep < o.repeats && r.status == RunStatus::ok; ++rep) {
-      const Result t = run(s, *item.engine, options);
-      if (t.status == RunStatus::interrupted) p.status = t.status, p.error = t.error;  // no timing: not ok
-      if (t.status != RunStatus::ok) break;
-      p.ns_per_ball_step.push_back(t.ns_per_ball_step);
-      p.engine_s.push_back(t.engine_process_s.value_or(t.engine_s));  // the engine's own time, as ns_per_ball_step
-    }
-    out.points.push_back(std::move(p));
+    out.points.push_back(measure_point(scene, plan[mine[m]], mine[m], o));
     if (interrupt_signal()) {  // the point in progress is kept, marked by its run's status
       out.interrupted = interrupt_name();
       break;

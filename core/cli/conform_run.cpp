@@ -1,0 +1,68 @@
+#include "conform_run.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "conformance.h"
+#include "interrupt.h"
+#include "result.h"
+#include "run_engines.h"
+
+namespace ballbench::cli {
+namespace {
+
+std::string figure_text(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "inf"; }
+
+ConformRow check(const EngineEntry& e, const std::string& profile, const ConformCaseDef& d) {
+  ConformRow row{e.info.name, profile, d.key, d.tolerance};
+  try {
+    const double figure = conform_figure(e, profile, d.c);
+    row.figure = figure;
+    row.verdict = figure <= d.tolerance ? ConformVerdict::pass : ConformVerdict::fail;
+    if (*d.capability && claims(e.info.caps, d.capability) && !(figure < d.refutes)) row.refuted = d.capability;
+  } catch (const SceneUnsupported& refused) {  // a case it says it cannot run: neither a pass nor a refuted claim
+    row.verdict = ConformVerdict::refused, row.why = refused.what();
+  }
+  return row;
+}
+
+void print_row(const ConformRow& r) {
+  const ConformCaseDef* d = nullptr;
+  for (const ConformCaseDef& c : conform_cases())
+    if (c.key == r.check) d = &c;
+  const std::string figure = r.figure ? figure_text(*r.figure) : "-";
+  std::string verdict = r.verdict == ConformVerdict::pass ? "pass" : r.verdict == ConformVerdict::fail ? "FAIL" : "refused";
+  if (!r.why.empty()) verdict += ": " + r.why;
+  if (!r.refuted.empty() && d)
+    verdict += fmt::format(" (refutes its claim of {}: {} or more)", r.refuted, figure_text(d->refutes));
+  fmt::print("{:<18} {:<22} {:>10} {:>10}  {}\n", run_label(r.engine, r.profile), r.check, figure,
+             figure_text(r.tolerance), verdict);
+}
+
+}  // namespace
+
+ConformResult run_conform(const std::vector<const EngineEntry*>& engines, const std::string& profile,
+                          const nlohmann::json& context, bool print) {
+  ConformResult out;
+  out.context = context;
+  for (const EngineEntry* e : engines) {
+    if (!e->info.unavailable.empty()) {
+      out.rows.push_back({e->info.name, "", "available", 0, std::nullopt, ConformVerdict::fail, "", e->info.unavailable});
+      if (print) fmt::print("{:<18} unavailable: {}\n", e->info.name, e->info.unavailable);
+      continue;
+    }
+    for (const std::string& p : profiles_for(*e, profile))
+      for (const ConformCaseDef& d : conform_cases()) {
+        if (interrupt_signal()) {
+          out.interrupted = interrupt_name();
+          return out;
+        }
+        out.rows.push_back(check(*e, p, d));
+        if (print) print_row(out.rows.back());
+      }
+  }
+  return out;
+}
+
+}  // namespace ballbench::cli
