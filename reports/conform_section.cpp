@@ -31,7 +31,7 @@ std::string refuted_mark(const ReportInputs& in, const std::string& engine, cons
   if (!in.conform) return "";
   const auto claims = refuted_claims(*in.conform, engine, profile);
   if (claims.empty()) return "";
-  return fmt::format(" [⚠ refutes its claim of {}](#closed-form-checks)", fmt::join(claims, ", "));
+  return fmt::format(" [⚠ {} refuted](#closed-form-checks)", fmt::join(claims, ", "));
 }
 
 std::string conform_section(const ReportInputs& in) {

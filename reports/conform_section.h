@@ -8,7 +8,7 @@
 
 namespace ballbench {
 
-// "⚠ refutes its claim of friction" for an engine and profile whose claim a closed form refuted
+// " ⚠ friction refuted" for an engine and profile whose claim of friction a closed form refuted
 // (a link to the checks), "" otherwise.
 std::string refuted_mark(const ReportInputs& in, const std::string& engine, const std::string& profile);
 

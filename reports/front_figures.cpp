@@ -79,12 +79,14 @@ std::optional<Series> write_series(const MatchResult& m, const MatchOutcome& oc,
   std::sort(as_is.begin(), as_is.end(), [](auto* a, auto* b) { return a->halvings < b->halvings; });
   for (const MatchTry* t : mine) s.x_max = std::max(s.x_max, x_of(*t));
   for (const MatchTry* t : as_is) f << x_of(*t) << ' ' << t->cost_ns << '\n';
+  // An empty block would shift the blocks after it: gnuplot does not count leading blank lines.
+  if (as_is.empty()) f << "NaN NaN\n";
   for (bool met : {true, false}) {
     f << "\n\n";
     int n = 0;
     for (const MatchTry* t : mine)
       if (t->met == met) f << x_of(*t) << ' ' << t->cost_ns << '\n', ++n;
-    if (n == 0) f << "NaN NaN\n";  // an empty block would end the file early for gnuplot
+    if (n == 0) f << "NaN NaN\n";
   }
   return s;
 }

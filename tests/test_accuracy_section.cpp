@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "accuracy_section.h"
@@ -56,22 +57,23 @@ TEST(AccuracySection, TheSummaryAnswersWithThePickAndTheRatioInWords) {
   in.matches = {pile()};
   in.matches[0].use_case = "a pile at rest";
   const std::string md = summary_section(in, {});
-  EXPECT_NE(md.find("| [a pile at rest](#equal-accuracy-pile) (`pile`, 500 balls) | overlap ≤ 1% of a radius, no "
-                    "tunnelling | **chipmunk** as shipped, step dt/64 | 45000 | **home**, step dt | 900 | **50x "
-                    "cheaper** |"),
+  EXPECT_NE(md.find("| [a pile at rest](#equal-accuracy-pile), 500 balls | overlap ≤ 1%, no tunnelling | **chipmunk** "
+                    "as shipped, dt/64 | 45000 | **home**, dt | 900 | **50x cheaper** |"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("dt: the scene's own step (0.01 s in each)"), std::string::npos) << md;
 
-  // No external engine met it within its budget: the row names the nearest miss (chipmunk's 0.02 at
-  // dt/32 is nearer 0.01 than box2d's 0.034) and calls the ratio undecided.
+  // No external engine met it: the row names the nearest miss (chipmunk's 0.02 at dt/32 is nearer
+  // 0.01 than box2d's 0.034), why the search stopped, and calls the ratio undecided.
   MatchResult undecided = pile();
   for (MatchOutcome& oc : undecided.outcomes)
     if (oc.role == role_name(EngineRole::external)) oc.reached = false, oc.found = -1;
+  for (MatchOutcome& oc : undecided.outcomes)
+    if (oc.engine == "chipmunk") oc.stop = SearchStop::budget;
   in.matches = {undecided};
   const std::string md2 = summary_section(in, {});
-  EXPECT_NE(md2.find("| none met it; nearest: chipmunk/stock (overlap 0.02 at dt/32) | n/a | **home**, step dt | 900 | "
-                     "undecided: no external engine met it within the budget |"),
+  EXPECT_NE(md2.find("| none within the budget (nearest: chipmunk/stock) | n/a | **home**, dt | 900 | undecided: no "
+                     "external engine met it |"),
             std::string::npos)
       << md2;
 }
@@ -126,11 +128,27 @@ TEST(AccuracySection, FrontsPlaceWhatMetACountOfZeroByItsOtherTerms) {
   box.spec = {};
   box.spec[SpecTerm::tunnelling] = 0;
   box.tries[1].figures["tunnelling"] = 3;
+  // A profile whose only tries that ran ok set a knob: no line, its blocks still in their places.
+  MatchResult knobbed = pile();
+  knobbed.scene = "knobbed";
+  for (MatchTry& t : knobbed.tries)
+    if (t.engine == "chipmunk") t.knob = "iterations", t.value = 5;
   ReportInputs in;
-  in.matches = {pile(), box};
+  in.matches = {pile(), box, knobbed};
   const std::vector<Figure> figures = front_figures(in);
   std::filesystem::current_path(here);
-  EXPECT_EQ(figures.size(), 3u);
+  EXPECT_EQ(figures.size(), 4u);
+  // Every series file has its three blocks (the line, what met, what did not), none empty: gnuplot
+  // counts no leading blank lines, so an empty block would shift the others.
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    const std::string name = e.path().filename().string();
+    if (e.path().extension() != ".dat" || name.find("picks") != std::string::npos) continue;
+    std::ifstream in_file(e.path());
+    const std::string text((std::istreambuf_iterator<char>(in_file)), std::istreambuf_iterator<char>());
+    EXPECT_FALSE(text.starts_with("\n")) << name;
+    EXPECT_EQ(text.find("\n\n\n\n"), std::string::npos) << name;
+  }
+  EXPECT_EQ(front_xs(dir / "knobbed-fronts-chipmunk-stock.dat"), (std::vector<double>{0.8, 2})) << "met, then not";
   EXPECT_EQ(front_xs(dir / "pile-fronts-home.dat"), (std::vector<double>{0.7, 0.7})) << "line, then met";
   EXPECT_EQ(front_xs(dir / "pile-fronts-chipmunk-stock.dat"), (std::vector<double>{2, 0.8, 0.8, 2}));
   EXPECT_EQ(front_xs(dir / "box-fronts-home.dat"), (std::vector<double>{0.001, 0.001}));

@@ -252,7 +252,7 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
   // The answer first, on its own page: the use cases, each linked to its scene's page, which holds
   // the equal-accuracy section with its front; every try's CSV beside.
-  for (const char* want : {"| use case (scene) |", "](scenes/seed-box.md#equal-accuracy-seed-box) (`seed-box`, ",
+  for (const char* want : {"| use case |", "](scenes/seed-box.md#equal-accuracy-seed-box), ",
                            "figures/fronts.png", "[Terms](pages/terms.md)"})
     EXPECT_NE(front.find(want), std::string::npos) << want;
   EXPECT_EQ(front.find("## Every engine"), std::string::npos) << "the scene tables are on the scenes' pages";
