@@ -9,7 +9,7 @@
 
 #include "conform_result.h"
 #include "input_error.h"
-#include "metrics/meter_set.h"
+#include "made_run.h"
 #include "report_text.h"
 #include "report_writer.h"
 #include "result.h"
@@ -44,14 +44,7 @@ TEST(ConformReport, AnEngineWhoseClaimIsRefutedIsMarkedInItsScenesTable) {
   ReportInputs in;
   in.run = nlohmann::json::object();
   in.conform = checks();
-  for (const char* engine : {"honest", "liar"}) {
-    Result r;
-    r.engine = engine, r.engine_version = "1", r.profile = "default", r.scene = "box";
-    r.scene_source = "/x/scenarios/box.toml";
-    r.n = 2, r.dt = 0.01, r.steps = r.steps_done = 10;
-    r.metrics = resting_values();
-    in.results.push_back(r);
-  }
+  for (const char* engine : {"honest", "liar"}) in.results.push_back(made_run(engine, "box", 2, 10));
   const auto pages = render_report(in);
   const std::string scene = page_text(pages, "scenes/box.md"), engines = page_text(pages, "pages/engines.md");
   EXPECT_NE(scene.find("| liar [⚠ friction refuted](../pages/engines.md#closed-form-checks) | default |"),

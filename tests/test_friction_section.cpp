@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "friction_section.h"
+#include "made_run.h"
 #include "metrics/meter_set.h"
 #include "result.h"
 
@@ -13,14 +14,7 @@ namespace ballbench {
 namespace {
 
 Result rolling_run(std::string engine, std::string scene, int n, double speed, double expected) {
-  Result r;
-  r.engine = std::move(engine);
-  r.engine_version = "1";
-  r.profile = "default";
-  r.scene = std::move(scene);
-  r.scene_source = "/x/scenarios/" + r.scene + ".toml";
-  r.n = n, r.dt = 0.01, r.steps = r.steps_done = 150;
-  r.metrics = resting_values();
+  Result r = made_run(std::move(engine), std::move(scene), n, 150);
   r.metrics.set("rolling.speed", speed);
   r.metrics.set("rolling.expected_speed", expected);
   r.metrics.set("rolling.error", std::abs(speed - expected) / std::abs(expected));

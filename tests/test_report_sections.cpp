@@ -9,6 +9,7 @@
 
 #include "bench_results.h"
 #include "metrics/meter_set.h"
+#include "made_run.h"
 #include "report_text.h"
 #include "report_writer.h"
 #include "result.h"
@@ -23,16 +24,9 @@ SceneFeatures features(bool walls, bool gravity, bool elastic) {
 }
 
 Result run(std::string engine, std::string scene, const SceneFeatures& f, double ns) {
-  Result r;
-  r.engine = std::move(engine);
-  r.engine_version = "1";
-  r.profile = "default";
-  r.scene = std::move(scene);
-  r.scene_source = "/x/scenarios/" + r.scene + ".toml";
+  Result r = made_run(std::move(engine), std::move(scene));
   r.scene_features = f;
-  r.n = 20, r.dt = 0.01, r.steps = r.steps_done = 100;
   r.ns_per_ball_step = ns, r.ns_per_step = 20 * ns;
-  r.metrics = resting_values();  // every metric a run measures, nothing happening
   r.metrics.set("energy.initial", 10), r.metrics.set("energy.final", 5), r.metrics.set("energy.max_rel_drift", 0.5);
   r.metrics.set("momentum.max_abs_drift", 3);
   r.metrics.set("samples", 101);

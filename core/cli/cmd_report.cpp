@@ -1,6 +1,6 @@
-// `ballbench report`: run the standard comparison (scene tables, work-precision sweeps, stability
-// frontiers, the step and harness benchmarks), write the results and render REPORT.md with its
-// figures.
+// `ballbench report`: run the standard comparison (core/report_part.h: scene tables, equal-accuracy
+// searches, sweeps, stability frontiers, the closed-form checks, the calibration, the benchmarks),
+// write the results and render REPORT.md with its pages and figures.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -68,8 +68,6 @@ void progress_line(fmt::format_string<Args...> f, Args&&... args) {
   if (!Progress::quiet) fmt::print(stderr, f, std::forward<Args>(args)...);
 }
 
-}  // namespace
-
 // Writes the pages, REPORT.md last, and removes pages of an earlier report that this one does not have.
 void write_pages(const std::string& out, const std::vector<ReportPage>& pages) {
   std::set<fs::path> written;
@@ -84,6 +82,8 @@ void write_pages(const std::string& out, const std::vector<ReportPage>& pages) {
     for (const auto& e : fs::directory_iterator(fs::path(out) / folder, ec))
       if (e.path().extension() == ".md" && !written.contains(e.path())) fs::remove(e.path(), ec);
 }
+
+}  // namespace
 
 void render_report_folder(const std::string& out) {
   ReportInputs inputs = read_report_inputs(out + "/results");
@@ -107,7 +107,8 @@ void render_report_folder(const std::string& out) {
 namespace {
 
 // What the report reads (an engines file, the benchmark binaries; with --render-only the results)
-// lies outside what it writes and, with --fresh, empties: OUT/results, OUT/figures, OUT/REPORT.md.
+// lies outside what it writes and, with --fresh, empties: OUT/results, the rendered folders
+// (kRenderedFolders) and OUT/REPORT.md.
 void check_report_paths(const ReportArgs& a) {
   std::vector<PathUse> uses = noted_input_files();
   const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
