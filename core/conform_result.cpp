@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "data_file.h"
 #include "enum_words.h"
 #include "json_value.h"
@@ -32,6 +34,11 @@ std::optional<double> figure_from_json(const nlohmann::json& j) {
 }  // namespace
 
 const char* conform_verdict_text(ConformVerdict v) { return kVerdictWords.word(v); }
+
+std::string conform_figure_text(const std::optional<double>& figure) {
+  if (!figure) return "-";
+  return std::isfinite(*figure) ? fmt::format("{:.3g}", *figure) : "inf";
+}
 
 ConformVerdict conform_verdict_from_text(std::string_view text) { return kVerdictWords.value(text); }
 

@@ -14,6 +14,10 @@ namespace ballbench {
 
 enum class ConformVerdict { pass, fail, refused };
 const char* conform_verdict_text(ConformVerdict v);
+
+// A check's figure in a table or a line: three digits, "inf" for a run that failed, "-" for none
+// (refused).
+std::string conform_figure_text(const std::optional<double>& figure);
 ConformVerdict conform_verdict_from_text(std::string_view text);
 
 struct ConformRow {

@@ -37,9 +37,17 @@ std::string temp_base(const std::string& path) {
 
 namespace {
 
-void fail_if_folder(const std::string& path, const std::string& what) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: cannot write {}: it is a folder", path, what));
+// A folder is never replaced by a file, nor a write-protected file by a rename (a rename needs only
+// the folder's permission, and root's writes ignore the file's mode: its mode bits are the owner's
+// word, so they are read as such).
+void fail_if_not_replaceable(const std::string& path, const std::string& what) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return;
+  if (S_ISDIR(st.st_mode)) throw InputError(fmt::format("{}: cannot write {}: it is a folder", path, what));
+  if (S_ISREG(st.st_mode) && ((st.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0))
+    throw InputError(fmt::format("{}: cannot write {}: the file is write-protected (mode {:04o}); ballbench does not "
+                                 "replace it",
+                                 path, what, st.st_mode & 07777));
 }
 
 // What identifies a file: its device and inode where it exists, else its resolved absolute path.
@@ -61,15 +69,18 @@ std::string resolved_path(const std::string& path) {
   return (ec ? abs : resolved).lexically_normal().string();
 }
 
+// A path that does not resolve yet ("new/../a.toml") is keyed as the OS will resolve it once the
+// writer has created its missing folders: by the file it then names, if that exists.
 FileKey file_key(const std::string& path) {
   FileKey k;
   struct stat st {};
-  if (::stat(path.c_str(), &st) == 0) {
+  const std::string resolved = resolved_path(path);
+  if (::stat(path.c_str(), &st) == 0 || ::stat(resolved.c_str(), &st) == 0) {
     k.exists = true, k.dev = st.st_dev, k.ino = st.st_ino;
     k.special = !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
     return k;
   }
-  k.resolved = resolved_path(path);
+  k.resolved = resolved;
   return k;
 }
 
@@ -79,6 +90,8 @@ std::vector<PathUse>& noted_inputs() {
 }
 
 }  // namespace
+
+std::string write_error_text(int err) { return err ? std::strerror(err) : "an I/O error"; }
 
 std::string create_temp_beside(const std::string& path, const std::string& what) {
   static std::mt19937_64 rng{std::random_device{}() ^ static_cast<uint64_t>(::getpid())};
@@ -139,7 +152,7 @@ const std::vector<PathUse>& noted_input_files() { return noted_inputs(); }
 
 void write_file_atomically(const std::string& path, const std::string& text, const std::string& what) {
   if (path.empty()) throw InputError(fmt::format("cannot write {}: an empty path", what));
-  fail_if_folder(path, what);
+  fail_if_not_replaceable(path, what);
   // A FIFO or a device is written directly, with no temporary file beside it (a user may not
   // write into /dev), rather than through move_file_into_place's copy.
   const bool in_place = special_target(path);
@@ -155,9 +168,9 @@ void write_file_atomically(const std::string& path, const std::string& text, con
     std::ofstream out(tmp, std::ios::binary);
     if (!out) fail(fmt::format("{}: cannot write {}", path, what));
     out << text;
-    if (!out.flush()) fail(fmt::format("{}: writing {} failed (disk full?)", path, what));
+    if (!out.flush()) fail(fmt::format("{}: writing {} failed: {}", path, what, write_error_text(errno)));
     out.close();
-    if (!out) fail(fmt::format("{}: writing {} failed (disk full?)", path, what));
+    if (!out) fail(fmt::format("{}: writing {} failed: {}", path, what, write_error_text(errno)));
   }
   if (in_place) return;
   std::filesystem::rename(tmp, target, ec);
@@ -165,7 +178,7 @@ void write_file_atomically(const std::string& path, const std::string& text, con
 }
 
 void move_file_into_place(const std::string& from, const std::string& to, const std::string& what) {
-  fail_if_folder(to, what);
+  fail_if_not_replaceable(to, what);
   std::error_code ec;
   if (special_target(to)) {
     {
@@ -183,7 +196,7 @@ void move_file_into_place(const std::string& from, const std::string& to, const 
 }
 
 void check_writable(const std::string& path, const std::string& what, bool create_parents) {
-  fail_if_folder(path, what);
+  fail_if_not_replaceable(path, what);
   if (special_target(path)) return;
   const std::filesystem::path target(path);
   std::error_code ec;

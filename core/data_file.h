@@ -59,6 +59,10 @@ void check_path_clashes(const std::vector<PathUse>& uses);
 void note_input_file(const std::string& flag, const std::string& path);
 const std::vector<PathUse>& noted_input_files();
 
+// Why a write failed, for its one line: errno's text ("No space left on device", "File too large"),
+// or "an I/O error" where the library left none.
+std::string write_error_text(int err);
+
 // Creates the parent folders; throws InputError naming `path` and `what` ("the results file") if
 // the file cannot be written.
 void write_file_atomically(const std::string& path, const std::string& text, const std::string& what);

@@ -118,6 +118,12 @@ struct BenchLimits {
   }
 };
 
+// A speed an engine clamps every ball to, and the clamp's name ("b2_maxTranslation 2 m per step").
+struct SpeedCap {
+  double m_per_s = 0;
+  std::string what;
+};
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
@@ -139,6 +145,10 @@ struct EngineInfo {
   // unsupported_reason asks it, so the runner refuses such a run and a reference that refuses is
   // replaced by a converged run, before anything is built.
   std::function<std::string(const Scene&)> refuses;
+  // The speed it clamps balls to at step dt with its effective settings (Result::settings), or
+  // none: a run in which a ball reaches it is noted (Result::clamped), so a clamped run never
+  // reads as a plain ok.
+  std::function<std::optional<SpeedCap>(double dt, const nlohmann::json& settings)> speed_cap;
 };
 
 // Builds an engine for a scene. `settings` is a JSON object of overrides (from the scene's

@@ -28,6 +28,7 @@
 // The child talks to the parent through a pipe in lines of text:
 //   progress DONE TOTAL      now and then (run_engine's progress callback, every 1% of the steps)
 //   group +PGID / -PGID      an engine process's group started / ended (note_engine_group)
+//   trajectory_error WHY     its trajectory could not be written (the result still follows)
 //   result JSON              the Result (to_json, on one line), last
 //   input_error MESSAGE      run_engine threw InputError (bad settings): rethrown here
 //   error MESSAGE            any other exception escaped run_engine
@@ -77,7 +78,15 @@ void send(int fd, const std::string& text) {
                        std::chrono::duration_cast<std::chrono::steady_clock::duration>(
                            std::chrono::duration<double>(std::min(isolation.timeout_s, 1e8)));
     const Result r = run_engine(scene, entry, options);
-    if (trajectory) trajectory->close();
+    if (trajectory) {
+      std::string why;
+      try {
+        why = trajectory->finish();
+      } catch (const InputError& e) {
+        why = e.what();
+      }
+      if (!why.empty()) send(fd, "trajectory_error " + one_line(why) + "\n");
+    }
     // Invalid UTF-8 in an engine's error text must not lose the result: replace it.
     message = "result " + to_json(r).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   } catch (const InputError& e) {
@@ -101,6 +110,7 @@ struct ChildOutcome {
   int wait_status = 0;
   long last_done = 0;      // the last step the child reported done
   std::string kind, body;  // the final message ("result", "input_error", "error"), if any
+  std::string trajectory_error;
 };
 
 class ChildWatcher {
@@ -177,6 +187,8 @@ class ChildWatcher {
           if (body[0] == '+') engine_groups_.insert(group);
           else engine_groups_.erase(group);
         }
+      } else if (kind == "trajectory_error") {
+        out_.trajectory_error = body;
       } else if (kind == "progress") {
         long done = 0, total = 0;
         if (std::sscanf(body.c_str(), "%ld %ld", &done, &total) == 2) {
@@ -314,6 +326,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
   const ChildOutcome outcome =
       ChildWatcher(pid, fds[0], isolation.timeout_s + stuck_grace_s(isolation.timeout_s), options.progress).watch();
   ::close(fds[0]);
+  if (isolation.trajectory_error) *isolation.trajectory_error = outcome.trajectory_error;
   return outcome_to_result(outcome, std::move(r), isolation.timeout_s);
 }
 

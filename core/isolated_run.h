@@ -18,6 +18,9 @@ struct IsolationOptions {
   // If not empty, the child writes the run's trajectory CSV (header included, core/trajectory_csv.h)
   // to this file. A run that crashes or times out leaves no file.
   std::string trajectory_path;
+  // Where the child's failure to write that file is said (why: "File too large"), if not null: the
+  // run's result stands, its rows are lost.
+  std::string* trajectory_error = nullptr;
 };
 
 // run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits.

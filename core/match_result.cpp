@@ -89,7 +89,7 @@ std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec) {
 const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role) {
   const MatchOutcome* best = nullptr;
   for (const MatchOutcome& oc : m.outcomes)
-    if (oc.reached && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
+    if (oc.reached && !oc.cut_short() && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
   return best;
 }
 
@@ -150,7 +150,8 @@ nlohmann::json to_json(const MatchResult& m) {
                         {"work", o.work}, {"stored", o.stored}, {"timing_stored", o.timing_stored},
                         {"stop", search_stop_text(o.stop)}, {"stopped", o.stopped}, {"command", o.command}});
   return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
-          {"scene_class", m.scene_class}, {"use_case", m.use_case}, {"n", m.n},        {"dt", m.dt},
+          {"scene_class", m.scene_class}, {"use_case", m.use_case}, {"scene_digest", m.scene_digest},
+          {"searches", m.searches},  {"n", m.n},        {"dt", m.dt},
           {"spec", m.spec.to_json()}, {"budget_runs", m.budget_runs}, {"run_ball_steps", m.run_ball_steps},
           {"ceiling", m.ceiling}, {"ceiling_ns", m.ceiling_ns}, {"context", m.context}, {"interrupted", m.interrupted},
           {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
@@ -164,6 +165,8 @@ MatchResult match_from_json(const nlohmann::json& j) {
   m.scene_source = j.at("scene_source").get<std::string>();
   m.scene_class = j.at("scene_class").get<std::string>();
   m.use_case = j.value("use_case", "");  // files written before it was recorded have none
+  m.scene_digest = j.value("scene_digest", "");
+  m.searches = j.value("searches", std::vector<std::string>{});
   m.n = j.at("n").get<int>();
   m.dt = j.at("dt").get<double>();
   for (const auto& [key, value] : j.at("spec").items()) {
@@ -250,13 +253,13 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
   out.context["shards"] = nlohmann::json::array();
   for (size_t k = 0; k < shards.size(); ++k) {
     const MatchResult& s = shards[k];
-    if (s.scene != first.scene || s.scene_source != first.scene_source || s.spec.to_json() != first.spec.to_json() ||
-        s.shard_count != first.shard_count || s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs ||
-        s.ceiling != first.ceiling)
-      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene, spec, budget, ceiling "
-                                   "or shard count differs)",
+    if (s.scene != first.scene || s.scene_source != first.scene_source || s.scene_digest != first.scene_digest ||
+        s.spec.to_json() != first.spec.to_json() || s.searches != first.searches || s.shard_count != first.shard_count ||
+        s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs || s.ceiling != first.ceiling)
+      throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene's content, spec, "
+                                   "searches, budget, ceiling or shard count differs)",
                                    names[k], names.front()));
-    roll.take(k, s.shard_index, s.interrupted);
+    roll.take(k, s.shard_index, s.interrupted, json_string_field(s.context, "build"));
     out.context["shards"].push_back(s.context);
     const int offset = int(out.tries.size());
     out.tries.insert(out.tries.end(), s.tries.begin(), s.tries.end());
@@ -267,6 +270,9 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
     }
   }
   roll.check_complete();
+  std::vector<std::string> searched;
+  for (const MatchOutcome& o : out.outcomes) searched.push_back(o.engine + "/" + o.profile);
+  check_plan_covered(first.searches, searched, "search");
   return out;
 }
 

@@ -68,11 +68,18 @@ struct MatchOutcome {
   SearchStop stop = SearchStop::none;  // why the search ended without a result
   std::string stopped;   // the same, with its figures ("the budget (600 runs at dt, ...)"), or ""
   std::string command;   // the `ballbench run` that reproduces the found (or best) point
+  // It met the spec, but stopped (the budget, an interrupt) before trying every configuration: a
+  // cheaper one may exist, so its cost is an upper bound and it is never ranked.
+  bool cut_short() const { return reached && (stop == SearchStop::budget || stop == SearchStop::interrupt); }
 };
 
 struct MatchResult {
   std::string scene, scene_source, scene_class;
   std::string use_case;  // the scene's (Scene::use_case), for the report's first screen
+  std::string scene_digest;  // the scene's content (scene_digest.h); "" in files written before it was recorded
+  // Every search of the plan, "engine/profile" in plan order, whichever shard ran it: a merge
+  // checks that each is there once.
+  std::vector<std::string> searches;
   int n = 0;
   double dt = 0;  // the scene's
   AccuracySpec spec;
@@ -96,7 +103,8 @@ MatchResult match_from_json(const nlohmann::json& j);
 // JSON (the whole result) and CSV (every try), each written atomically.
 void write_match_files(const MatchResult& m, const std::string& json_path, const std::string& csv_path);
 MatchResult read_match_file(const std::string& path);
-// Shards of one match (same scene, spec and shard count, each once): one result.
+// Shards of one match (same scene content, spec, plan, build and shard count, each once, every
+// planned search in one of them): one result.
 MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std::vector<std::string>& names);
 
 // How far a figure is from its term's bound: the figure over the bound (the bound over the figure

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include <fmt/format.h>
 
@@ -76,6 +77,9 @@ nlohmann::json to_json(const Result& r) {
   j["engine_limits"] = r.engine_limits;
   j["scene"] = r.scene;
   j["scene_source"] = r.scene_source;
+  if (!r.scene_digest.empty()) j["scene_digest"] = r.scene_digest;
+  if (!r.build.empty()) j["build"] = r.build;
+  if (!r.clamped.empty()) j["clamped"] = r.clamped;
   j["seed_offset"] = r.seed_offset;
   j["n"] = r.n;
   j["dt"] = r.dt;
@@ -143,11 +147,18 @@ Result result_from_json(const nlohmann::json& j) {
   r.engine_limits = j.value("engine_limits", "");
   r.scene = j.at("scene");
   r.scene_source = j.value("scene_source", "");
+  r.scene_digest = j.value("scene_digest", "");
+  r.build = j.value("build", "");
+  r.clamped = j.value("clamped", "");
   r.seed_offset = j.value("seed_offset", int64_t{0});
   r.n = j.at("n");
   r.dt = j.at("dt");
   r.steps = j.at("steps");
   r.steps_done = j.value("steps_done", r.steps);
+  if (r.n < 0) throw InputError(fmt::format("n: {} is not a ball count", r.n));
+  if (r.steps < 0) throw InputError(fmt::format("steps: {} is not a step count", r.steps));
+  if (r.steps_done < 0 || r.steps_done > r.steps)
+    throw InputError(fmt::format("steps_done: {} is not between 0 and the run's steps ({})", r.steps_done, r.steps));
   try {
     r.status = run_status_from_text(j.value("status", "ok"));
   } catch (const InputError& e) {
@@ -258,6 +269,19 @@ nlohmann::json result_shape() {
   return j;
 }
 
+// One run listed twice would count twice in every table and figure made of the file.
+void check_no_repeats(const std::vector<Result>& runs) {
+  std::map<std::string, size_t> seen;
+  for (size_t k = 0; k < runs.size(); ++k) {
+    const Result& r = runs[k];
+    const std::string key = fmt::format("{}|{}|{}|{}|{:.17g}|{}", r.scene, r.engine, r.profile, r.seed_offset, r.dt,
+                                        r.settings.dump());
+    if (const auto [it, fresh] = seen.emplace(key, k); !fresh)
+      throw InputError(fmt::format("runs[{}]: the same run as runs[{}] ({} on {}, placement {}): a run is listed once",
+                                   k, it->second, run_label(r), r.scene, r.seed_offset));
+  }
+}
+
 }  // namespace
 
 std::vector<Result> read_results_file(const std::string& path) {
@@ -272,6 +296,7 @@ std::vector<Result> read_results_file(const std::string& path) {
             throw InputError(j.is_object() ? std::string(e.what()) : fmt::format("runs[{}].{}", out.size(), e.what()));
           }
         }
+        check_no_repeats(out);
         return out;
       },
       [](const nlohmann::json& j) {

@@ -23,6 +23,10 @@ struct Result {
   std::string engine, engine_version, profile;
   std::string engine_limits;  // EngineInfo::limits: what in the engine shapes its results
   std::string scene, scene_source;
+  // The scene's content (scene_digest.h) and the harness build that ran it (build_id()): a report
+  // reuses a run only of the same scene content and build. "" in files written before they were
+  // recorded.
+  std::string scene_digest, build;
   int64_t seed_offset = 0;  // the placement: added to the scene's random seeds (`run --seeds K`: 0 .. K-1)
   int n = 0;
   double dt = 0;
@@ -30,6 +34,9 @@ struct Result {
   long steps_done = 0;   // completed (less when the run diverged or failed)
   RunStatus status = RunStatus::ok;  // how the run ended (run_status.h); JSON "status", as text
   std::string error;
+  // A clamp of the engine's that bound in this run (EngineInfo::speed_cap): what, which ball, when;
+  // "" if none bound. JSON "clamped", present only then.
+  std::string clamped;
   long diverged_step = -1;  // the step a diverged run stopped at
   // JSON "diverged", derived from the status.
   bool diverged() const { return status == RunStatus::diverged; }
@@ -98,6 +105,9 @@ std::string run_label(const Result& r);
 nlohmann::json to_json(const Result& r);
 Result result_from_json(const nlohmann::json& j);
 
+// Reading checks each run's counts (0 <= steps_done <= steps, n >= 0) and that no run is listed
+// twice (one scene, engine, profile, placement, step and settings): a field out of range or a
+// repeat is an InputError naming the run ("runs[3].steps_done: ...").
 // Writes `results` as a JSON array to `path`, via a temporary file and a rename, so a reader never
 // sees half a file.
 void write_results_file(const std::string& path, const std::vector<Result>& results);

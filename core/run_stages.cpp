@@ -66,6 +66,18 @@ void sample(RunContext& c, long k) {
   c.final_sum = state_checksum(c.state), c.trajectory_sum = chain_checksum(c.trajectory_sum, c.final_sum);
 }
 
+// A ball at the engine's speed cap (to 1e-4: a float32 engine's clamped speed is the cap to
+// its precision) is where the clamp bound: noted once, with the first such ball.
+void note_clamp(RunContext& c) {
+  if (!c.speed_cap || !c.r.clamped.empty() || c.state.n() == 0) return;
+  Eigen::Index ball = 0;
+  const double fastest2 = c.state.vel.rowwise().squaredNorm().maxCoeff(&ball);
+  const double cap = c.speed_cap->m_per_s;
+  if (!(fastest2 >= cap * cap * (1 - 2e-4))) return;
+  c.r.clamped = fmt::format("{} (a speed cap of {:.4g} m/s) bound: ball {} at {:.4g} m/s at t = {:g} s",
+                            c.speed_cap->what, cap, ball, std::sqrt(fastest2), c.state.t);
+}
+
 // The reference steps with the engine, every step; it is read only where the engine is. Its
 // failure ends the comparison only.
 void step_reference(RunContext& c, long k, bool read) {
@@ -145,6 +157,7 @@ bool advance(RunContext& c, long k) {
   if (const auto why = c.metrics->stop_after_motion())
     return stop(c, RunStatus::diverged, k, fmt::format("{} at step {}", *why, k));
   std::swap(c.state, c.next);
+  note_clamp(c);
   step_reference(c, k, true);
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
@@ -197,6 +210,7 @@ bool set_up(RunContext& c) {
     return stop(c, RunStatus::failed, 0, fmt::format("building the world failed: {}", e.what()));
   }
   r.settings = c.engine->settings();
+  if (entry.info.speed_cap) c.speed_cap = entry.info.speed_cap(c.scene.dt, r.settings);
   // An engine that provides a state only every `stride` steps is read at those steps alone: every
   // per-step metric (tunnelling, finiteness, leaving the box) is judged on those samples, and the
   // sampled metrics see a multiple of the stride.

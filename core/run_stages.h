@@ -48,6 +48,7 @@ struct RunContext {
   // set_up: the engine and the steps at which it provides a state (1: every step).
   std::unique_ptr<Engine> engine;
   long stride = 1;
+  std::optional<SpeedCap> speed_cap;  // the engine's, at this step and settings (EngineInfo::speed_cap)
 
   // set_up_reference: the reference, stepped ref_substeps times by ref_dt per step; null when none
   // runs (or it failed: `error` then holds why). ref_entry names what ran.

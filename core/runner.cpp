@@ -6,7 +6,9 @@
 #include <xxhash.h>
 
 #include "input_error.h"
+#include "machine_info.h"
 #include "run_stages.h"
+#include "scene_digest.h"
 
 namespace ballbench {
 
@@ -44,6 +46,8 @@ Result result_header(const Scene& scene, const EngineEntry& entry, const RunOpti
   r.scene = scene.name;
   r.seed_offset = scene.seed_offset;
   r.scene_source = scene.source;
+  r.scene_digest = scene_digest(scene);
+  r.build = build_id();
   r.scene_features = scene.features();
   r.n = scene.n();
   r.dt = scene.dt;

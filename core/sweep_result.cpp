@@ -201,11 +201,15 @@ SweepResult merge_sweep_shards(const std::vector<SweepResult>& shards, const std
     if (s.plan != first.plan || s.shard_count != first.shard_count)
       throw InputError(fmt::format("merge: {} is a shard of another sweep than {} (its plan or shard count differs)",
                                    names[k], names.front()));
-    roll.take(k, s.shard_index, s.interrupted);
+    roll.take(k, s.shard_index, s.interrupted, json_string_field(s.context, "build"));
     out.context["shards"].push_back(s.context);
     out.points.insert(out.points.end(), s.points.begin(), s.points.end());
   }
   roll.check_complete();
+  std::vector<std::string> planned, merged;
+  for (size_t k = 0; k < first.plan.value("points", nlohmann::json::array()).size(); ++k) planned.push_back(std::to_string(k));
+  for (const SweepPoint& p : out.points) merged.push_back(std::to_string(p.plan_index));
+  check_plan_covered(planned, merged, "point");
   std::stable_sort(out.points.begin(), out.points.end(),
                    [](const SweepPoint& a, const SweepPoint& b) { return a.plan_index < b.plan_index; });
   mark_pareto(out.points);

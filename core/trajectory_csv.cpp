@@ -1,5 +1,6 @@
 #include "trajectory_csv.h"
 
+#include <cerrno>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -40,18 +41,20 @@ void TrajectoryCsv::write(const std::string& engine, const std::string& profile,
     if (rotation_) fmt::format_to(std::back_inserter(buf), ",{},{}\n", s.w(i), s.angle(i));
     else buf.push_back('\n');
   }
-  std::fwrite(buf.data(), 1, buf.size(), f_);
+  if (std::fwrite(buf.data(), 1, buf.size(), f_) != buf.size() && !write_errno_) write_errno_ = errno;
 }
 
-void TrajectoryCsv::close() {
-  if (!f_) return;
+std::string TrajectoryCsv::finish() {
+  if (!f_) return "";
   const bool ok = std::fflush(f_) == 0 && !std::ferror(f_);
+  if (!ok && !write_errno_) write_errno_ = errno;
   const bool closed = std::fclose(f_) == 0;
+  if (!closed && !write_errno_) write_errno_ = errno;
   f_ = nullptr;
   std::error_code ec;
   if (!ok || !closed) {
     std::filesystem::remove(tmp_, ec);
-    throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
+    return write_error_text(write_errno_);
   }
   try {
     move_file_into_place(tmp_, path_, "the trajectory");
@@ -59,6 +62,12 @@ void TrajectoryCsv::close() {
     std::filesystem::remove(tmp_, ec);
     throw;
   }
+  return "";
+}
+
+void TrajectoryCsv::close() {
+  if (const std::string why = finish(); !why.empty())
+    throw InputError(fmt::format("--trajectory {}: writing failed: {}", path_, why));
 }
 
 }  // namespace ballbench

@@ -21,11 +21,15 @@ class TrajectoryCsv {
   TrajectoryCsv& operator=(const TrajectoryCsv&) = delete;
 
   void write(const std::string& engine, const std::string& profile, long step, const State& s);
-  void close();  // flushes and renames into place; throws InputError if writing failed (then removes it)
+  // Flushes and renames into place: "" if it did, else why writing failed ("File too large"), the
+  // rows then removed and whatever was at the path kept. Throws InputError if the rename fails.
+  std::string finish();
+  void close();  // finish(), a failed write thrown as InputError naming the path
 
  private:
   std::string path_, tmp_;
   std::FILE* f_ = nullptr;
+  int write_errno_ = 0;  // the first failed write's errno (ENOSPC, EFBIG), for the message
   bool rotation_;
 };
 

@@ -7,6 +7,7 @@
 
 #include "balls_text.h"
 #include "conform_section.h"
+#include "json_value.h"
 #include "markdown_cell.h"
 #include "page_links.h"
 #include "result.h"
@@ -36,8 +37,9 @@ std::vector<const MatchOutcome*> ranked_rows(const MatchResult& m) {
   std::vector<const MatchOutcome*> rows;
   for (const MatchOutcome& oc : m.outcomes) rows.push_back(&oc);
   std::stable_sort(rows.begin(), rows.end(), [](const MatchOutcome* a, const MatchOutcome* b) {
-    if (a->reached != b->reached) return a->reached;
-    return a->reached && a->cost_ns < b->cost_ns;
+    const bool ranked_a = a->reached && !a->cut_short(), ranked_b = b->reached && !b->cut_short();
+    if (ranked_a != ranked_b) return ranked_a;
+    return ranked_a && a->cost_ns < b->cost_ns;
   });
   return rows;
 }
@@ -57,7 +59,9 @@ void put_match_table(std::string& md, const ReportInputs& in, const MatchResult&
     const int shown = oc->reached ? oc->found : oc->best;
     const MatchVerdict v = verdict_of(m, *oc);
     md += fmt::format("| {} | {} | ", label,
-                      v == MatchVerdict::met ? "yes" : markdown_cell("no: " + miss_text(m, *oc)));
+                      v == MatchVerdict::met         ? "yes"
+                      : v == MatchVerdict::cut_short ? markdown_cell("cut short: " + miss_text(m, *oc))
+                                                     : markdown_cell("no: " + miss_text(m, *oc)));
     if (shown < 0) {
       md += "n/a | n/a |";
       for (size_t k = 0; k < terms.size(); ++k) md += " n/a |";
@@ -84,10 +88,8 @@ void put_match_method(std::string& md, const MatchResult& m) {
   if (m.ceiling_ns > 0)
     md += fmt::format(" Ceiling: a try stopped once its CPU time passed {:g}x our solver's cost ({} ns), searched first.",
                       m.ceiling, cost_text(m.ceiling_ns));
-  const auto recorded = [&](const char* key) {
-    return m.context.is_object() ? m.context.value(key, std::string("(not recorded)")) : std::string("(not recorded)");
-  };
-  md += fmt::format(" Measured {} by build {}.\n\n", recorded("date"), recorded("build"));
+  md += fmt::format(" Measured {} by build {}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
+                    json_string_field(m.context, "build", "(not recorded)"));
 }
 
 // Each of our profiles that met the spec against the cheapest external engine that did.
@@ -134,6 +136,7 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
 }  // namespace
 
 MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
+  if (oc.cut_short()) return MatchVerdict::cut_short;
   if (oc.reached) return MatchVerdict::met;
   bool any_ok = false, all_unsupported = true;
   for (const MatchTry& t : m.tries)
@@ -160,6 +163,10 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
                                : "";
   switch (v) {
     case MatchVerdict::met: return "";
+    case MatchVerdict::cut_short:
+      return fmt::format("its search stopped at {} before trying every configuration: its cost is an upper bound, "
+                         "not ranked",
+                         oc.stopped);
     case MatchVerdict::unsupported: return "unsupported";
     case MatchVerdict::failed:
       return fmt::format("{} at every step down to {}{}", run_status_text(b.status),

@@ -15,6 +15,7 @@ namespace ballbench {
 // What became of one engine and profile's search, as a reader needs it.
 enum class MatchVerdict {
   met,          // a configuration met the spec
+  cut_short,    // one met, but the search stopped (budget, interrupt) before trying every configuration
   not_reached,  // it ran, but no configuration tried met the spec
   unsupported,  // the engine refused the scene at every configuration
   failed,       // no configuration ran to its end (crashed, timed out, diverged at every step size)

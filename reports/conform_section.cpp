@@ -15,11 +15,6 @@
 namespace ballbench {
 namespace {
 
-std::string figure_text(const std::optional<double>& f) {
-  if (!f) return "-";
-  return std::isfinite(*f) ? fmt::format("{:.3g}", *f) : "inf";
-}
-
 struct EngineChecks {
   int passed = 0, failed = 0, refused = 0;
   std::vector<std::string> failures, refuted;
@@ -52,7 +47,7 @@ std::string conform_section(const ReportInputs& in) {
     EngineChecks& e = by[label];
     if (r.verdict == ConformVerdict::pass) ++e.passed;
     else if (r.verdict == ConformVerdict::refused) ++e.refused;
-    else ++e.failed, e.failures.push_back(r.why.empty() ? fmt::format("{} {} > {:g}", r.check, figure_text(r.figure), r.tolerance)
+    else ++e.failed, e.failures.push_back(r.why.empty() ? fmt::format("{} {} > {:g}", r.check, conform_figure_text(r.figure), r.tolerance)
                                                         : fmt::format("{}: {}", r.check, r.why));
     if (!r.refuted.empty()) add_once(e.refuted, r.refuted);
   }

@@ -16,6 +16,7 @@
 
 #include "data_file.h"
 #include "input_error.h"
+#include "json_value.h"
 #include "report_part.h"
 
 namespace ballbench {
@@ -24,6 +25,68 @@ EngineRole role_of(const ReportInputs& in, const std::string& engine) {
   const auto it = in.roles.find(engine);
   return it == in.roles.end() ? EngineRole::external : it->second;
 }
+
+namespace {
+
+// What a part records of where it came from: the build that made it and, for a part of one scene,
+// that scene's content ("" where a file written before they were recorded has none).
+struct PartOrigin {
+  std::string part;  // "results/match-pile.json", for the message
+  std::string build, scene, digest;
+};
+
+std::vector<PartOrigin> origins(const ReportInputs& in) {
+  std::vector<PartOrigin> out;
+  const auto from_context = [&](const std::string& part, const nlohmann::json& context, const std::string& scene) {
+    out.push_back({part, json_string_field(context, "build"), scene, json_string_field(context, "scene_digest")});
+  };
+  for (const Result& r : in.results) {
+    const auto file = in.result_files.find(r.scene);
+    out.push_back({file == in.result_files.end() ? r.scene : file->second, r.build, r.scene, r.scene_digest});
+  }
+  for (const MatchResult& m : in.matches) {
+    from_context(fmt::format("results/{}", part_file({PartKind::match, m.scene})), m.context, m.scene);
+    out.back().digest = m.scene_digest;
+  }
+  for (const SweepResult& s : in.sweeps) {
+    const std::string scene = s.plan.value("scene", "");
+    from_context(fmt::format("results/{}", part_file({PartKind::sweep, scene})), s.context, scene);
+    out.back().digest = s.plan.value("scene_digest", "");
+  }
+  for (const FrontierResult& f : in.frontiers) from_context("results/" + part_file({PartKind::stress, f.scene}), f.context, f.scene);
+  if (in.conform) from_context("results/" + part_file({PartKind::conform, ""}), in.conform->context, "");
+  if (in.calibration) from_context("results/" + part_file({PartKind::calibration, ""}), in.calibration->context, "");
+  out.push_back({"results/run.json", json_string_field(in.run, "build"), "", ""});
+  if (in.run.is_object() && in.run.contains("scene_digests") && in.run["scene_digests"].is_object())
+    for (const auto& [scene, digest] : in.run["scene_digests"].items())
+      if (digest.is_string()) out.push_back({"results/run.json", "", scene, digest.get<std::string>()});
+  return out;
+}
+
+// A report is one build's measurement of one content of each scene: results of two builds, or of
+// two contents of a scene, are never rendered as one report.
+void check_one_origin(const ReportInputs& in, const std::string& results_dir) {
+  const std::vector<PartOrigin> all = origins(in);
+  const PartOrigin* first_build = nullptr;
+  std::map<std::string, const PartOrigin*> first_digest;  // scene -> the first part naming its content
+  for (const PartOrigin& o : all) {
+    if (!o.build.empty()) {
+      if (!first_build) first_build = &o;
+      else if (o.build != first_build->build)
+        throw InputError(fmt::format("{}: {} was made by build {}, {} by build {}: a report renders one build's "
+                                     "results (`ballbench report` runs the parts of another build again)",
+                                     results_dir, o.part, o.build, first_build->part, first_build->build));
+    }
+    if (o.scene.empty() || o.digest.empty()) continue;
+    const auto [it, fresh] = first_digest.emplace(o.scene, &o);
+    if (!fresh && it->second->digest != o.digest)
+      throw InputError(fmt::format("{}: {} and {} hold other contents of scene {} (digests {} and {}): `ballbench "
+                                   "report` runs the parts of the other content again",
+                                   results_dir, it->second->part, o.part, o.scene, it->second->digest, o.digest));
+  }
+}
+
+}  // namespace
 
 ReportInputs read_report_inputs(const std::string& results_dir) {
   ReportInputs in;
@@ -57,7 +120,10 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
     } else if (name.starts_with("stress-")) {
       in.frontiers.push_back(read_frontier_file(f.string()));
     } else {
-      for (auto& r : read_results_file(f.string())) {
+      std::vector<Result> runs = read_results_file(f.string());
+      if (runs.empty())  // a scene's table with no run would vanish from the report unsaid
+        throw InputError(fmt::format("{}: holds no run: run its part again (`ballbench report` resumes it)", f.string()));
+      for (auto& r : runs) {
         in.result_files.emplace(r.scene, "results/" + name);
         (r.seed_offset == 0 ? in.results : in.placements).push_back(std::move(r));
       }
@@ -74,6 +140,7 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
     throw InputError(fmt::format("{}: no run.json, so no report's results to render (run `ballbench report` "
                                  "without --render-only first)",
                                  results_dir));
+  check_one_origin(in, results_dir);
   return in;
 }
 

@@ -43,6 +43,7 @@ std::string verdict(const Result& r) {
                            : fmt::format("{}: {}", run_status_text(r.status), r.error);
   std::vector<std::string> parts;
   if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
+  if (!r.clamped.empty()) parts.push_back("clamped: " + r.clamped);
   const auto& m = r.metrics;
   const long tunnel_wall = m.count("tunnelling.wall"), tunnel_pair = m.count("tunnelling.pair");
   const long stick_wall = m.count("sticking.wall"), stick_pair = m.count("sticking.pair");
@@ -110,7 +111,9 @@ std::vector<Column> columns(const SceneView& view) {
   std::vector<Column> out = {
       {"status",
        [](const Result& r) {
-         return r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
+         const std::string status =
+             r.diverged() ? fmt::format("diverged@{}", r.diverged_step) : std::string(run_status_text(r.status));
+         return r.clamped.empty() ? status : status + ", clamped";
        },
        nullptr}};
   for (const MetricDef& m : metric_catalog()) {

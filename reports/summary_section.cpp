@@ -63,20 +63,16 @@ std::string ratio_cell(const MatchResult& m) {
   return ext ? "ours did not meet it" : "n/a";
 }
 
-std::string recorded(const nlohmann::json& context, const char* key) {
-  return context.is_object() ? context.value(key, std::string()) : std::string();
-}
-
-// How the figures were made: cost, the searches' budget and ceiling, when and by which build. Parts
-// of several builds are named, never mixed silently.
+// How the figures were made: cost, the searches' budget and ceiling, when and by which build (one:
+// read_report_inputs refuses results of several).
 std::string provenance(const ReportInputs& in) {
   double budget = 0, ceiling = 0;
   std::set<std::string> builds, dates, steps;
   for (const MatchResult& m : in.matches) {
     steps.insert(fmt::format("{:g} s", m.dt));
     budget = std::max(budget, m.budget_runs), ceiling = std::max(ceiling, m.ceiling_ns > 0 ? m.ceiling : 0.0);
-    if (const auto b = recorded(m.context, "build"); !b.empty()) builds.insert(b);
-    if (const auto d = recorded(m.context, "date"); !d.empty()) dates.insert(d.substr(0, 10));
+    if (const auto b = json_string_field(m.context, "build"); !b.empty()) builds.insert(b);
+    if (const auto d = json_string_field(m.context, "date"); !d.empty()) dates.insert(d.substr(0, 10));
   }
   std::string md = "Cost: the engine's CPU time per ball per scene step (ns), the configuration found timed alone "
                    "(the median of three windows of its run, ± half their range).";
@@ -88,13 +84,12 @@ std::string provenance(const ReportInputs& in) {
                                                 "the cheapest)", ceiling)
                                   : "");
   md += " Every word: [terms](pages/terms.md).";
-  const std::string run_build = recorded(in.run, "build");
+  const std::string run_build = json_string_field(in.run, "build");
   if (!run_build.empty()) builds.insert(run_build);
-  md += fmt::format(" Measured {} on {} ({} cores), {} suite, by build {}{}.\n\n",
-                    dates.empty() ? recorded(in.run, "date") : fmt::format("{}", fmt::join(dates, ", ")),
-                    recorded(in.run, "cpu"), in.run.is_object() ? json_text(in.run.value("cores", nlohmann::json())) : "?",
-                    in.run.is_object() ? in.run.value("suite", "quick") : "quick", fmt::join(builds, ", "),
-                    builds.size() > 1 ? ": **parts of several builds** (each scene's page names its own)" : "");
+  md += fmt::format(" Measured {} on {} ({} cores), {} suite, by build {}.\n\n",
+                    dates.empty() ? json_string_field(in.run, "date") : fmt::format("{}", fmt::join(dates, ", ")),
+                    json_string_field(in.run, "cpu"), in.run.is_object() ? json_text(in.run.value("cores", nlohmann::json())) : "?",
+                    in.run.is_object() ? in.run.value("suite", "quick") : "quick", fmt::join(builds, ", "));
   return md;
 }
 

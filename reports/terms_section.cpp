@@ -39,7 +39,9 @@ void put_cost_terms(MarkdownBuffer& put) {
       "engine past it cannot be the cheapest. Where every external engine stopped there, our ratio reads \"over "
       "Nx\".\n"
       "- **not reached**: no configuration tried met the spec; the nearest miss is named with its figure and step; "
-      "\"out of budget\" and \"over the ceiling\" say why the search stopped.\n\n");
+      "\"out of budget\" and \"over the ceiling\" say why the search stopped.\n"
+      "- **cut short**: a configuration met the spec, but the search stopped (its budget, an interrupt) before "
+      "trying every configuration, so a cheaper one may exist: its cost is an upper bound and it is not ranked.\n\n");
 }
 
 void put_profiles(MarkdownBuffer& put) {

@@ -318,11 +318,49 @@ TEST(MatchCli, WritesJsonAndCsvShardsMergeAndBadSpecsAreOneLine) {
   std::string header;
   std::getline(csv, header);
   EXPECT_EQ(header.rfind("engine,profile,knob,value,halvings,dt,status,met,cost_ns,cost_pipe_ns,wall_s,work,done,overlap,", 0), 0u);
+  EXPECT_EQ(m.searches, (std::vector<std::string>{"home/default", "home/events", "home/soft"}));
+  // A shard that lost a search, or of another build, is refused in one line; nothing is written.
+  const auto edited = [&](const std::string& name, const std::string& key, const nlohmann::json& value) {
+    nlohmann::json j = nlohmann::json::parse(testing::slurp((dir / "m2.json").string()));
+    if (key == "outcomes") j["outcomes"] = value;
+    else j["context"][key] = value;
+    std::ofstream(dir / name) << j.dump(2);
+    return (dir / name).string();
+  };
+  for (const auto& [shard, want] : std::vector<std::pair<std::string, std::string>>{
+           {edited("gap.json", "outcomes", nlohmann::json::array()), "no shard holds the planned search home/"},
+           {edited("built.json", "build", "0123456789abcdef"), "was made by build 0123456789abcdef"}}) {
+    const auto o = run_cli(fmt::format("merge {0}/m1.json {1} --out {0}/m3.json", dir.string(), shard));
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find(want), std::string::npos) << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+    EXPECT_FALSE(fs::exists(dir / "m3.json"));
+  }
 
   const auto bad = run_cli("match --scene pile --engine home --spec overlapp=0.01 --quiet");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--spec overlapp=0.01: expected KEY=VALUE with KEY one of overlap"), std::string::npos)
       << bad.err;
+  fs::remove_all(dir);
+}
+
+// A search that met the spec but ran out of budget before trying every configuration is marked cut
+// short, with why, and never ranked: its cost is only an upper bound.
+TEST(MatchCli, ASearchCutShortByItsBudgetIsMarkedAndNotRanked) {
+  const fs::path dir = fs::temp_directory_path() / "ballbench-match-cut-short";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const auto r = run_cli("match --scene seed-box --engine home --profile default --budget 1.5 --store '' --quiet --json " +
+                         (dir / "m.json").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("home               cut short    dt"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("home: cut short: it met the spec, but its search stopped at the budget (1.5 runs at dt"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("home: not compared: its search was cut short"), std::string::npos) << r.out;
+  const MatchResult m = read_match_file((dir / "m.json").string());
+  ASSERT_EQ(m.outcomes.size(), 1u);
+  EXPECT_TRUE(m.outcomes[0].cut_short());
+  EXPECT_EQ(cheapest_reached(m, role_name(EngineRole::ours)), nullptr);
   fs::remove_all(dir);
 }
 

@@ -625,6 +625,94 @@ TEST(Cli, OutputsOntoInputsOrEachOtherAreRefusedHoweverSpelled) {
   EXPECT_EQ(names_in(s.dir), expected);
 }
 
+// An output path through a folder that does not exist yet is resolved as the OS will resolve it
+// once the writer has made that folder: "new/../scene.toml" is the scene, and is refused.
+TEST(Cli, AnOutputThroughAMissingFolderIsResolvedBeforeItIsWritten) {
+  const Scratch s("bb_missing_dir");
+  const std::string d = s.dir.string(), scene = s / "scene.toml";
+  std::ofstream(scene) << kSchemaExample;
+  const std::string before = slurp(scene);
+  const std::string own = "run --quiet --scene " + scene + " --engine home --steps 2 --no-reference ";
+  expect_one_line_error(cli(own + "--json " + d + "/new/../scene.toml"),
+                        "--json " + d + "/new/../scene.toml: same file as --scene " + scene);
+  expect_one_line_error(cli(own + "--json " + d + "/a/b/../../scene.toml --trajectory " + d + "/t.csv"),
+                        "same file as --scene " + scene);
+  ASSERT_EQ(cli(own + "--frames 2 --json " + s / "r.json").status, 0);
+  const std::string results = slurp(s / "r.json");
+  expect_one_line_error(cli("view " + s / "r.json" + " --out " + d + "/v/../r.json"),
+                        "--out " + d + "/v/../r.json: same file as RESULTS " + s / "r.json");
+  std::filesystem::copy_file(s / "r.json", s / "r2.json");
+  expect_one_line_error(cli("merge " + s / "r.json" + " " + s / "r2.json" + " --out " + d + "/m/../r2.json"),
+                        "--out " + d + "/m/../r2.json: same file as SHARD " + s / "r2.json");
+  EXPECT_EQ(slurp(scene), before);
+  EXPECT_EQ(slurp(s / "r.json"), results);
+  EXPECT_EQ(slurp(s / "r2.json"), results);
+  for (const char* made : {"new", "a", "v", "m"}) EXPECT_FALSE(std::filesystem::exists(s / made)) << made;
+}
+
+// A results file its owner made write-protected is not replaced (a rename would need only the
+// folder's permission): one line before the run, the file as it was.
+TEST(Cli, AWriteProtectedOutputIsNotReplaced) {
+  const Scratch s("bb_protected");
+  std::ofstream(s / "r.json") << "kept";
+  std::filesystem::permissions(s / "r.json", std::filesystem::perms::owner_read | std::filesystem::perms::group_read);
+  const Outcome o = cli("run --quiet --scene seed-box --engine home --steps 2 --no-reference --json " + s / "r.json");
+  expect_one_line_error(o, "--json " + s / "r.json" + ": cannot write the results: the file is write-protected (mode 0440)");
+  EXPECT_EQ(o.err.find("ran "), std::string::npos) << o.err;
+  EXPECT_EQ(slurp(s / "r.json"), "kept");
+}
+
+// A write the system refuses part way (a file-size limit here; a full disk alike) keeps the file it
+// would have replaced, names that file and why, and leaves no temporary file behind.
+TEST(Cli, AWriteRefusedPartWayKeepsTheFileItWouldReplace) {
+  const Scratch s("bb_fsize");
+  std::ofstream(s / "t.csv") << "mine";
+  const std::string cmd = "ulimit -f 64; " + std::string(BALLBENCH_CLI) +
+                          " run --quiet --no-reference --scene seed-box --engine home --steps 400 --trajectory " +
+                          s / "t.csv" + " >" + s / "out" + " 2>" + s / "err; echo $? >" + s / "status";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(slurp(s / "status"), "1\n") << slurp(s / "err");
+  EXPECT_NE(slurp(s / "err").find("--trajectory " + s / "t.csv" + ": writing failed: File too large"), std::string::npos)
+      << slurp(s / "err");
+  EXPECT_NE(slurp(s / "out").find("home               ok"), std::string::npos) << slurp(s / "out");
+  EXPECT_EQ(slurp(s / "t.csv"), "mine");
+  EXPECT_EQ(names_in(s.dir), (std::vector<std::string>{"err", "out", "status", "t.csv"}));
+}
+
+// Rendering checks what it joins: a scene's results file with no run, a run whose counts are out
+// of range and a run listed twice are each one line naming the file and the run, not a report
+// that drops a scene or counts a run twice.
+TEST(Cli, RenderingRefusesEmptyOutOfRangeAndRepeatedRuns) {
+  const Scratch s("bb_render_checks");
+  std::filesystem::create_directories(s.dir / "results");
+  std::ofstream(s / "results/run.json") << R"({"command": "ballbench report", "suite": "quick", "scenes": ["seed-box"]})";
+  ASSERT_EQ(cli("run --quiet --no-reference --scene seed-box --engine home --steps 3 --json " + s / "one.json").status, 0);
+  const nlohmann::json run = nlohmann::json::parse(slurp(s / "one.json"))[0];
+  const auto render_with = [&](const nlohmann::json& runs) {
+    std::ofstream(s / "results/seed-box.json") << runs.dump();
+    return cli("report --out " + s.dir.string() + " --render-only");
+  };
+  expect_one_line_error(render_with(nlohmann::json::array()), s / "results/seed-box.json" + ": holds no run");
+  nlohmann::json negative = run;
+  negative["steps_done"] = -5;
+  expect_one_line_error(render_with(nlohmann::json::array({negative})), "runs[0].steps_done: -5 is not between 0 and the run's steps (3)");
+  expect_one_line_error(render_with(nlohmann::json::array({run, run})), "runs[1]: the same run as runs[0] (home on seed-box, placement 0)");
+  // Results of two builds, or of two contents of one scene, are never one report.
+  nlohmann::json other_build = run;
+  other_build["build"] = "0123456789abcdef";
+  std::ofstream(s / "results/seed-bowl.json") << nlohmann::json::array({other_build}).dump();
+  const Outcome two_builds = render_with(nlohmann::json::array({run}));
+  expect_one_line_error(two_builds, "a report renders one build's results");
+  EXPECT_NE(two_builds.err.find("0123456789abcdef"), std::string::npos) << two_builds.err;
+  std::filesystem::remove(s / "results/seed-bowl.json");
+  std::ofstream(s / "results/run.json") << R"({"command": "ballbench report", "suite": "quick", "scenes": ["seed-box"],
+                                              "scene_digests": {"seed-box": "ffffffffffffffff"}})";
+  expect_one_line_error(render_with(nlohmann::json::array({run})), "hold other contents of scene seed-box");
+  EXPECT_FALSE(std::filesystem::exists(s / "REPORT.md"));
+  std::ofstream(s / "results/run.json") << R"({"command": "ballbench report", "suite": "quick", "scenes": ["seed-box"]})";
+  ASSERT_EQ(render_with(nlohmann::json::array({run})).status, 0);
+}
+
 // Trajectory parts are the run's own: a killed run's leftovers (of any naming) are never joined
 // into another run's file, and are left alone.
 TEST(Cli, APartLeftByAnotherRunIsNeverJoined) {

@@ -3,6 +3,7 @@
 // must be one clear error in its own row, never a hang, while other rows complete.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -339,6 +340,48 @@ TEST(ProcessEngine, ARotatingScenesStateWithoutWIsRefused) {
   EXPECT_EQ(good.status, RunStatus::ok) << good.error;
   const Result flat = run_engine(box(), misbehaving("no-w"), steps(5));
   EXPECT_EQ(flat.status, RunStatus::ok) << flat.error;
+}
+
+// A ball faster than an engine's speed cap: the run notes the clamp by its name, the cap and the
+// ball (Box2D 2.x's maxTranslation in box2d and planck, 2 m per step: 200 m/s at dt 0.01; v3's
+// maximum_linear_speed in box2d3, 400 m/s; rapier's, measured, 400 m/s); an engine without a cap
+// notes nothing.
+TEST(SpeedCap, AClampThatBindsIsNamedInTheRun) {
+  const Scene scene = parse_scene(R"(
+name = "fast-ball"
+dt = 0.01
+duration = 0.05
+[container]
+min = [-100.0, -100.0]
+max = [100.0, 100.0]
+[[ball]]
+pos = [0.0, 0.0]
+vel = [1000.0, 0.0]
+radius = 0.5
+)",
+                                  "test:fast", 0);
+  for (const auto& [name, cap] : {std::pair{"box2d", "200 m/s"}, {"planck", "200 m/s"}, {"box2d3", "400 m/s"},
+                                  {"rapier", "400 m/s"}, {"home", ""}, {"chipmunk", ""}, {"matter", ""}}) {
+    const auto names = engine_names();
+    if (std::find(names.begin(), names.end(), name) == names.end() || !find_engine(name).info.unavailable.empty())
+      continue;
+    const Result r = run_engine(scene, find_engine(name), steps(3));
+    EXPECT_EQ(r.status, RunStatus::ok) << name << ": " << r.error;
+    if (*cap == 0) {
+      EXPECT_EQ(r.clamped, "") << name;
+      continue;
+    }
+    EXPECT_TRUE(has(r.clamped, fmt::format("(a speed cap of {}) bound: ball 0 at {} at t = 0.01 s", cap, cap)))
+        << name << ": " << r.clamped;
+    EXPECT_TRUE(has(to_json(r).dump(), "\"clamped\"")) << name;
+  }
+}
+
+// A speed cap the harness cannot read refuses the handshake, naming the field.
+TEST(SpeedCap, AnUnreadableCapRefusesTheHandshake) {
+  const Result r = run_engine(box(), misbehaving("speed-cap-bad"), steps(2));
+  EXPECT_EQ(r.status, RunStatus::failed);
+  EXPECT_TRUE(has(r.error, "'speed_cap.m_per_s' is not a number above 0")) << r.error;
 }
 
 // The project's engines.toml: the Node engines appear in `ballbench list` with their pinned

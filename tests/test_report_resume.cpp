@@ -14,6 +14,7 @@
 #include <fstream>
 #include <set>
 
+#include "match_result.h"
 #include "page_links.h"
 #include "registry.h"
 #include "result.h"
@@ -341,6 +342,20 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
   // Nor do results of another number of placements.
   ASSERT_EQ(report("--seeds 2"), 0) << err_;
   EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
+  // Nor results of the scene's other contents with the same steps and balls (another restitution):
+  // its table and its search run again, the other scene's are reused.
+  text = slurp(root_ / "scenarios" / "seed-box.toml");
+  text.replace(text.find("dt = 0.01"), 9, "dt = 0.01\nrestitution = 0.9");
+  std::ofstream(root_ / "scenarios" / "seed-box.toml") << text;
+  ASSERT_EQ(report("--seeds 2"), 0) << err_;
+  EXPECT_TRUE(ran("seed-box") && reused("seed-bowl")) << err_;
+  const std::string match_box = (out() / "results" / "match-seed-box.json").string();
+  EXPECT_NE(err_.find("not reusing " + match_box + ": made of other contents of the scene"), std::string::npos) << err_;
+  // Nor parts made for another list of engines: a report of `home` alone ranks no other engine.
+  ASSERT_EQ(command("report --no-bench --engine home,exact --seeds 2 --out " + out().string()), 0) << err_;
+  EXPECT_TRUE(ran("seed-box") && ran("seed-bowl")) << err_;
+  EXPECT_NE(err_.find("not reusing " + match_box + ": made for another list of engines"), std::string::npos) << err_;
+  for (const auto& o : read_match_file(match_box).outcomes) EXPECT_TRUE(o.engine == "home" || o.engine == "exact") << o.engine;
 }
 
 // A report run as two shards (on two machines, say), merged: every part's result file and a
@@ -357,7 +372,7 @@ TEST_F(ReportResume, TwoShardsMergedMakeTheWholeReport) {
     EXPECT_FALSE(fs::exists(dir / "REPORT.md")) << which;
   }
   EXPECT_EQ(command("merge --out " + merged.string() + " " + one.string()), 2);
-  EXPECT_NE(err_.find("report shard 2/2 is missing"), std::string::npos) << err_;
+  EXPECT_NE(err_.find("merge: shard 2/2 is missing"), std::string::npos) << err_;
   ASSERT_EQ(command("merge --out " + merged.string() + " " + two.string() + " " + one.string()), 0) << err_;
   std::set<std::string> files;
   for (const auto& e : fs::directory_iterator(merged / "results")) files.insert(e.path().filename().string());

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <map>
 #include <tuple>
 
@@ -229,6 +231,36 @@ TEST_F(SweepCli, MergeRefusesShardsOfDifferentPlansRepeatsAndGaps) {
     EXPECT_FALSE(fs::exists(out)) << args;
   }
   EXPECT_EQ(run_cli("merge --out " + out + " " + two + " " + one).status, 0);
+  fs::remove(out), fs::remove(sweep_csv_path(out));
+  // A shard of the scene's other contents (same name, another restitution), one that lost a point,
+  // and one of another build: each one line, nothing written.
+  fs::create_directories(dir_ / "edited");
+  std::string scene = testing::slurp(std::string(BALLBENCH_SOURCE_DIR) + "/scenarios/seed-box.toml");
+  scene.replace(scene.find("restitution = 0.99"), 18, "restitution = 0.98");
+  std::ofstream(dir_ / "edited" / "seed-box.toml") << scene;
+  const std::string edited = (dir_ / "e2.json").string();
+  std::string edited_common = common;
+  edited_common.replace(edited_common.find("seed-box"), 8, (dir_ / "edited" / "seed-box.toml").string());
+  const auto e = run_cli(edited_common + "--engine home,exact --json " + edited + " --shard 2/2");
+  ASSERT_EQ(e.status, 0) << e.err;
+  const auto edit = [&](const std::string& name, const std::function<void(nlohmann::json&)>& change) {
+    nlohmann::json j = nlohmann::json::parse(testing::slurp(two));
+    change(j);
+    std::ofstream((dir_ / name).string()) << j.dump(2);
+    return (dir_ / name).string();
+  };
+  const std::string gap = edit("gap.json", [](nlohmann::json& j) { j["points"].erase(0); });
+  const std::string built = edit("built.json", [](nlohmann::json& j) { j["context"]["build"] = "0123456789abcdef"; });
+  for (const auto& [args, want] : std::vector<std::pair<std::string, std::string>>{
+           {one + " " + edited, "is a shard of another sweep"},
+           {one + " " + gap, "no shard holds the planned point 1"},
+           {one + " " + built, "was made by build 0123456789abcdef"}}) {
+    const auto o = run_cli("merge --out " + out + " " + args);
+    EXPECT_EQ(o.status, 2) << args << ": " << o.err;
+    EXPECT_NE(o.err.find(want), std::string::npos) << args << ": " << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
   for (const std::string bad : {"0/2", "3/2", "1/0", "a/b", "1/2x", "1"}) {
     const auto o = run_cli(common + "--engine home --json " + (dir_ / "x.json").string() + " --shard " + bad);
     EXPECT_EQ(o.status, 2) << bad << ": " << o.err;

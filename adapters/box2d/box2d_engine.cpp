@@ -247,6 +247,9 @@ EngineEntry box2d_engine() {
       "these constants are compiled into 2.4.1";
   info.summary = "Box2D (float32 sequential impulses + TOI); tuned: elastic fast balls, stock: game defaults";
   info.profiles = {"tuned", "stock"};
+  info.speed_cap = [](double dt, const nlohmann::json&) {  // one b2World::Step per scene step
+    return std::optional<SpeedCap>(SpeedCap{b2_maxTranslation / dt, "b2_maxTranslation (2 m per step)"});
+  };
   // Solver sweeps and both kinds of continuous collision (b2World::SetContinuousPhysics for
   // ball-wall, b2BodyDef::bullet for ball-ball).
   info.settings = box2d_settings_table().describe();

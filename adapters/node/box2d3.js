@@ -188,6 +188,7 @@ serve({
       profiles: ['tuned', 'stock'],
       settings_keys: ['substeps', 'contact_hertz', 'contact_damping_ratio', 'contact_push_speed',
         'restitution_threshold', 'maximum_linear_speed', 'continuous', 'bullets', 'warm_starting', 'allow_sleep'],
+      speed_cap: { setting: 'maximum_linear_speed', what: 'b2WorldDef.maximumLinearSpeed' },
       sweep_knobs: [
         { key: 'substeps', values: [1, 2, 4, 8, 16] },
         { key: 'contact_hertz', values: [30, 60, 120] },

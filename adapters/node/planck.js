@@ -112,6 +112,7 @@ serve({
       settings_keys: ['velocity_iterations', 'position_iterations', 'restitution_threshold', 'bullets',
         'continuous_physics', 'warm_starting', 'allow_sleep'],
       sweep_knobs: [{ key: 'velocity_iterations', values: [4, 8, 10, 20] }, { key: 'bullets', values: [false, true] }],
+      speed_cap: { m_per_step: require(PACKAGE).Settings.maxTranslation, what: 'Settings.maxTranslation (2 m per step)' },
     };
   },
   load,

@@ -82,6 +82,36 @@ std::string one_line_text(std::string s) {
   return s;
 }
 
+// The handshake's "speed_cap": {"what": NAME} with one of "m_per_s" (a speed), "m_per_step" (a
+// distance per step call: the speed is it over dt) or "setting" (the key of its effective settings
+// that holds the speed, in m/s). A cap the harness cannot read is refused, not ignored.
+std::function<std::optional<SpeedCap>(double, const nlohmann::json&)> speed_cap_from(
+    const nlohmann::json& j, const std::vector<std::string>& settings_keys) {
+  if (!j.is_object()) throw std::runtime_error("'speed_cap' is not an object");
+  const std::string what = one_line_text(text_field(j, "what", true));
+  int given = 0;
+  for (const char* k : {"m_per_s", "m_per_step", "setting"}) given += j.contains(k);
+  if (given != 1) throw std::runtime_error("'speed_cap' needs exactly one of 'm_per_s', 'm_per_step' and 'setting'");
+  if (j.contains("setting")) {
+    const std::string key = text_field(j, "setting", true);
+    if (std::find(settings_keys.begin(), settings_keys.end(), key) == settings_keys.end())
+      throw std::runtime_error(fmt::format("'speed_cap' reads setting '{}', which is not in 'settings_keys'", excerpt(key)));
+    return [key, what](double, const nlohmann::json& settings) -> std::optional<SpeedCap> {
+      const auto v = settings.find(key);
+      if (v == settings.end() || !v->is_number() || !(v->get<double>() > 0)) return std::nullopt;
+      return SpeedCap{v->get<double>(), what};
+    };
+  }
+  const char* key = j.contains("m_per_s") ? "m_per_s" : "m_per_step";
+  if (!j[key].is_number() || !(j[key].get<double>() > 0) || !std::isfinite(j[key].get<double>()))
+    throw std::runtime_error(fmt::format("'speed_cap.{}' is not a number above 0", key));
+  const double value = j[key].get<double>();
+  const bool per_step = key == std::string("m_per_step");
+  return [value, per_step, what](double dt, const nlohmann::json&) -> std::optional<SpeedCap> {
+    return SpeedCap{per_step ? value / dt : value, what};
+  };
+}
+
 }  // namespace
 
 Capabilities default_capabilities(int protocol) {
@@ -138,6 +168,7 @@ Handshake ProtocolClient::hello_reply(bool stop_on_interrupt) {
         throw std::runtime_error(fmt::format("'sweep_knobs' entry '{}' has no list of 'values'", excerpt(key)));
       h.info.sweep_knobs.push_back({key, k.at("values")});
     }
+    if (j.contains("speed_cap")) h.info.speed_cap = speed_cap_from(j["speed_cap"], h.settings_keys);
     const auto fields = strings_from(j.value("state_fields", nlohmann::json::array({"id", "x", "y", "vx", "vy"})), "state_fields", false);
     for (const char* need : {"id", "x", "y", "vx", "vy"})
       if (std::find(fields.begin(), fields.end(), need) == fields.end())

@@ -13,9 +13,11 @@
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
+#include "json_value.h"
 #include "match.h"
 #include "report_writer.h"
 #include "run_engines.h"
+#include "shard_roll.h"
 #include "sweep_result.h"
 
 namespace ballbench::cli {
@@ -87,6 +89,7 @@ ReportShard read_report_shard(const std::string& folder) {
               {"seeds", s.context.value("seeds", 0)},
               {"engine_list", s.context.value("engine_list", "all")},
               {"parts", s.context.at("parts")},
+              {"scene_digests", s.context.value("scene_digests", nlohmann::json::object())},
               {"engines", s.context.value("engines", nlohmann::json::object())}};
     s.index = s.context.at("shard").at("index").get<int>();
     s.count = s.context.at("shard").at("count").get<int>();
@@ -106,24 +109,19 @@ ReportShard read_report_shard(const std::string& folder) {
   return s;
 }
 
-// Every shard once, of one report.
+// Every shard once, of one report and one build.
 void check_shards(const MergeArgs& a, const std::vector<ReportShard>& shards) {
   const ReportShard& first = shards.front();
-  std::vector<std::string> seen(first.count + 1);
+  ShardRoll roll(first.count, a.shards);
   for (size_t k = 0; k < shards.size(); ++k) {
     const ReportShard& s = shards[k];
     if (s.plan != first.plan || s.count != first.count)
       throw InputError(fmt::format("merge: {} is a shard of another report than {} (its suite, placements, engines, "
-                                   "parts, engine versions or shard count differ)",
+                                   "parts, scenes' contents, engine versions or shard count differ)",
                                    a.shards[k], a.shards.front()));
-    if (s.index < 1 || s.index > s.count)
-      throw InputError(fmt::format("merge: {}: shard {}/{} is not a shard", a.shards[k], s.index, s.count));
-    if (!seen[s.index].empty())
-      throw InputError(fmt::format("merge: {} and {} are both shard {}/{}", seen[s.index], a.shards[k], s.index, s.count));
-    seen[s.index] = a.shards[k];
+    roll.take(k, s.index, "", json_string_field(s.context, "build"));
   }
-  for (int i = 1; i <= first.count; ++i)
-    if (seen[i].empty()) throw InputError(fmt::format("merge: report shard {}/{} is missing", i, first.count));
+  roll.check_complete();
 }
 
 // Every shard's result files (its parts) into one results folder; a file in two shards is refused.

@@ -34,6 +34,7 @@
 #include "report_runs.h"
 #include "report_writer.h"
 #include "run_engines.h"
+#include "scene_digest.h"
 #include "scene_loader.h"
 #include "shard.h"
 #include "stability_frontier.h"
@@ -170,6 +171,10 @@ void write_run_record(const ReportArgs& a, const ReportRun& run, const std::vect
   context["engine_list"] = a.engines;
   context["scenes"] = run.suite.scenes;  // the report's order
   context["parts"] = words_of(parts, Shard{});
+  context["scene_digests"] = nlohmann::json::object();  // each scene's content: shards of one report agree
+  for (const ReportPart& p : parts)
+    if (!p.scene.empty() && !context["scene_digests"].contains(p.scene))
+      context["scene_digests"][p.scene] = scene_digest(load_scene(p.scene));
   context["engines"] = nlohmann::json::object();  // name -> version: shards of one report agree
   for (const auto& e : engine_registry()) context["engines"][e.info.name] = e.info.version;
   if (!shard.all()) {

@@ -184,8 +184,8 @@ void run(const RunArgs& a) {
   if (!a.json.empty()) write_results_file(a.json, results);
   // The table and the JSON stand; the trajectory that could not be written is said in one line.
   if (!trajectory_error.empty()) {
-    fmt::print(stderr, "ballbench: error: {} (the table{} are complete)\n", trajectory_error,
-               a.json.empty() ? "" : " and " + a.json);
+    fmt::print(stderr, "ballbench: error: {} ({} complete)\n", trajectory_error,
+               a.json.empty() ? "the table is" : "the table and " + a.json + " are");
     throw CheckFailed{interrupt_signal() ? 128 + interrupt_signal() : 1};
   }
   exit_if_interrupted(fmt::format("{} row(s) written{}, the run in progress marked interrupted", results.size(),

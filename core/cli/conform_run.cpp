@@ -12,7 +12,6 @@
 namespace ballbench::cli {
 namespace {
 
-std::string figure_text(double x) { return std::isfinite(x) ? fmt::format("{:.3g}", x) : "inf"; }
 
 ConformRow check(const EngineEntry& e, const std::string& profile, const ConformCaseDef& d) {
   ConformRow row{e.info.name, profile, d.key, d.tolerance};
@@ -31,13 +30,13 @@ void print_row(const ConformRow& r) {
   const ConformCaseDef* d = nullptr;
   for (const ConformCaseDef& c : conform_cases())
     if (c.key == r.check) d = &c;
-  const std::string figure = r.figure ? figure_text(*r.figure) : "-";
+  const std::string figure = conform_figure_text(r.figure);
   std::string verdict = r.verdict == ConformVerdict::pass ? "pass" : r.verdict == ConformVerdict::fail ? "FAIL" : "refused";
   if (!r.why.empty()) verdict += ": " + r.why;
   if (!r.refuted.empty() && d)
-    verdict += fmt::format(" (refutes its claim of {}: {} or more)", r.refuted, figure_text(d->refutes));
+    verdict += fmt::format(" (refutes its claim of {}: {} or more)", r.refuted, conform_figure_text(d->refutes));
   fmt::print("{:<18} {:<22} {:>10} {:>10}  {}\n", run_label(r.engine, r.profile), r.check, figure,
-             figure_text(r.tolerance), verdict);
+             conform_figure_text(r.tolerance), verdict);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // `ballbench`: the subcommands are in cmd_*.cpp. Every error the user can cause ends here as one
 // line on stderr and exit status 2; a check that ran and failed (`regress`) exits with status 1;
 // nothing deeper exits the process.
+#include <csignal>
 #include <cstdio>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +28,9 @@ CLI::Option* add_quiet(CLI::App* cmd, bool& quiet) { return cmd->add_flag("--qui
 }  // namespace ballbench::cli
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f, a quota) fails a write with EFBIG, which the writer reports naming
+  // the file and keeps what it replaces, rather than SIGXFSZ killing the process mid-write.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"ballbench: compare 2D ball physics engines on identical scenes"};
   app.require_subcommand(1);
   // Options of the app are also taken after the subcommand's name (`ballbench run --engines F ...`).

@@ -19,8 +19,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <xxhash.h>
-
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -30,7 +28,7 @@
 #include "json_value.h"
 #include "progress.h"
 #include "scene_loader.h"
-#include "scene_writer.h"
+#include "scene_digest.h"
 #include "shard_roll.h"
 #include "shell_word.h"
 #include "spec_verdict.h"
@@ -130,7 +128,7 @@ class Search {
     }
     oc.reached = oc.found >= 0;
     if (oc.reached) {
-      oc.stop = SearchStop::none, oc.stopped.clear();
+      if (!oc.cut_short()) oc.stop = SearchStop::none, oc.stopped.clear();
     } else if (oc.stop == SearchStop::none && hit_ceiling_) {
       oc.stop = SearchStop::ceiling;
       oc.stopped = fmt::format("the ceiling ({:g}x our solver's cost: {} ns)", o_.ceiling, cost_text(*ceiling_ns_));
@@ -492,6 +490,7 @@ MatchResult match_header(const Scene& scene, const MatchOptions& o, const nlohma
   MatchResult m;
   m.scene = scene.name, m.scene_source = scene.source, m.scene_class = scene_class_name(scene_class(scene));
   m.use_case = scene.use_case;
+  m.scene_digest = o.scene_digest;
   m.n = scene.n(), m.dt = scene.dt, m.spec = o.spec, m.context = context;
   m.budget_runs = o.budget_runs, m.run_ball_steps = long(scene.n()) * scene.steps();
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;
@@ -504,6 +503,7 @@ struct SearchPlan {
   std::vector<bool> taken;  // this shard's own (the others only search to set the ceiling)
   std::vector<bool> first;  // sets the ceiling: searched before the rest
   std::vector<std::optional<MatchOutcome>> outcomes;
+  std::vector<std::string> every;  // every search of the match, "engine/profile", whichever shard runs it
 };
 
 // The searches, dealt out to the shards; each engine's configurations read here, in this thread
@@ -514,6 +514,7 @@ SearchPlan plan_searches(const Scene& scene, const std::vector<const EngineEntry
   size_t item = 0;
   for (const EngineEntry* e : engines)
     for (const std::string& profile : profiles_for(*e, o.profile)) {
+      plan.every.push_back(e->info.name + "/" + profile);
       const bool takes = o.shard.takes(item++);
       const bool sets_ceiling = o.ceiling > 0 && e->info.role == EngineRole::ours && profile == e->info.profiles.front();
       if (!takes && !sets_ceiling) continue;
@@ -592,12 +593,11 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
   WorkDir work;
   MatchOptions o = options;
   o.work_dir = work.path;
-  // The scene's content as a scene file of its balls at the start: what the store keys it by.
-  const std::string content = scene_at_state(scene, scene.initial, scene.name, scene.duration).text;
-  o.scene_digest = fmt::format("{:016x}", XXH3_64bits(content.data(), content.size()));
+  o.scene_digest = scene_digest(scene);  // what the store keys it by
   if (!o.isolation.enabled) o.jobs = 1;  // engines in this process run one at a time
   MatchResult m = match_header(scene, o, context);
   SearchPlan plan = plan_searches(scene, engines, o);
+  m.searches = plan.every;
   Progress progress(fmt::format("match {} ({} searches, {} at once)", scene.name, plan.searches.size(),
                                 std::min<size_t>(o.jobs, plan.searches.size())));
   size_t done = 0;
@@ -627,12 +627,18 @@ void print_match_rows(const MatchResult& m) {
       continue;
     }
     const MatchTry& t = m.tries[shown];
-    fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label, oc.reached ? "met" : "not reached",
+    fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label,
+               oc.cut_short() ? "cut short" : oc.reached ? "met" : "not reached",
                (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_spread_text(oc) : "-",
                oc.reached && oc.cost_pipe_ns ? cost_text(*oc.cost_pipe_ns) : "-");
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
     fmt::print(" {:>5} {:>6}\n", oc.tries, oc.stored);
   }
+  for (const MatchOutcome& oc : m.outcomes)
+    if (oc.cut_short())
+      fmt::print("{}: cut short: it met the spec, but its search stopped at {} before trying every "
+                 "configuration; its cost is an upper bound, not ranked\n",
+                 run_label(oc.engine, oc.profile), oc.stopped);
 }
 
 // Each of our profiles against the cheapest external engine that met the spec (and --target).
@@ -649,7 +655,9 @@ void print_our_ratios(const MatchResult& m, std::optional<double> target) {
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::ours)) continue;
     const std::string label = run_label(oc.engine, oc.profile);
-    if (!oc.reached)
+    if (oc.cut_short())
+      fmt::print("{}: not compared: its search was cut short{}\n", label, against_target(std::nullopt));
+    else if (!oc.reached)
       fmt::print("{}: did not meet the spec{}{}\n", label,
                  oc.stopped.empty() ? "" : fmt::format(" (its search stopped at {})", oc.stopped),
                  against_target(std::nullopt));

@@ -19,10 +19,12 @@
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
+#include "machine_info.h"
 #include "match.h"
 #include "progress.h"
 #include "registry.h"
 #include "restitution_calibration.h"
+#include "scene_digest.h"
 #include "scene_loader.h"
 #include "stability_frontier.h"
 #include "sweep.h"
@@ -43,9 +45,29 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// A results file holding exactly the runs a report makes of `scene` (every engine x profile),
-// left by an earlier report that stopped later on: reusing it resumes the report. Files are written
-// whole (write_results_file), so one that reads back is complete.
+// The names and versions of `engines`, as a part's context records the engines a report asked it for.
+nlohmann::json engine_list(const std::vector<const EngineEntry*>& engines) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const EngineEntry* e : engines) list.push_back(e->info.name + " " + e->info.version);
+  return list;
+}
+
+// A part's results are reused only if this build made them, of the scene's present content, for the
+// engines this report asks (an earlier report of another --engine list, an edited scene file or a
+// rebuilt harness made other ones): why not, or "" if they are this report's.
+std::string made_elsewhere(const nlohmann::json& context, const nlohmann::json& want) {
+  for (const char* key : {"build", "scene_digest", "report_engines"})
+    if (want.contains(key) && (!context.is_object() || context.value(key, nlohmann::json()) != want[key]))
+      return key == std::string("build") ? "made by another build"
+             : key == std::string("scene_digest") ? "made of other contents of the scene"
+                                                   : "made for another list of engines";
+  return "";
+}
+
+// A results file holding exactly the runs a report makes of `scene` (every engine x profile), of
+// its present content and by this build, left by an earlier report that stopped later on: reusing
+// it resumes the report. Files are written whole (write_results_file), so one that reads back is
+// complete.
 bool complete_results(const std::string& path, const Scene& scene, const std::vector<const EngineEntry*>& engines,
                       int seeds) {
   if (!std::filesystem::exists(path)) return false;
@@ -59,24 +81,15 @@ bool complete_results(const std::string& path, const Scene& scene, const std::ve
   for (int k = 0; k < seeds; ++k)
     for (const auto* e : engines)
       for (const auto& p : profiles_for(*e, "all")) want.push_back(fmt::format("{}/{}/{}", e->info.name, p, k));
+  const std::string digest = scene_digest(scene);
   for (const auto& r : found) {
     if (r.status == RunStatus::interrupted) return false;  // a report stopped in this part
-    if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n()) return false;
+    if (r.scene != scene.name || r.steps != scene.steps() || r.n != scene.n() || r.build != build_id()) return false;
+    if (r.seed_offset == 0 && r.scene_digest != digest) return false;  // further placements are other contents
     have.push_back(fmt::format("{}/{}/{}", r.engine, r.profile, r.seed_offset));
   }
   std::sort(want.begin(), want.end()), std::sort(have.begin(), have.end());
   return want == have;
-}
-
-// A sweep or frontier file left by an earlier report that reads back and ran to its end.
-template <class Read>
-bool uninterrupted(const std::string& path, Read read) {
-  if (!fs::exists(path)) return false;
-  try {
-    return read(path).interrupted.empty();
-  } catch (const InputError&) {
-    return false;
-  }
 }
 
 // Runs benchmark binary `bin` once per filter into `path` (Google Benchmark's JSON, via its own
@@ -147,6 +160,39 @@ std::vector<std::string> run_bench(const std::string& bin, const std::vector<std
 
 std::string path_of(const ReportRun& run, const ReportPart& part) { return run.results_dir + "/" + part_file(part); }
 
+// What a part's results are made from: this build, the scene's content (a part of one scene) and
+// the engines the report asked of it.
+nlohmann::json made_for(const ReportPart& part, const std::vector<const EngineEntry*>& engines) {
+  nlohmann::json m = {{"build", build_id()}, {"report_engines", engine_list(engines)}};
+  if (!part.scene.empty()) m["scene_digest"] = scene_digest(load_scene(part.scene));
+  return m;
+}
+
+// The context a part's results file records: the machine and command, and what it is made from.
+nlohmann::json part_context(const ReportPart& part, const std::vector<const EngineEntry*>& engines) {
+  nlohmann::json c = run_context();
+  c.update(made_for(part, engines));
+  return c;
+}
+
+// A part's results file left by an earlier report that reads back, ran to its end, and was made
+// from what this report asks (made_for); one that was not is said, and run again.
+template <class Read>
+bool reusable(const ReportRun& run, const ReportPart& part, Read read, const std::vector<const EngineEntry*>& engines) {
+  const std::string path = path_of(run, part);
+  if (!fs::exists(path)) return false;
+  try {
+    const auto r = read(path);
+    if constexpr (requires { r.interrupted; })
+      if (!r.interrupted.empty()) return false;
+    const std::string why = made_elsewhere(r.context, made_for(part, engines));
+    if (!why.empty()) progress_line("not reusing {}: {}\n", path, why);
+    return why.empty();
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 // Every engine and profile at the scene's own step, on each placement the suite asks for.
 void run_table(const ReportRun& run, const ReportPart& part) {
   const Scene scene = load_scene(part.scene);
@@ -177,7 +223,7 @@ void run_match_part(const ReportRun& run, const ReportPart& part) {
   o.reference = reference_engine();
   o.converged_reference = converged_reference_engine();
   o.quiet = run.quiet;
-  write_match_files(run_match(scene, run.matched, o, run_context()), path_of(run, part),
+  write_match_files(run_match(scene, run.matched, o, part_context(part, run.matched)), path_of(run, part),
                     fmt::format("{}/match-{}.csv", run.results_dir, part.scene));
 }
 
@@ -187,7 +233,7 @@ void run_sweep_part(const ReportRun& run, const ReportPart& part) {
   o.quiet = run.quiet;
   o.reference = reference_engine();
   o.isolation = run.isolation;
-  write_sweep_files(run_sweep(load_scene(part.scene), run.swept, o, run_context()), path_of(run, part),
+  write_sweep_files(run_sweep(load_scene(part.scene), run.swept, o, part_context(part, run.swept)), path_of(run, part),
                     fmt::format("{}/sweep-{}.csv", run.results_dir, part.scene));
 }
 
@@ -200,17 +246,17 @@ void run_stress_part(const ReportRun& run, const ReportPart& part) {
   o.reference = reference_engine();
   o.isolation = run.isolation;
   if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
-  write_frontier_file(path_of(run, part), run_frontier(scene, run.swept, o, run_context()));
+  write_frontier_file(path_of(run, part), run_frontier(scene, run.swept, o, part_context(part, run.swept)));
 }
 
 void run_calibration_part(const ReportRun& run, const ReportPart& part) {
   CalibrationOptions o;
   o.isolation.timeout_s = run.suite.timeout_s;
-  write_calibration_file(path_of(run, part), run_calibration(run.engines, o, run_context()));
+  write_calibration_file(path_of(run, part), run_calibration(run.engines, o, part_context(part, run.engines)));
 }
 
 void run_conform_part(const ReportRun& run, const ReportPart& part) {
-  write_conform_file(path_of(run, part), run_conform(run.engines, "all", run_context(), false));
+  write_conform_file(path_of(run, part), run_conform(run.engines, "all", part_context(part, run.engines), false));
 }
 
 std::string harness_path(const ReportRun& run) { return run.results_dir + "/harness.json"; }
@@ -247,19 +293,17 @@ const PartRunner kRunners[] = {
      },
      "ran"},
     {PartKind::match, run_match_part,
-     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_match_file); }, "matched"},
+     [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_match_file, r.matched); }, "matched"},
     {PartKind::sweep, run_sweep_part,
-     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_sweep_file); }, "swept"},
+     [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_sweep_file, r.swept); }, "swept"},
     {PartKind::stress, run_stress_part,
-     [](const ReportRun& r, const ReportPart& p) { return uninterrupted(path_of(r, p), read_frontier_file); },
-     "stressed"},
+     [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_frontier_file, r.swept); }, "stressed"},
     {PartKind::conform, run_conform_part,
-     [](const ReportRun& r, const ReportPart& p) {
-       return uninterrupted(path_of(r, p), read_conform_file);
-     },
+     [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_conform_file, r.engines); },
      "checked every engine against the closed forms"},
     {PartKind::calibration, run_calibration_part,
-     [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)); }, "calibrated restitution"},
+     [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_calibration_file, r.engines); },
+     "calibrated restitution"},
     {PartKind::bench, run_bench_part,
      [](const ReportRun& r, const ReportPart& p) { return fs::exists(path_of(r, p)) && fs::exists(harness_path(r)); },
      "ran the benchmarks"},

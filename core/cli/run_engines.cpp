@@ -68,7 +68,7 @@ class TrajectoryParts {
     std::ofstream out(joined_, std::ios::binary | std::ios::app);
     out << in.rdbuf();
     out.flush();
-    if (!out) throw InputError(fmt::format("--trajectory {}: writing failed (disk full?)", path_));
+    if (!out) throw InputError(fmt::format("--trajectory {}: writing failed: {}", path_, write_error_text(errno)));
   }
 
   void finish() {
@@ -154,6 +154,7 @@ void print_table(const std::vector<Result>& results) {
                "and `with pipe` is the harness's time of the whole request\n");
   for (const auto& r : results) {
     if (!r.error.empty()) fmt::print("{}: {}\n", printable(run_label(r)), printable(r.error));
+    if (!r.clamped.empty()) fmt::print("{}: clamped: {}\n", printable(run_label(r)), printable(r.clamped));
     for (const std::string& note : r.skipped)
       if (note.rfind(kStrideNote, 0) == 0) fmt::print("{}: {}\n", run_label(r), note);
     if (r.reference.reference_failed_step >= 0)
@@ -247,7 +248,7 @@ namespace {
 class TrajectorySink {
  public:
   TrajectorySink(const Scene& scene, const Isolation& isolation, const std::string& path, bool keep_errors)
-      : keep_errors_(keep_errors) {
+      : keep_errors_(keep_errors), path_(path) {
     if (path.empty()) return;
     const bool rotation = scene.features().rotation;
     if (isolation.enabled) parts_.emplace(path, rotation);
@@ -260,7 +261,11 @@ class TrajectorySink {
     if (parts_) keep_going([&] { part = parts_->next_part(); });
     return part;
   }
-  void take_last(const std::string& part) {
+  // `lost`: why the child could not write its part ("" if it did): the trajectory is lost, and
+  // whatever was at its path kept.
+  void take_last(const std::string& part, const std::string& lost) {
+    if (parts_ && !lost.empty())
+      keep_going([&] { throw InputError(fmt::format("--trajectory {}: writing failed: {}", path_, lost)); });
     if (parts_ && !part.empty()) keep_going([&] { parts_->take_last(); });
   }
   // Closes the file; the error that lost the trajectory, or "".
@@ -282,6 +287,7 @@ class TrajectorySink {
     }
   }
   bool keep_errors_;
+  std::string path_;
   std::optional<TrajectoryCsv> csv_;     // in this process
   std::optional<TrajectoryParts> parts_;  // from child processes
   std::string lost_;
@@ -307,13 +313,14 @@ Result run_one(const Scene& scene, const EngineEntry& e, RunOptions options, con
     }
   }
   const std::string part = sink.next_part();
+  std::string lost;
   Result r;
   try {
-    r = run_engine_isolated(scene, e, options, IsolationOptions{isolation.timeout_s, part});
+    r = run_engine_isolated(scene, e, options, IsolationOptions{isolation.timeout_s, part, &lost});
   } catch (const InputError& err) {
     r = settings_refused(err);
   }
-  sink.take_last(part);
+  sink.take_last(part, lost);
   return r;
 }
 

@@ -8,6 +8,7 @@
 #include "input_error.h"
 #include "interrupt.h"
 #include "isolated_run.h"
+#include "scene_digest.h"
 #include "json_value.h"
 #include "progress.h"
 
@@ -67,7 +68,7 @@ nlohmann::json plan_record(const Scene& scene, const std::vector<SweepPlanItem>&
   for (const SweepPlanItem& item : plan)
     points.push_back({item.engine->info.name, item.engine->info.version, item.profile, item.knob, item.value, item.dt,
                       item.steps});
-  return {{"scene", scene.name}, {"n", scene.n()},         {"horizon", o.horizon},
+  return {{"scene", scene.name}, {"scene_digest", scene_digest(scene)}, {"n", scene.n()}, {"horizon", o.horizon},
           {"reference", o.reference ? o.reference->info.name : ""}, {"repeats", o.repeats}, {"points", points}};
 }
 

@@ -8,7 +8,7 @@ stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 
 own, out of the engine's process group), "helper-exit" (the engine exits at step 3 while its
 helper holds its stdout), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
-"unsupported" (refuses every scene as unsupported), "minimal" and "minimal-1" (a handshake of the
+"unsupported" (refuses every scene as unsupported), "speed-cap-bad" (a speed cap below zero), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
 import array
 import json
@@ -46,6 +46,8 @@ for line in sys.stdin.buffer:
                  "capabilities": {"friction": True}, "profiles": ["default"], "settings_keys": ["level"]}
         if mode == "float-t":
             hello["precision"] = "float"
+        if mode == "speed-cap-bad":
+            hello["speed_cap"] = {"m_per_s": -1, "what": "a cap below zero"}
         if mode == "profiles-twice":
             hello["profiles"] = ["default", "default"]
         if mode in ("minimal", "minimal-1"):
