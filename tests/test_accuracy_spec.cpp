@@ -2,6 +2,8 @@
 // judging a run against a spec, `home`'s method chosen from the spec, and `ballbench match`.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -361,6 +363,35 @@ TEST(MatchCli, ASearchCutShortByItsBudgetIsMarkedAndNotRanked) {
   ASSERT_EQ(m.outcomes.size(), 1u);
   EXPECT_TRUE(m.outcomes[0].cut_short());
   EXPECT_EQ(cheapest_reached(m, role_name(EngineRole::ours)), nullptr);
+  fs::remove_all(dir);
+}
+
+// An interrupted match keeps a row for every search of its plan: one the interrupt cut short (or
+// that never started) says so and is never ranked.
+TEST(MatchCli, AnInterruptedMatchMarksEverySearchItCutShort) {
+  const fs::path dir = fs::temp_directory_path() / "ballbench-match-interrupted";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string cmd = "timeout --preserve-status -s INT 5 " + std::string(BALLBENCH_CLI) +
+                          " match --scene pile --engine home,box2d --profile all --jobs 1 --store '' --json " +
+                          (dir / "m.json").string() + " >" + (dir / "out").string() + " 2>" + (dir / "err").string();
+  const int rc = std::system(cmd.c_str());
+  ASSERT_TRUE(WIFEXITED(rc));
+  EXPECT_EQ(WEXITSTATUS(rc), 130) << testing::slurp((dir / "err").string());
+  const MatchResult m = read_match_file((dir / "m.json").string());
+  EXPECT_EQ(m.interrupted, "SIGINT");
+  ASSERT_EQ(m.outcomes.size(), m.searches.size());
+  ASSERT_EQ(m.searches.size(), 5u);
+  int cut = 0;
+  for (const MatchOutcome& oc : m.outcomes)
+    if (oc.stop == SearchStop::interrupt) {
+      ++cut;
+      EXPECT_TRUE(!oc.reached || oc.cut_short()) << oc.engine << "/" << oc.profile;
+      EXPECT_NE(cheapest_reached(m, oc.role), &oc) << oc.engine << "/" << oc.profile;
+    }
+  EXPECT_GE(cut, 1);
+  const std::string out = testing::slurp((dir / "out").string());
+  EXPECT_NE(out.find("interrupted before it started"), std::string::npos) << out;
   fs::remove_all(dir);
 }
 

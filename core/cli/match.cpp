@@ -143,6 +143,7 @@ class Search {
   void set_ceiling(double ns) { ceiling_ns_ = ns; }
 
   const EngineEntry& entry() const { return e_; }
+  const std::string& profile() const { return profile_; }
   // The store key of try `index` of this search.
   nlohmann::json key_of(int index) const {
     const MatchTry& t = tries.at(index);
@@ -565,8 +566,15 @@ void set_ceiling(SearchPlan& plan, const MatchOptions& o, MatchResult& m) {
 // Every search's tries in the order of the searches; each found configuration timed alone.
 void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchResult& m) {
   for (size_t i = 0; i < plan.searches.size(); ++i) {
-    if (!plan.outcomes[i] || !plan.taken[i]) continue;  // interrupted before it started, or another shard's
+    if (!plan.taken[i]) continue;  // another shard's
     Search& s = *plan.searches[i];
+    if (!plan.outcomes[i]) {  // interrupted before it started: its row says so
+      MatchOutcome oc;
+      oc.engine = s.entry().info.name, oc.profile = s.profile(), oc.role = role_name(s.entry().info.role);
+      oc.stop = SearchStop::interrupt, oc.stopped = "an interrupt, before it started";
+      m.outcomes.push_back(std::move(oc));
+      continue;
+    }
     MatchOutcome oc = std::move(*plan.outcomes[i]);
     const int offset = int(m.tries.size());
     if (oc.reached && !interrupt_signal()) {
@@ -623,7 +631,8 @@ void print_match_rows(const MatchResult& m) {
     const int shown = oc.reached ? oc.found : oc.best;
     const std::string label = run_label(oc.engine, oc.profile);
     if (shown < 0) {
-      fmt::print("{:<18} {:<12} {}\n", label, "not reached", "no configuration ran");
+      fmt::print("{:<18} {:<12} {}\n", label, "not reached",
+                 oc.stop == SearchStop::interrupt ? "interrupted before it started" : "no configuration ran");
       continue;
     }
     const MatchTry& t = m.tries[shown];
