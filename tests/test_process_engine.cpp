@@ -489,6 +489,30 @@ TEST(Conform, ChecksAnyEngineAndNamesARefutedClaim) {
   EXPECT_TRUE(has(unknown.err, "unknown engine 'nosuch'")) << unknown.err;
 }
 
+// `run` and `match` mark, under their tables, an engine whose claim this build's closed-form checks
+// refuted (kept in the store by `conform` and the report), and name the engines not yet checked.
+TEST(Conform, RunAndMatchMarkARefutedClaim) {
+  const std::string cache = (std::filesystem::temp_directory_path() / ("bb_claims." + std::to_string(::getpid()))).string();
+  std::filesystem::remove_all(cache);
+  const char* before = std::getenv("XDG_CACHE_HOME");
+  const std::string kept = before ? before : "";
+  ::setenv("XDG_CACHE_HOME", cache.c_str(), 1);
+  const std::string liar = "'process:python3 " + kMisbehaving + " none'";
+  const std::string run = "run --quiet --no-reference --scene seed-box --steps 2 --engine home," + liar;
+  const auto unchecked = testing::run_cli(run);
+  EXPECT_EQ(unchecked.status, 0) << unchecked.err;
+  EXPECT_TRUE(has(unchecked.out, "not yet checked against the closed forms by this build: home, misbehaving")) << unchecked.out;
+  EXPECT_EQ(testing::run_cli("conform --engine home," + liar).status, 1);
+  const auto marked = testing::run_cli(run);
+  EXPECT_TRUE(has(marked.out, "misbehaving: its closed forms refute its claim of ")) << marked.out;
+  EXPECT_TRUE(has(marked.out, "friction (ballbench conform --engine misbehaving)")) << marked.out;
+  EXPECT_FALSE(has(marked.out, "not yet checked")) << marked.out;
+  EXPECT_FALSE(has(marked.out, "home: its closed forms refute")) << marked.out;
+  if (before) ::setenv("XDG_CACHE_HOME", kept.c_str(), 1);
+  else ::unsetenv("XDG_CACHE_HOME");
+  std::filesystem::remove_all(cache);
+}
+
 // The protocol is one reply per request, and a state's t is the steps' dts summed: a reply sent
 // twice (which would shift the trajectory a step late) or a clock of the engine's own fails the run.
 TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {

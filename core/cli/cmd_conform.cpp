@@ -16,6 +16,7 @@
 #include "registry.h"
 #include "result.h"
 #include "run_engines.h"
+#include "try_store.h"
 
 namespace ballbench::cli {
 namespace {
@@ -38,6 +39,7 @@ void conform(const ConformArgs& a) {
   }
   fmt::print("{:<18} {:<22} {:>10} {:>10}  {}\n", "engine/profile", "case", "figure", "tolerance", "verdict");
   const ConformResult c = run_conform(engines, a.profile, run_context(), true);
+  keep_claim_checks(TryStore(TryStore::default_dir(), false), c, engines);
   size_t failed = 0, refused = 0, refuted = 0;
   for (const ConformRow& r : c.rows)
     failed += r.verdict == ConformVerdict::fail, refused += r.verdict == ConformVerdict::refused,

@@ -19,6 +19,7 @@
 #include "scene_loader.h"
 #include "spec_option.h"
 #include "sweep_result.h"
+#include "conform_run.h"
 #include "try_store.h"
 #include "validators.h"
 
@@ -57,6 +58,7 @@ void match(MatchArgs& a) {
   const MatchResult m = run_match(scene, engines, a.options, run_context());
   write_match_files(m, a.json, a.csv);
   print_match(m, a.target);
+  print_claim_checks(TryStore(a.store.empty() ? TryStore::default_dir() : a.store, false), engines, a.options.profile);
   fmt::print("wrote {} and {}\n", a.json, a.csv);
   exit_if_interrupted(fmt::format("{} tries written to {} and {}", m.tries.size(), a.json, a.csv));
 }

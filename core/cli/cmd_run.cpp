@@ -15,7 +15,9 @@
 #include "interrupt.h"
 #include "progress.h"
 #include "registry.h"
+#include "conform_run.h"
 #include "run_engines.h"
+#include "try_store.h"
 #include "scene_loader.h"
 #include "spec_option.h"
 #include "validators.h"
@@ -181,6 +183,7 @@ void run(const RunArgs& a) {
     if (ours.empty() && find_engine(r.engine).info.role == EngineRole::ours) ours = run_label(r);
   if (a.seeds > 1) print_ensemble(results, a.seeds, ours);
   else print_table(results);
+  print_claim_checks(TryStore(TryStore::default_dir(), false), engines, a.profile);
   if (!a.json.empty()) write_results_file(a.json, results);
   // The table and the JSON stand; the trajectory that could not be written is said in one line.
   if (!trajectory_error.empty()) {

@@ -1,11 +1,15 @@
 #include "conform_run.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "conformance.h"
 #include "interrupt.h"
+#include "machine_info.h"
+#include "registry.h"
 #include "result.h"
 #include "run_engines.h"
 
@@ -62,6 +66,47 @@ ConformResult run_conform(const std::vector<const EngineEntry*>& engines, const 
       }
   }
   return out;
+}
+
+namespace {
+
+nlohmann::json claim_key(const EngineEntry& e, const std::string& profile) {
+  return {{"kind", "conform"}, {"engine", e.info.name}, {"version", e.info.version}, {"profile", profile},
+          {"build", build_id()}};
+}
+
+}  // namespace
+
+void keep_claim_checks(const TryStore& store, const ConformResult& c, const std::vector<const EngineEntry*>& engines) {
+  if (!store.enabled() || !c.interrupted.empty()) return;
+  for (const EngineEntry* e : engines) {
+    if (!e->info.unavailable.empty()) continue;
+    for (const std::string& p : e->info.profiles)
+      if (std::any_of(c.rows.begin(), c.rows.end(), [&](const ConformRow& r) { return r.engine == e->info.name && r.profile == p; }))
+        store.keep(claim_key(*e, p), {{"refuted", refuted_claims(c, e->info.name, p)}});
+  }
+}
+
+void print_claim_checks(const TryStore& store, const std::vector<const EngineEntry*>& engines, const std::string& profile) {
+  if (!store.enabled()) return;
+  std::vector<std::string> unchecked;
+  for (const EngineEntry* e : engines) {
+    if (!e->info.unavailable.empty()) continue;
+    for (const std::string& p : profiles_for(*e, profile)) {
+      const auto found = store.find(claim_key(*e, p));
+      if (!found) {
+        if (std::find(unchecked.begin(), unchecked.end(), e->info.name) == unchecked.end()) unchecked.push_back(e->info.name);
+        continue;
+      }
+      const auto refuted = found->value("refuted", std::vector<std::string>{});
+      if (!refuted.empty())
+        fmt::print("{}: its closed forms refute its claim of {} (ballbench conform --engine {})\n",
+                   run_label(e->info.name, p), fmt::join(refuted, ", "), e->info.name);
+    }
+  }
+  if (!unchecked.empty())
+    fmt::print("not yet checked against the closed forms by this build: {} (ballbench conform --engine {})\n",
+               fmt::join(unchecked, ", "), fmt::join(unchecked, ","));
 }
 
 }  // namespace ballbench::cli

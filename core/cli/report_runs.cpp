@@ -56,11 +56,11 @@ nlohmann::json engine_list(const std::vector<const EngineEntry*>& engines) {
 // engines this report asks (an earlier report of another --engine list, an edited scene file or a
 // rebuilt harness made other ones): why not, or "" if they are this report's.
 std::string made_elsewhere(const nlohmann::json& context, const nlohmann::json& want) {
-  for (const char* key : {"build", "scene_digest", "report_engines"})
-    if (want.contains(key) && (!context.is_object() || context.value(key, nlohmann::json()) != want[key]))
-      return key == std::string("build") ? "made by another build"
-             : key == std::string("scene_digest") ? "made of other contents of the scene"
-                                                   : "made for another list of engines";
+  constexpr std::pair<const char*, const char*> kOrigins[] = {{"build", "made by another build"},
+                                                              {"scene_digest", "made of other contents of the scene"},
+                                                              {"report_engines", "made for another list of engines"}};
+  for (const auto& [key, why] : kOrigins)
+    if (want.contains(key) && (!context.is_object() || context.value(key, nlohmann::json()) != want[key])) return why;
   return "";
 }
 
@@ -256,7 +256,9 @@ void run_calibration_part(const ReportRun& run, const ReportPart& part) {
 }
 
 void run_conform_part(const ReportRun& run, const ReportPart& part) {
-  write_conform_file(path_of(run, part), run_conform(run.engines, "all", part_context(part, run.engines), false));
+  const ConformResult c = run_conform(run.engines, "all", part_context(part, run.engines), false);
+  if (run.store) keep_claim_checks(*run.store, c, run.engines);
+  write_conform_file(path_of(run, part), c);
 }
 
 std::string harness_path(const ReportRun& run) { return run.results_dir + "/harness.json"; }
