@@ -486,7 +486,9 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
 
 Scene load_scene_file(const std::string& path, int64_t seed_offset) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(fmt::format("{}: scene file not found", path));
+  if (!std::filesystem::exists(path, ec))  // ec: a reason other than absence (a loop of links, a folder not searchable)
+    throw InputError(ec ? fmt::format("{}: cannot read the scene file: {}", path, ec.message())
+                        : fmt::format("{}: scene file not found", path));
   if (std::filesystem::is_directory(path, ec)) throw InputError(fmt::format("{}: is a directory, not a scene file", path));
   // Checked before opening: a FIFO without a writer would block the open, a device (/dev/zero)
   // would never end.

@@ -679,6 +679,16 @@ TEST(Cli, AWriteRefusedPartWayKeepsTheFileItWouldReplace) {
   EXPECT_EQ(names_in(s.dir), (std::vector<std::string>{"err", "out", "status", "t.csv"}));
 }
 
+// A scene path that is a loop of symbolic links says so, not "not found".
+TEST(Cli, ASymbolicLinkLoopIsNamedAsSuch) {
+  const Scratch s("bb_loop");
+  std::filesystem::create_symlink(s / "b.toml", s / "a.toml");
+  std::filesystem::create_symlink(s / "a.toml", s / "b.toml");
+  expect_one_line_error(cli("run --scene " + s / "a.toml" + " --engine home"),
+                        s / "a.toml" + ": cannot read the scene file: Too many levels of symbolic links");
+  expect_one_line_error(cli("run --scene " + s / "none.toml" + " --engine home"), s / "none.toml" + ": scene file not found");
+}
+
 // Rendering checks what it joins: a scene's results file with no run, a run whose counts are out
 // of range and a run listed twice are each one line naming the file and the run, not a report
 // that drops a scene or counts a run twice.
