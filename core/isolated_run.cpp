@@ -234,7 +234,11 @@ class ChildWatcher {
 double stuck_grace_s(double timeout_s) { return std::max(2.0, 0.1 * timeout_s); }
 
 Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
-  const std::string after = c.last_done > 0 ? fmt::format(" after step {} of {}", c.last_done, r.steps) : "";
+  // The steps it reported done, whose figures went with the process (the result's steps_done is
+  // what was measured: 0).
+  const std::string after =
+      c.last_done > 0 ? fmt::format(" after step {} of {} (the figures of those steps lost with it)", c.last_done, r.steps)
+                      : "";
   // Interrupted: the child's own result (status "interrupted", its metrics so far) if it sent one.
   if (c.interrupted && !(c.kind == "result" && WIFEXITED(c.wait_status) && WEXITSTATUS(c.wait_status) == 0)) {
     r.status = RunStatus::interrupted;

@@ -110,7 +110,9 @@ TEST(Isolation, ASegfaultIsACrashNamingTheSignal) {
   EXPECT_NE(r.error.find("SIGSEGV"), std::string::npos) << r.error;
   EXPECT_EQ(r.engine, "segv");
   EXPECT_EQ(r.steps, 50);
+  // The steps it made are named, and why steps_done reads 0: their figures died with the child.
   EXPECT_EQ(r.steps_done, 0);
+  EXPECT_NE(r.error.find("after step 4 of 50 (the figures of those steps lost with it)"), std::string::npos) << r.error;
 }
 
 TEST(Isolation, AnAbortIsACrashNamingTheSignal) {
