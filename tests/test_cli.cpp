@@ -22,6 +22,8 @@
 namespace {
 
 using Outcome = ballbench::testing::CliOutcome;
+using ballbench::testing::expect_one_line_error;
+using ballbench::testing::Scratch;
 using ballbench::testing::slurp;
 const auto cli = ballbench::testing::run_cli;
 
@@ -57,13 +59,6 @@ vel_min = [0.0, 0.0]
 vel_max = [25.0, 25.0]
 seed = 1
 )";
-
-void expect_one_line_error(const Outcome& o, const std::string& fragment) {
-  EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_NE(o.err.find(fragment), std::string::npos) << o.err;
-  ASSERT_FALSE(o.err.empty());
-  EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << "more than one line: " << o.err;
-}
 
 // Every command takes --quiet: none refuses it as an unknown option (the bad input after it is what
 // each one reports).
@@ -543,18 +538,6 @@ TEST(Cli, ListShowsScenesAndEnginesWithVersions) {
   EXPECT_NE(o.out.find("home-seed    thesis-2017    thesis"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("box2d        2.4.1          external"), std::string::npos) << o.out;
 }
-
-// A folder of this test process's own under the temporary folder, removed at the end.
-struct Scratch {
-  std::filesystem::path dir;
-  explicit Scratch(const std::string& name)
-      : dir(std::filesystem::temp_directory_path() / (name + "." + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  ~Scratch() { std::filesystem::remove_all(dir); }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
-};
 
 // The names in a folder, sorted.
 std::vector<std::string> names_in(const std::filesystem::path& dir) {
