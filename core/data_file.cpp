@@ -1,9 +1,11 @@
 #include "data_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -89,11 +91,51 @@ std::vector<PathUse>& noted_inputs() {
   return uses;
 }
 
+// The process that made NAME, if NAME is a temporary file of writing BASE (beside it):
+// BASE[.part].tmp.PID.TOKEN[.header|.tmp], TOKEN eight hex digits, as create_temp_beside names them
+// and the trajectory's writers derive from them (run_engines.cpp, isolated_run.cpp); 0 otherwise.
+pid_t temp_owner(std::string_view name, std::string_view base) {
+  const auto take = [&](std::string_view part) {
+    if (!name.starts_with(part)) return false;
+    name.remove_prefix(part.size());
+    return true;
+  };
+  if (!take(base)) return 0;
+  take(".part");
+  if (!take(".tmp.")) return 0;
+  size_t digits = 0;
+  while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
+  if (digits == 0 || digits > 9 || name.front() == '0') return 0;  // Linux pids are below 2^22
+  const auto pid = static_cast<pid_t>(std::stol(std::string(name.substr(0, digits))));
+  name.remove_prefix(digits);
+  if (!take(".") || name.size() < 8) return 0;
+  for (size_t k = 0; k < 8; ++k)
+    if (!std::isdigit(static_cast<unsigned char>(name[k])) && (name[k] < 'a' || name[k] > 'f')) return 0;
+  name.remove_prefix(8);
+  return name.empty() || name == ".header" || name == ".tmp" ? pid : 0;
+}
+
 }  // namespace
 
 std::string write_error_text(int err) { return err ? std::strerror(err) : "an I/O error"; }
 
+void remove_stale_temps(const std::string& path) {
+  const std::filesystem::path target(path);
+  const std::string base = target.filename().string();
+  if (base.empty()) return;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(target.has_parent_path() ? target.parent_path() : ".", ec), end;
+       !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temp_owner(it->path().filename().string(), base);
+    // Only a process known to be gone: a live one (or one of another user's, EPERM) keeps its files.
+    if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    if (it->is_regular_file(rm) && !it->is_symlink(rm)) std::filesystem::remove(it->path(), rm);
+  }
+}
+
 std::string create_temp_beside(const std::string& path, const std::string& what) {
+  remove_stale_temps(path);
   static std::mt19937_64 rng{std::random_device{}() ^ static_cast<uint64_t>(::getpid())};
   for (int attempt = 0; attempt < 100; ++attempt) {
     const std::string tmp = fmt::format("{}.tmp.{}.{:08x}", path, ::getpid(), static_cast<uint32_t>(rng()));

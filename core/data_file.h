@@ -32,7 +32,15 @@ std::string temp_base(const std::string& path);
 
 // A temporary file of this process's own beside `path`, created empty (O_EXCL, so never a file
 // that was there): "PATH.tmp.PID.TOKEN". Throws InputError naming `path` and `what` if it cannot.
+// The temporary files that writers of `path` killed before they could remove theirs left beside
+// it are removed first (remove_stale_temps).
 std::string create_temp_beside(const std::string& path, const std::string& what);
+
+// Removes the temporary files of writing `path` (named "PATH[.part].tmp.PID.TOKEN[.header|.tmp]",
+// as this file's writers and the trajectory's name them) whose process no longer exists: those a
+// killed run left (a SIGKILL gives no chance to clean up). Files of a live process, of another
+// user's or of any other name are kept.
+void remove_stale_temps(const std::string& path);
 
 // A regular file to read, checked before it is opened: it exists, is a regular file (not a
 // folder, a FIFO or a device, which could block or never end) and holds at most `max_bytes`.

@@ -58,10 +58,11 @@ void record(RunContext& c, long k) {
   for (size_t b = 0; b < series.tracks.size(); ++b) series.tracks[b].push_back({state.pos(b, 0), state.pos(b, 1)});
 }
 
-// The sampled metrics, the figures and the checksums see the state of step k.
+// The sampled metrics, the figures and the checksums see the state of step k; an interrupt cuts
+// the initial one short (run_engine).
 void sample(RunContext& c, long k) {
   c.sampled = k;
-  c.metrics->sample(c.state);
+  c.metrics->sample(c.state, k == 0);
   record(c, k);
   c.final_sum = state_checksum(c.state), c.trajectory_sum = chain_checksum(c.trajectory_sum, c.final_sum);
 }

@@ -6,6 +6,7 @@
 #include <xxhash.h>
 
 #include "input_error.h"
+#include "interrupt.h"
 #include "machine_info.h"
 #include "run_stages.h"
 #include "scene_digest.h"
@@ -57,16 +58,34 @@ Result result_header(const Scene& scene, const EngineEntry& entry, const RunOpti
   return r;
 }
 
+namespace {
+
+void stop_if_asked() {
+  if (interrupt_signal()) throw Interrupted{"setting up a run"};
+}
+
+}  // namespace
+
 // The run's stages (run_stages.h), in order. A stage that ends the run early (a refusal, a
-// world that cannot be built or read) leaves the result as far as it got.
+// world that cannot be built or read) leaves the result as far as it got. Building and measuring
+// the worlds of millions of balls takes seconds: an interrupt is looked for between the stages, and
+// within them by our solvers' set-up loops and the initial state's meters (throwing Interrupted).
 Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   RunContext c(scene, entry, options);
-  if (!set_up(c)) return std::move(c.r);
-  set_up_reference(c);
-  set_up_sampling(c);
-  c.harness_start = std::chrono::steady_clock::now();
-  c.harness_start_cpu = process_cpu_seconds();
-  if (!read_initial(c)) return std::move(c.r);
+  try {
+    if (!set_up(c)) return std::move(c.r);
+    stop_if_asked();
+    set_up_reference(c);
+    stop_if_asked();
+    set_up_sampling(c);
+    c.harness_start = std::chrono::steady_clock::now();
+    c.harness_start_cpu = process_cpu_seconds();
+    if (!read_initial(c)) return std::move(c.r);
+  } catch (const Interrupted&) {  // asked to stop before the first step: the run ends there, marked
+    c.r.status = RunStatus::interrupted;
+    c.r.error = fmt::format("interrupted by {} before step 1", interrupt_name());
+    return std::move(c.r);
+  }
   step_loop(c);
   sample_last(c);
   final_metrics(c);

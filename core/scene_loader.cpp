@@ -62,6 +62,10 @@ struct BallList {
   void add(Eigen::Vector2d p, Eigen::Vector2d v, double r, double m, double w, int at) {
     pos.push_back(p), vel.push_back(v), radius.push_back(r), mass.push_back(m), spin.push_back(w), line.push_back(at);
   }
+  // Room for `n` balls up front: growing by doubling would copy millions of balls at once, twice the memory.
+  void reserve(size_t n) {
+    pos.reserve(n), vel.reserve(n), radius.reserve(n), mass.reserve(n), spin.reserve(n), line.reserve(n);
+  }
 };
 
 void check_positive(const TableReader& r, const char* key, double v) {
@@ -180,13 +184,63 @@ void read_lattice_balls(const toml::table& t, const std::string& source, const C
   const SpinRange spin = read_spin_range(r);
   std::mt19937_64 rng(static_cast<uint64_t>(r.integer("seed", 1)));
   const int line = static_cast<int>(t.source().begin.line);
+  balls.reserve(balls.pos.size() + static_cast<size_t>(count));
   for (int64_t k = 0; k < count; ++k) {
+    if ((k & 0xffff) == 0 && interrupt_signal()) throw Interrupted{fmt::format("placing {} balls", count)};
     const Eigen::Vector2d p = origin + spacing * Eigen::Vector2d(static_cast<double>(k % columns), static_cast<double>(k / columns));
     if (!inside(container, p, radius))
       r.fail(r.node("count"), "count", fmt::format("ball {} at ({:.4g}, {:.4g}) is outside the container: only {} fit", k,
                                                    p.x(), p.y(), k));
     const Eigen::Vector2d v{uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())};
     balls.add(p, v, radius, mass, spin.draw(rng), line);
+  }
+}
+
+// What a [random] table draws: `count` balls uniformly in the position and velocity boxes.
+struct RandomDraw {
+  int64_t count;
+  double radius, mass;
+  Eigen::Vector2d pos_min, pos_max, vel_min, vel_max;
+  SpinRange spin;
+  int64_t seed;
+  int line;  // the table's, for messages
+};
+
+// Each ball draws x, y, vx, vy (and w, with a spin range) in that order; without `allow_overlap` a
+// position that overlaps an earlier ball (any, of any table) is drawn again. An interrupt is looked
+// for every 65536 draws, redrawn ones included (a nearly full region redraws most of them).
+void place_random_balls(const TableReader& r, const RandomDraw& d, const std::string& what, bool allow_overlap,
+                        BallList& balls) {
+  std::mt19937_64 rng(static_cast<uint64_t>(d.seed));
+  double reach = d.radius;  // the largest radius already placed, so the hash cell covers every pair
+  for (double r0 : balls.radius) reach = std::max(reach, r0);
+  const size_t first = balls.pos.size();
+  balls.reserve(first + static_cast<size_t>(d.count));
+  OverlapIndex placed(d.radius + reach, allow_overlap ? 0 : first + static_cast<size_t>(d.count));
+  if (!allow_overlap)
+    for (const auto& p : balls.pos) placed.insert(p);
+  constexpr int kAttempts = 1000;  // per ball; a region this full is effectively packed
+  Progress progress(what);
+  uint64_t draws = 0;
+  for (int64_t k = 0; k < d.count; ++k) {
+    Eigen::Vector2d p;
+    int attempt = 0;
+    do {
+      if ((draws++ & 0xffff) == 0) {
+        if (interrupt_signal()) throw Interrupted{fmt::format("placing {} balls", d.count)};
+        progress.update(double(k) / double(d.count));
+      }
+      if (++attempt > kAttempts)
+        r.fail(r.node("count"), "count",
+               fmt::format("only {} of {} balls fit without overlap in [pos_min, pos_max] "
+                           "(set allow_overlap = true to let them overlap)",
+                           balls.pos.size() - first, d.count));
+      p = {uniform(rng, d.pos_min.x(), d.pos_max.x()), uniform(rng, d.pos_min.y(), d.pos_max.y())};
+    } while (!allow_overlap && placed.overlaps(p, d.radius, balls.pos, balls.radius));
+    const Eigen::Vector2d v{uniform(rng, d.vel_min.x(), d.vel_max.x()), uniform(rng, d.vel_min.y(), d.vel_max.y())};
+    const double w = d.spin.draw(rng);
+    if (!allow_overlap) placed.insert(p);
+    balls.add(p, v, d.radius, d.mass, w, d.line);
   }
 }
 
@@ -223,39 +277,9 @@ void read_random_balls(const toml::table& t, const std::string& source, const st
            "the box [pos_min, pos_max] must keep balls of this radius inside the container");
   check_spread(r, "pos_min", pos_min, radius);
   check_spread(r, "pos_max", pos_max, radius);
-  const int64_t seed = r.integer("seed", 1);
-  const int line = static_cast<int>(t.source().begin.line);
-
-  std::mt19937_64 rng(static_cast<uint64_t>(seed));
-  // Each ball draws x, y, vx, vy (and w, with a spin range) in that order; overlapping draws are
-  // redrawn (position only).
-  double reach = radius;  // the largest radius already placed, so the hash cell covers every pair
-  for (double r0 : balls.radius) reach = std::max(reach, r0);
-  OverlapIndex placed(radius + reach);
-  for (const auto& p : balls.pos) placed.insert(p);
-  constexpr int kAttempts = 1000;  // per ball; a region this full is effectively packed
-  const size_t first = balls.pos.size();
-  Progress progress(fmt::format("placing {} balls ({} in {})", count, prefix, source));
-  for (int64_t k = 0; k < count; ++k) {
-    if ((k & 0xffff) == 0) {
-      if (interrupt_signal()) throw Interrupted{fmt::format("placing {} balls", count)};
-      progress.update(double(k) / count);
-    }
-    Eigen::Vector2d p;
-    int attempt = 0;
-    do {
-      if (++attempt > kAttempts)
-        r.fail(r.node("count"), "count",
-               fmt::format("only {} of {} balls fit without overlap in [pos_min, pos_max] "
-                           "(set allow_overlap = true to let them overlap)",
-                           balls.pos.size() - first, count));
-      p = {uniform(rng, pos_min.x(), pos_max.x()), uniform(rng, pos_min.y(), pos_max.y())};
-    } while (!allow_overlap && placed.overlaps(p, radius, balls.pos, balls.radius));
-    const Eigen::Vector2d v{uniform(rng, vel_min.x(), vel_max.x()), uniform(rng, vel_min.y(), vel_max.y())};
-    const double w = spin.draw(rng);
-    if (!allow_overlap) placed.insert(p);
-    balls.add(p, v, radius, mass, w, line);
-  }
+  const RandomDraw draw{count, radius, mass, pos_min, pos_max, vel_min, vel_max, spin, r.integer("seed", 1),
+                        static_cast<int>(t.source().begin.line)};
+  place_random_balls(r, draw, fmt::format("placing {} balls ({} in {})", count, prefix, source), allow_overlap, balls);
 }
 
 // [accuracy]: the scene's own spec terms (accuracy_spec.h), each a bound or false (drops the term
@@ -344,6 +368,24 @@ void read_requested_metrics(const toml::node& node, const std::string& source, S
            "needs a floor: a box container and gravity straight down [0, -g]");
 }
 
+// Without allow_overlap no two balls may start overlapping. Only the first `unchecked` balls (the
+// [[ball]] and [lattice] ones) are searched: each [random] ball was drawn clear of every ball
+// before it, so the first overlapping pair, if any, is among them. Millions of them take a second
+// or more: an interrupt is looked for on either side.
+void check_start_overlaps(const Scene& s, const BallList& balls, int unchecked) {
+  if (s.allow_overlap) return;
+  if (interrupt_signal()) throw Interrupted{fmt::format("placing {} balls", s.n())};
+  const auto pair = unchecked == s.n()
+                        ? first_overlapping_pair(s.initial.pos, s.radius)
+                        : first_overlapping_pair(s.initial.pos.topRows(unchecked), s.radius.head(unchecked));
+  if (interrupt_signal()) throw Interrupted{fmt::format("checking {} balls for overlaps", s.n())};
+  if (!pair) return;
+  const auto [i, j] = *pair;
+  throw InputError(fmt::format("{}:{}: ball: balls {} and {} (declared at lines {} and {}) overlap at the start "
+                               "(set allow_overlap = true if that is intended)",
+                               s.source, balls.line[j], i, j, balls.line[i], balls.line[j]));
+}
+
 Scene parse_scene_text(const std::string& toml_text, const std::string& source, int64_t seed_offset) {
   toml::table doc;
   try {
@@ -425,6 +467,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     if (!lat->is_table()) top.fail(lat, "lattice", "expected a table [lattice]");
     read_lattice_balls(*lat->as_table(), source, s.container, balls);
   }
+  const int unchecked = static_cast<int>(balls.pos.size());  // the [random] balls are drawn clear of every earlier one
   if (const toml::node* rnd = top.node("random")) {
     if (const toml::table* t = rnd->as_table()) {
       read_random_balls(*t, source, "random", s.container, s.allow_overlap, balls);
@@ -449,14 +492,7 @@ Scene parse_scene_text(const std::string& toml_text, const std::string& source, 
     s.initial.angle.setZero();
   }
 
-  if (!s.allow_overlap) {
-    if (auto pair = first_overlapping_pair(s.initial.pos, s.radius)) {
-      const auto [i, j] = *pair;
-      throw InputError(fmt::format("{}:{}: ball: balls {} and {} (declared at lines {} and {}) overlap at the start "
-                                   "(set allow_overlap = true if that is intended)",
-                                   source, balls.line[j], i, j, balls.line[i], balls.line[j]));
-    }
-  }
+  check_start_overlaps(s, balls, unchecked);
 
   if (const toml::node* m = top.node("metrics")) read_requested_metrics(*m, source, s);
   if (const toml::node* a = top.node("accuracy")) read_accuracy(*a, source, s);

@@ -1,5 +1,6 @@
 #pragma once
 // Running the `ballbench` binary from a test, as a user would: exit status, stdout and stderr.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -33,5 +34,25 @@ inline CliOutcome run_cli(const std::string& args) {
   std::filesystem::remove(out, ec), std::filesystem::remove(err, ec);
   return outcome;
 }
+
+// Bad input: exit status 2 and one line on stderr holding `fragment`.
+inline void expect_one_line_error(const CliOutcome& o, const std::string& fragment) {
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_NE(o.err.find(fragment), std::string::npos) << o.err;
+  ASSERT_FALSE(o.err.empty());
+  EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << "more than one line: " << o.err;
+}
+
+// A folder of a test's own in the temporary folder, empty at the start, removed at the end.
+struct Scratch {
+  std::filesystem::path dir;
+  explicit Scratch(const std::string& name)
+      : dir(std::filesystem::temp_directory_path() / (name + "." + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+  }
+  ~Scratch() { std::filesystem::remove_all(dir); }
+  std::string operator/(const std::string& name) const { return (dir / name).string(); }
+};
 
 }  // namespace ballbench::testing

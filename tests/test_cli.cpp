@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -22,6 +23,8 @@
 namespace {
 
 using Outcome = ballbench::testing::CliOutcome;
+using ballbench::testing::expect_one_line_error;
+using ballbench::testing::Scratch;
 using ballbench::testing::slurp;
 const auto cli = ballbench::testing::run_cli;
 
@@ -57,13 +60,6 @@ vel_min = [0.0, 0.0]
 vel_max = [25.0, 25.0]
 seed = 1
 )";
-
-void expect_one_line_error(const Outcome& o, const std::string& fragment) {
-  EXPECT_EQ(o.status, 2) << o.err;
-  EXPECT_NE(o.err.find(fragment), std::string::npos) << o.err;
-  ASSERT_FALSE(o.err.empty());
-  EXPECT_EQ(o.err.find('\n'), o.err.size() - 1) << "more than one line: " << o.err;
-}
 
 // Every command takes --quiet: none refuses it as an unknown option (the bad input after it is what
 // each one reports).
@@ -544,18 +540,6 @@ TEST(Cli, ListShowsScenesAndEnginesWithVersions) {
   EXPECT_NE(o.out.find("box2d        2.4.1          external"), std::string::npos) << o.out;
 }
 
-// A folder of this test process's own under the temporary folder, removed at the end.
-struct Scratch {
-  std::filesystem::path dir;
-  explicit Scratch(const std::string& name)
-      : dir(std::filesystem::temp_directory_path() / (name + "." + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-  }
-  ~Scratch() { std::filesystem::remove_all(dir); }
-  std::string operator/(const std::string& name) const { return (dir / name).string(); }
-};
-
 // The names in a folder, sorted.
 std::vector<std::string> names_in(const std::filesystem::path& dir) {
   std::vector<std::string> names;
@@ -914,6 +898,81 @@ TEST(Cli, RegressRefusesANegativeToleranceAndUpdatesACorruptBaseline) {
   const Outcome update = cli("regress --update --baseline " + s / "corrupt.json");
   EXPECT_EQ(update.status, 0) << update.err;
   EXPECT_EQ(cli("regress --baseline " + s / "corrupt.json").status, 0);
+}
+
+// A run killed outright (SIGKILL, or the machine going down) cannot remove its temporary files.
+// The next command writing the same output removes those whose process is gone, and only those:
+// the files of a live process, and any file of another name, are kept.
+TEST(Cli, TheNextRunRemovesTheTemporaryFilesOfADeadRunBesideItsOutputs) {
+  const Scratch s("bb_stale_temps");
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  ASSERT_GT(child, 0);
+  ::waitpid(child, nullptr, 0);
+  const std::string gone = std::to_string(child), live = std::to_string(::getpid());
+  const std::vector<std::string> stale = {
+      "t.csv.tmp." + gone + ".0123abcd",      "t.csv.tmp." + gone + ".0123abcd.header",
+      "t.csv.part.tmp." + gone + ".89abcdef", "t.csv.part.tmp." + gone + ".89abcdef.tmp",
+      "r.json.tmp." + gone + ".deadbeef"};
+  const std::vector<std::string> kept = {
+      "t.csv.tmp." + live + ".0123abcd",  "t.csv.part.tmp." + live + ".89abcdef.tmp", "t.csv.tmp",
+      "t.csv.tmp." + gone + ".0123abcd.bak", "t.csv.tmp." + gone + ".0123ABCD",      "t.csv.tmp." + gone + ".0123abc",
+      "u.csv.tmp." + gone + ".0123abcd",  "xt.csv.tmp." + gone + ".0123abcd"};
+  for (const auto* names : {&stale, &kept})
+    for (const std::string& name : *names) std::ofstream(s / name) << "x";
+  const Outcome o = cli("run --quiet --no-reference --scene seed-box --engine home --steps 2 --trajectory " +
+                        s / "t.csv" + " --json " + s / "r.json");
+  EXPECT_EQ(o.status, 0) << o.err;
+  for (const std::string& name : stale) EXPECT_FALSE(std::filesystem::exists(s / name)) << "left: " << name;
+  for (const std::string& name : kept) EXPECT_TRUE(std::filesystem::exists(s / name)) << "removed: " << name;
+}
+
+// A real run killed while it writes its trajectory (the isolated run's child dies with it) leaves
+// its temporary files; the next run writing that trajectory leaves only the trajectory.
+TEST(Cli, ARunKilledWhileWritingItsTrajectoryIsCleanedUpByTheNext) {
+  const Scratch s("bb_killed_run");
+  const std::string csv = s / "t.csv";
+  // home on the pile takes minutes: killed half a second after its temporary files appear.
+  const std::string cmd = std::string(BALLBENCH_CLI) + " run --quiet --no-reference --scene pile --engine home " +
+                          "--trajectory " + csv + " >/dev/null 2>&1 & pid=$!; for i in $(seq 300); do ls " +
+                          s.dir.string() + " | grep -q tmp && break; sleep 0.1; done; sleep 0.5; " +
+                          "kill -KILL $pid; { wait $pid; } 2>/dev/null";
+  std::system(cmd.c_str());
+  const std::vector<std::string> left = names_in(s.dir);
+  const auto temporary = [](const std::string& name) { return name.find(".tmp.") != std::string::npos; };
+  ASSERT_TRUE(std::any_of(left.begin(), left.end(), temporary)) << "the killed run left no temporary file to clean up";
+  const Outcome o = cli("run --quiet --no-reference --scene seed-box --engine home --steps 2 --trajectory " + csv);
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(names_in(s.dir), std::vector<std::string>{"t.csv"});
+}
+
+// SIGINT before the first step of a scene of ten million balls, while they are placed (random) or
+// checked and built into the engine's and the reference's worlds (a lattice, placed in a moment):
+// the command ends within a few seconds, 130, saying so in one line. The bound is a hang guard, not
+// a speed: a signal that waited for the world in progress would wait tens of seconds.
+TEST(Cli, AnInterruptBeforeTheFirstStepOfTenMillionBallsActsAtOnce) {
+  const Scratch s("bb_huge_interrupt");
+  const std::string head = "dt = 0.001\nduration = 0.002\n[container]\nkind = \"box\"\nmin = [-50.0, -50.0]\n"
+                           "max = [50.0, 50.0]\n";
+  std::ofstream(s / "random.toml") << head << "[random]\ncount = 10000000\nradius = 0.005\nvel_min = [-1.0, -1.0]\n"
+                                              "vel_max = [1.0, 1.0]\n";
+  std::ofstream(s / "lattice.toml") << head << "[lattice]\ncount = 10000000\nradius = 0.005\nspacing = 0.02\n"
+                                               "vel_min = [-1.0, -1.0]\nvel_max = [1.0, 1.0]\n";
+  for (const auto& [scene, delay] : {std::pair{"random.toml", "1.5"}, {"lattice.toml", "1"}, {"lattice.toml", "4"}}) {
+    const std::string cmd = std::string(BALLBENCH_CLI) + " run --quiet --scene " + s / scene + " --engine home >" +
+                            s / "out" + " 2>" + s / "err" + " & pid=$!; sleep " + delay +
+                            "; kill -INT $pid; t0=$(date +%s%N); wait $pid; " +
+                            "echo $? $(( ($(date +%s%N) - t0) / 1000000 )) >" + s / "status";
+    std::system(cmd.c_str());
+    int status = -1;
+    long ms = -1;
+    std::istringstream(slurp(s / "status")) >> status >> ms;
+    const std::string e = slurp(s / "err");
+    EXPECT_EQ(status, 130) << scene << " after " << delay << " s: " << e;
+    EXPECT_LT(ms, 5000) << scene << " after " << delay << " s: the signal waited " << ms << " ms";
+    EXPECT_NE(e.find("ballbench: interrupted by SIGINT"), std::string::npos) << scene << ": " << e;
+    EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << scene << ": " << e;
+  }
 }
 
 }  // namespace

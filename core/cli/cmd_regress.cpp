@@ -6,6 +6,9 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -128,40 +131,102 @@ nlohmann::json read_baseline_file(const std::string& path) {
   return parse_json_file(path, "the regress baseline");
 }
 
-// A baseline names each (scene, engine) run once and only metrics the suite computes (a metric no
-// run computes would never be compared, and a run listed twice would be compared once): checked
-// before anything runs, each problem one line naming the file.
-void check_baseline(const nlohmann::json& baseline, const std::string& path) {
+// The baseline's format, written by --update: the only one this build reads.
+constexpr int kBaselineFormat = 1;
+
+void check_format(const nlohmann::json& baseline, const std::string& path) {
+  const auto it = baseline.find("format_version");
+  const std::string expected =
+      fmt::format("expected {} (the baseline format this ballbench reads and `regress --update` writes)", kBaselineFormat);
+  if (it == baseline.end()) throw InputError(fmt::format("{}: format_version: missing, {}", path, expected));
+  if (!it->is_number_integer() || *it != kBaselineFormat)
+    throw InputError(fmt::format("{}: format_version: got {}, {}", path, it->dump(), expected));
+}
+
+// A baseline as --update writes it, every field present: the field of another type is named.
+JsonShape baseline_shape() {
+  const nlohmann::json tolerances = default_tolerances();
+  nlohmann::json run = record(Result{});
+  for (const auto& [key, tolerance] : tolerances.items()) run["metrics"][key] = 0.0;
+  return {{{"format_version", kBaselineFormat},
+           {"about", ""},
+           {"generated_with", ""},
+           {"tolerances", tolerances},
+           {"runs", nlohmann::json::array({run})}},
+          ""};
+}
+
+// Throws unless `key` is a metric the suite computes (one no run computes would never be compared).
+void check_metric(const std::string& key, const std::string& where, const std::string& path) {
   const nlohmann::json known = default_tolerances();
+  if (known.contains(key)) return;
   std::vector<std::string> names;
   for (const auto& [k, v] : known.items()) names.push_back(k);
-  const auto check_metric = [&](const std::string& key, const std::string& where) {
-    if (!known.contains(key))
-      throw InputError(fmt::format("{}: {}: metric '{}' is not one the suite computes{} (known: {})", path, where, key,
-                                   did_you_mean(key, names), fmt::join(names, ", ")));
-  };
-  if (baseline.contains("tolerances")) {
-    if (!baseline["tolerances"].is_object()) throw InputError(fmt::format("{}: tolerances: expected an object", path));
-    for (const auto& [key, v] : baseline["tolerances"].items()) {
-      check_metric(key, "tolerances");
-      if (!v.is_object()) throw InputError(fmt::format("{}: tolerances.{}: expected {{\"rel\": R, \"abs\": A}}", path, key));
-      for (const char* part : {"rel", "abs"})
-        if (v.contains(part) && !(v[part].is_number() && v[part].get<double>() >= 0 && std::isfinite(v[part].get<double>())))
-          throw InputError(fmt::format("{}: tolerances.{}.{}: expected a finite number >= 0, got {}", path, key, part,
-                                       v[part].dump()));
-    }
-  }
+  throw InputError(fmt::format("{}: {}: metric '{}' is not one the suite computes{} (known: {})", path, where, key,
+                               did_you_mean(key, names), fmt::join(names, ", ")));
+}
+
+// Each (scene, engine) run once (a run listed twice would be compared once), with metrics the
+// suite computes.
+void check_runs(const nlohmann::json& runs, const std::string& path) {
   std::vector<std::string> seen;
-  for (const auto& run : baseline["runs"]) {
-    if (!run.is_object() || !run.contains("scene") || !run.contains("engine"))
+  for (const auto& run : runs) {
+    if (!run.contains("scene") || !run.contains("engine"))
       throw InputError(fmt::format("{}: runs: every run needs a scene and an engine", path));
     const std::string who = fmt::format("{} {}", json_text(run["scene"]), json_text(run["engine"]));
     if (std::find(seen.begin(), seen.end(), who) != seen.end())
       throw InputError(fmt::format("{}: runs: {} is listed twice", path, who));
     seen.push_back(who);
-    if (run.contains("metrics") && run["metrics"].is_object())
-      for (const auto& [key, v] : run["metrics"].items()) check_metric(key, fmt::format("runs: {}", who));
+    if (run.contains("metrics"))
+      for (const auto& [key, v] : run["metrics"].items()) check_metric(key, fmt::format("runs: {}", who), path);
   }
+}
+
+// A tolerance no plausible change could exceed passes anything: refused. A metric passes if
+// |now - baseline| <= abs + rel |baseline|. With rel >= 1 a value may fall to zero or double and
+// pass. abs is a floor for round-off near zero: at or above the largest |value| the baseline holds
+// for the metric, every run's value may vanish or double and pass. The catalog's own floor is
+// always taken; above it, a metric zero or absent in every run has no value to bound it by.
+void check_can_fail(const std::string& key, const nlohmann::json& tolerance, const nlohmann::json& runs,
+                    const std::string& path) {
+  const std::string at = fmt::format("{}: tolerances.{}", path, key);
+  const double rel = tolerance.value("rel", 0.0), abs = tolerance.value("abs", 0.0);
+  if (rel >= 1)
+    throw InputError(fmt::format("{}.rel: {} cannot fail: at 1 or above a value may vanish or double and pass "
+                                 "(expected below 1)", at, rel));
+  const double floor = default_tolerances()[key]["abs"].get<double>();
+  double largest = 0;
+  for (const auto& run : runs)
+    if (run.contains("metrics") && run["metrics"].contains(key) && run["metrics"][key].is_number())
+      largest = std::max(largest, std::abs(run["metrics"][key].get<double>()));
+  if (abs <= floor || abs < largest) return;
+  if (largest <= floor)
+    throw InputError(fmt::format("{}.abs: {}: no run in the baseline has a |{}| above the default {} to show it can "
+                                 "fail (expected at most {})", at, abs, key, floor, floor));
+  throw InputError(fmt::format("{}.abs: {} cannot fail: at or above the largest |{}| in the baseline ({}), every run's "
+                               "value may vanish or double and pass (expected below {})", at, abs, key, largest, largest));
+}
+
+void check_tolerances(const nlohmann::json& tolerances, const nlohmann::json& runs, const std::string& path) {
+  for (const auto& [key, v] : tolerances.items()) {
+    check_metric(key, "tolerances", path);
+    for (const char* part : {"rel", "abs"})
+      if (v.contains(part) && !(v[part].is_number() && v[part].get<double>() >= 0 && std::isfinite(v[part].get<double>())))
+        throw InputError(fmt::format("{}: tolerances.{}.{}: expected a finite number >= 0, got {}", path, key, part,
+                                     v[part].dump()));
+    check_can_fail(key, v, runs, path);
+  }
+}
+
+// A baseline the comparison would read wrongly is refused before anything runs, each problem one
+// line naming the file: a field of another type than --update writes, a run listed twice, a
+// metric the suite does not compute, a tolerance that cannot fail.
+void check_baseline(const nlohmann::json& baseline, const std::string& path) {
+  if (const std::string m = json_shape_mismatch(baseline_shape(), baseline); !m.empty())
+    throw InputError(fmt::format("{}: {}", path, m));
+  const nlohmann::json& runs = baseline["runs"];
+  check_runs(runs, path);
+  if (baseline.contains("tolerances")) check_tolerances(baseline["tolerances"], runs, path);
 }
 
 struct RegressArgs {
@@ -182,19 +247,33 @@ nlohmann::json baseline_to_compare(const RegressArgs& a) {
     return nullptr;
   }
   nlohmann::json baseline = read_baseline_file(a.baseline);
+  // The format first where it is given: a baseline of another format may hold anything else.
+  if (baseline.is_object() && baseline.contains("format_version")) check_format(baseline, a.baseline);
   if (!baseline.is_object() || !baseline.contains("runs") || !baseline["runs"].is_array())
     throw InputError(fmt::format("{}: not a regress baseline: no \"runs\" array", a.baseline));
+  check_format(baseline, a.baseline);
   check_baseline(baseline, a.baseline);
   return baseline;
 }
 
+// The suite's scenes, loaded, with the --set settings checked on each before anything runs (an
+// engine refusing them would otherwise fail every run, each a difference that never names the key).
+std::vector<std::pair<Scene, long>> suite_scenes(const nlohmann::json& overrides) {
+  std::vector<std::pair<Scene, long>> scenes;
+  for (const SuiteScene& item : suite()) {
+    scenes.emplace_back(load_scene(item.scene), item.steps);
+    check_settings(scenes.back().first, overrides);
+  }
+  return scenes;
+}
+
 // The suite's runs, each as the baseline records it.
 std::vector<nlohmann::json> run_suite(const RegressArgs& a, RunOptions options,
-                                      const std::vector<const EngineEntry*>& engines) {
+                                      const std::vector<const EngineEntry*>& engines,
+                                      const std::vector<std::pair<Scene, long>>& scenes) {
   std::vector<nlohmann::json> runs;
-  for (const SuiteScene& item : suite()) {
-    const Scene scene = load_scene(item.scene);
-    options.steps = item.steps;
+  for (const auto& [scene, steps] : scenes) {
+    options.steps = steps;
     for (const Result& r : run_all(scene, engines, "", options, true, Isolation{true, a.timeout_s}))
       runs.push_back(record(r));
     if (interrupt_signal()) break;
@@ -203,18 +282,16 @@ std::vector<nlohmann::json> run_suite(const RegressArgs& a, RunOptions options,
   return runs;
 }
 
-// --update: the runs as the new baseline. The old baseline's own tolerances win; a metric new
-// since it was written gets its default. A baseline that cannot be read (the reason to replace it)
-// gives none.
+// --update: the runs as the new baseline. The old baseline's own tolerances win (checked against
+// the new runs); a metric new since it was written gets its default. A baseline that cannot be
+// read (the reason to replace it) gives none.
 void write_baseline(const RegressArgs& a, const std::vector<nlohmann::json>& runs) {
   nlohmann::json tolerances = default_tolerances();
   if (std::filesystem::exists(a.baseline)) {
     try {
       const nlohmann::json old = read_baseline_file(a.baseline);
       if (old.is_object() && old.contains("tolerances") && old["tolerances"].is_object()) {
-        nlohmann::json kept = old;
-        kept["runs"] = nlohmann::json::array();
-        check_baseline(kept, a.baseline);
+        check_baseline({{"tolerances", old["tolerances"]}, {"runs", runs}}, a.baseline);
         tolerances.update(old["tolerances"]);
       }
     } catch (const InputError& e) {
@@ -223,7 +300,8 @@ void write_baseline(const RegressArgs& a, const std::vector<nlohmann::json>& run
     }
   }
   const MachineInfo m = machine_info();
-  write_file_atomically(a.baseline, nlohmann::json{{"about", kAbout},
+  write_file_atomically(a.baseline, nlohmann::json{{"format_version", kBaselineFormat},
+                               {"about", kAbout},
                                {"generated_with", fmt::format("{}, {} build", m.compiler, m.build_type)},
                                {"tolerances", tolerances},
                                {"runs", runs}}.dump(2) + "\n",
@@ -262,9 +340,10 @@ void regress(const RegressArgs& a) {
   for (const auto& [name, v] : options.overrides.items())
     if (std::none_of(std::begin(kEngines), std::end(kEngines), [&](const char* e) { return name == e; }))
       throw InputError(fmt::format("--set {}: regress runs only {}", name, fmt::join(kEngines, ", ")));
+  const auto scenes = suite_scenes(options.overrides);
   const nlohmann::json baseline = baseline_to_compare(a);
   install_interrupt_handlers();
-  const std::vector<nlohmann::json> runs = run_suite(a, options, engines);
+  const std::vector<nlohmann::json> runs = run_suite(a, options, engines, scenes);
   // A suite cut short is compared with nothing and written nowhere.
   exit_if_interrupted(fmt::format("the suite was cut short after {} run(s): nothing compared{}", runs.size(),
                                   a.update ? ", the baseline not rewritten" : ""));

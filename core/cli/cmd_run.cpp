@@ -40,10 +40,10 @@ struct RunArgs {
   Isolation isolation;
 };
 
-// Every engine's settings, from the scene's [settings.NAME] tables and from --set, are checked
-// before anything runs, for the engines selected and the rest alike: a typo is an error even for an
-// engine left out of this run, and it is found before the first run rather than after. Each named
-// engine is built on a one-ball copy of the scene, which reads (so checks) its settings as a run would.
+}  // namespace
+
+// Each named engine is built on a one-ball copy of the scene, which reads (so checks) its settings
+// as a run would.
 void check_settings(const Scene& scene, const nlohmann::json& overrides) {
   const std::vector<std::string> names = engine_names();
   std::vector<const EngineEntry*> named;
@@ -89,6 +89,8 @@ void check_settings(const Scene& scene, const nlohmann::json& overrides) {
           [](const std::string& text) { throw InputError(text); });
   }
 }
+
+namespace {
 
 // The output files are checked before anything runs (a run may take hours): writable, and neither
 // an input (the scene file, an engines file) nor each other, however spelled.

@@ -5,6 +5,11 @@
 #include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+namespace ballbench {
+struct Scene;
+}
 
 namespace ballbench::cli {
 
@@ -23,6 +28,13 @@ void add_conform(CLI::App& app);
 // Every command's --quiet, declared here once: no progress on stderr (errors, and what a command
 // skips or leaves out, are still said).
 CLI::Option* add_quiet(CLI::App* cmd, bool& quiet);
+
+// Every engine's settings, from the scene's [settings.NAME] tables and from `overrides` (--set,
+// {"ENGINE": {"KEY": value}}), checked before anything runs, for the engines a command runs and the
+// rest alike: a typo is an error even for an engine left out, found before the first run rather than
+// as a failed row of each. Throws InputError "settings.ENGINE.KEY: why" (an unknown key names the
+// engine's known settings), prefixed by FILE:LINE for the scene's own; "--set X.KEY: unknown engine".
+void check_settings(const Scene& scene, const nlohmann::json& overrides);
 
 // Renders OUT/REPORT.md and OUT/figures from OUT/results (`report`, and `merge` of report shards).
 void render_report_folder(const std::string& out);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "interrupt.h"
+
 namespace ballbench {
 
 MeterSet::MeterSet(const Scene& scene, const MetricsConfig& config) : scene_(scene) {
@@ -15,9 +17,12 @@ MeterSet::MeterSet(const Scene& scene, const MetricsConfig& config) : scene_(sce
   }
 }
 
-void MeterSet::sample(const State& s) {
+void MeterSet::sample(const State& s, bool interruptible) {
   SampleView view(s, scene_, motion_steps_, samples_ == 0, scratch_, overlaps_, walls_);
-  for (auto& m : sample_) m->sample(view, events_);
+  for (auto& m : sample_) {
+    if (interruptible && interrupt_signal()) throw Interrupted{"measuring the initial state"};
+    m->sample(view, events_);
+  }
   ++samples_;
 }
 

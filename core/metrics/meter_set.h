@@ -16,8 +16,10 @@ class MeterSet {
  public:
   MeterSet(const Scene& scene, const MetricsConfig& config);
 
-  // A sampled state; the first one is the initial state.
-  void sample(const State& s);
+  // A sampled state; the first one is the initial state. `interruptible`: asked to stop
+  // (interrupt.h) between two meters, it throws Interrupted, this sample unused (the initial state
+  // of millions of balls takes seconds to measure, and the run ends before its first step).
+  void sample(const State& s, bool interruptible = false);
   // One step of motion, from `prev` to `cur` (every step the engine provides a state for).
   void motion(const State& prev, const State& cur);
   // The last good state, once.

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "interrupt.h"
 #include "solver/exact_friction.h"
 #include "solver/exact_roots.h"
 #include "solver/exact_sim.h"
@@ -20,7 +21,12 @@ ExactSim::ExactSim(const Scene& scene, const ExactSettings& settings)
       cluster(model.ball_count),
       sleep(model.ball_count) {
   model.settings.cell_size = grid.build(scene, model, balls);
-  for (int i = 0; i < model.ball_count; ++i) predict(*this, i);
+  // Millions of balls take seconds to predict: asked to stop meanwhile, the building ends
+  // (run_engine marks the run interrupted before its first step).
+  for (int i = 0; i < model.ball_count; ++i) {
+    if ((i & 0xffff) == 0 && interrupt_signal()) throw Interrupted{"building the exact solver's world"};
+    predict(*this, i);
+  }
 }
 
 namespace {
