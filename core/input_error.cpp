@@ -6,20 +6,35 @@
 
 namespace ballbench {
 
-std::string printable(const std::string& text, size_t max_bytes) {
+namespace {
+
+void put_escaped(std::string& out, unsigned char c) {
   static const char* kHex = "0123456789abcdef";
-  std::string out;
-  size_t k = 0;
-  for (; k < text.size() && out.size() < max_bytes; ++k) {
-    const unsigned char c = static_cast<unsigned char>(text[k]);
-    if (c == '\n') out += "\\n";
-    else if (c == '\t') out += "\\t";
-    else if (c == '\r') out += "\\r";
-    else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
-    else out += static_cast<char>(c);
+  if (c == '\n') out += "\\n";
+  else if (c == '\t') out += "\\t";
+  else if (c == '\r') out += "\\r";
+  else if (c < 0x20 || c == 0x7f) out += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+  else out += static_cast<char>(c);
+}
+
+}  // namespace
+
+std::string printable(const std::string& text, size_t max_bytes) {
+  // The head and the tail are kept: a message's reason follows the value it quotes.
+  const size_t head_bytes = max_bytes - max_bytes / 3, tail_bytes = max_bytes / 3;
+  std::string head, tail;
+  size_t front = 0, back = text.size();
+  for (; front < back && head.size() < head_bytes; ++front) put_escaped(head, static_cast<unsigned char>(text[front]));
+  std::vector<std::string> pieces;  // the tail's characters, last first
+  for (size_t taken = 0; back > front && taken < tail_bytes;) {
+    std::string piece;
+    put_escaped(piece, static_cast<unsigned char>(text[--back]));
+    taken += piece.size();
+    pieces.push_back(std::move(piece));
   }
-  if (k < text.size()) out += "... (" + std::to_string(text.size() - k) + " bytes cut)";
-  return out;
+  for (auto it = pieces.rbegin(); it != pieces.rend(); ++it) tail += *it;
+  if (front == back) return head + tail;
+  return head + "... (" + std::to_string(back - front) + " bytes cut) ..." + tail;
 }
 
 bool has_control_character(const std::string& text) {

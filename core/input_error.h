@@ -12,8 +12,8 @@ class InputError : public std::runtime_error {
 };
 
 // Text from outside (an engine's name or error, a file's field) made safe for one line of a
-// terminal: control characters escaped (\n, \t, \x1b), and text beyond `max_bytes` cut, saying how
-// much: "... (N bytes cut)".
+// terminal: control characters escaped (\n, \t, \x1b), and text beyond `max_bytes` cut from its
+// middle, saying how much, its head and its tail kept: "HEAD... (N bytes cut) ...TAIL".
 std::string printable(const std::string& text, size_t max_bytes = 2000);
 
 // True if `text` holds a control character (a newline, an escape): not allowed in names.
