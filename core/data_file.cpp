@@ -134,6 +134,41 @@ void remove_stale_temps(const std::string& path) {
   }
 }
 
+namespace {
+
+// The process that made folder NAME with make_work_folder(PREFIX): PREFIX.PID.XXXXXX (mkdtemp's six
+// letters and digits); 0 for any other name.
+pid_t work_folder_owner(std::string_view name, std::string_view prefix) {
+  if (!name.starts_with(prefix) || name.size() < prefix.size() + 1 || name[prefix.size()] != '.') return 0;
+  name.remove_prefix(prefix.size() + 1);
+  const size_t dot = name.find('.');
+  if (dot == 0 || dot > 9 || dot == std::string_view::npos || name.front() == '0' || name.size() != dot + 7) return 0;
+  for (size_t k = 0; k < name.size(); ++k)
+    if (k < dot ? !std::isdigit(static_cast<unsigned char>(name[k]))
+                : k > dot && !std::isalnum(static_cast<unsigned char>(name[k])))
+      return 0;
+  return static_cast<pid_t>(std::stol(std::string(name.substr(0, dot))));
+}
+
+}  // namespace
+
+std::string make_work_folder(const std::string& prefix) {
+  std::error_code ec;
+  const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
+  const std::filesystem::path root = ec ? std::filesystem::path("/tmp") : tmp;
+  for (std::filesystem::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = work_folder_owner(it->path().filename().string(), prefix);
+    // Only a process known to be gone: a live one (or one of another user's, EPERM) keeps its folder.
+    if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    if (it->is_directory(rm) && !it->is_symlink(rm)) std::filesystem::remove_all(it->path(), rm);
+  }
+  std::string name = (root / fmt::format("{}.{}.XXXXXX", prefix, ::getpid())).string();
+  if (!::mkdtemp(name.data()))
+    throw InputError(fmt::format("{}: cannot make a working folder there: {}", root.string(), std::strerror(errno)));
+  return name;
+}
+
 std::string create_temp_beside(const std::string& path, const std::string& what) {
   remove_stale_temps(path);
   static std::mt19937_64 rng{std::random_device{}() ^ static_cast<uint64_t>(::getpid())};

@@ -42,6 +42,11 @@ std::string create_temp_beside(const std::string& path, const std::string& what)
 // user's or of any other name are kept.
 void remove_stale_temps(const std::string& path);
 
+// A folder of this process's own for scratch files, in the temporary folder ($TMPDIR, else /tmp):
+// "PREFIX.PID.XXXXXX" (mkdtemp). Such folders left by processes that are gone (a command killed
+// before it could remove its own) are removed first. Throws InputError if it cannot make one.
+std::string make_work_folder(const std::string& prefix);
+
 // A regular file to read, checked before it is opened: it exists, is a regular file (not a
 // folder, a FIFO or a device, which could block or never end) and holds at most `max_bytes`.
 // Throws InputError "PATH: cannot read WHAT: WHY".

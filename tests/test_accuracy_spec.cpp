@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -393,6 +395,36 @@ TEST(MatchCli, AnInterruptedMatchMarksEverySearchItCutShort) {
   const std::string out = testing::slurp((dir / "out").string());
   EXPECT_NE(out.find("interrupted before it started"), std::string::npos) << out;
   fs::remove_all(dir);
+}
+
+// A match killed before it removed its working folder leaves it; the next match removes folders of
+// processes that are gone, keeps a live one's, and leaves none of its own.
+TEST(MatchCli, TheNextMatchRemovesTheWorkingFolderOfADeadOne) {
+  const fs::path tmp = fs::temp_directory_path() / ("bb_workdirs." + std::to_string(::getpid()));
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const fs::path gone = tmp / fmt::format("ballbench-match.{}.AbC123", dead);
+  const fs::path live = tmp / fmt::format("ballbench-match.{}.XyZ789", ::getpid());
+  for (const fs::path& d : {gone, live}) {
+    fs::create_directories(d);
+    std::ofstream(d / "window.toml") << "left";
+  }
+  const std::string kept_tmpdir = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+  ::setenv("TMPDIR", tmp.c_str(), 1);  // the command's temporary folder: this test's own
+  const auto r = run_cli("match --scene seed-box --engine home --profile default --max-halvings 0 --store '' --quiet "
+                         "--json " + (tmp / "m.json").string());
+  if (kept_tmpdir.empty()) ::unsetenv("TMPDIR");
+  else ::setenv("TMPDIR", kept_tmpdir.c_str(), 1);
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::set<std::string> left;
+  for (const auto& e : fs::directory_iterator(tmp)) left.insert(e.path().filename().string());
+  // The dead one's gone, the live one's kept, and the match left none of its own.
+  EXPECT_EQ(left, (std::set<std::string>{live.filename().string(), "m.json", "m.csv"}));
+  EXPECT_TRUE(fs::exists(live / "window.toml"));
+  fs::remove_all(tmp);
 }
 
 // The ratio line against a target: met, short by how much, undecided without an external point.

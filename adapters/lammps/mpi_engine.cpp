@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "data_file.h"
 #include "lammps/settings_record.h"
 #include "process/child_process.h"
 
@@ -101,10 +102,7 @@ class MpiEngine final : public Engine {
   // commands from lmp's standard input, which mpirun forwards to rank 0.
   void start() {
     if (s_.workdir.empty()) {
-      const char* tmp = std::getenv("TMPDIR");
-      std::string templ = fmt::format("{}/ballbench-lammps-XXXXXX", tmp && *tmp ? tmp : "/tmp");
-      if (!::mkdtemp(templ.data())) throw std::runtime_error(fmt::format("lammps: cannot make {}: {}", templ, std::strerror(errno)));
-      dir_ = templ, owned_dir_ = true;
+      dir_ = make_work_folder("ballbench-lammps"), owned_dir_ = true;
     } else {
       dir_ = fs::absolute(s_.workdir);
       fs::create_directories(dir_);

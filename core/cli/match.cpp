@@ -455,13 +455,7 @@ void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_k
 // A folder of this match's own for the windows' scene files, removed with everything in it.
 class WorkDir {
  public:
-  WorkDir() {
-    std::string tmpl = (std::filesystem::temp_directory_path() / "ballbench-match-XXXXXX").string();
-    if (!mkdtemp(tmpl.data())) throw InputError(fmt::format("match: cannot create a folder in {}: {}",
-                                                           std::filesystem::temp_directory_path().string(),
-                                                           std::strerror(errno)));
-    path = tmpl;
-  }
+  WorkDir() : path(make_work_folder("ballbench-match")) {}
   ~WorkDir() {
     std::error_code ec;
     std::filesystem::remove_all(path, ec);
