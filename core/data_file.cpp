@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <random>
 #include <string_view>
 
@@ -91,6 +92,33 @@ std::vector<PathUse>& noted_inputs() {
   return uses;
 }
 
+// A process id at the front of `name`, taken off it (decimal, no leading zero: Linux pids are
+// below 2^22); 0, `name` untouched, if none.
+pid_t take_pid(std::string_view& name) {
+  size_t digits = 0;
+  while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
+  if (digits == 0 || digits > 9 || name.front() == '0') return 0;
+  const auto pid = static_cast<pid_t>(std::stol(std::string(name.substr(0, digits))));
+  name.remove_prefix(digits);
+  return pid;
+}
+
+// Removes the entries of `folder` that `owner_of` (name -> pid, 0 for a name not ours) says a
+// process made that is gone: only a process known to be gone (ESRCH); a live one, or another
+// user's (EPERM), keeps its files. `folders`: the entries are folders, removed with what they hold.
+void remove_left_by_dead(const std::filesystem::path& folder, const std::function<pid_t(std::string_view)>& owner_of,
+                         bool folders) {
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = owner_of(it->path().filename().string());
+    if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    if (it->is_symlink(rm)) continue;
+    if (folders && it->is_directory(rm)) std::filesystem::remove_all(it->path(), rm);
+    else if (!folders && it->is_regular_file(rm)) std::filesystem::remove(it->path(), rm);
+  }
+}
+
 // The process that made NAME, if NAME is a temporary file of writing BASE (beside it):
 // BASE[.part].tmp.PID.TOKEN[.header|.tmp], TOKEN eight hex digits, as create_temp_beside names them
 // and the trajectory's writers derive from them (run_engines.cpp, isolated_run.cpp); 0 otherwise.
@@ -103,12 +131,8 @@ pid_t temp_owner(std::string_view name, std::string_view base) {
   if (!take(base)) return 0;
   take(".part");
   if (!take(".tmp.")) return 0;
-  size_t digits = 0;
-  while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
-  if (digits == 0 || digits > 9 || name.front() == '0') return 0;  // Linux pids are below 2^22
-  const auto pid = static_cast<pid_t>(std::stol(std::string(name.substr(0, digits))));
-  name.remove_prefix(digits);
-  if (!take(".") || name.size() < 8) return 0;
+  const pid_t pid = take_pid(name);
+  if (!pid || !take(".") || name.size() < 8) return 0;
   for (size_t k = 0; k < 8; ++k)
     if (!std::isdigit(static_cast<unsigned char>(name[k])) && (name[k] < 'a' || name[k] > 'f')) return 0;
   name.remove_prefix(8);
@@ -123,15 +147,8 @@ void remove_stale_temps(const std::string& path) {
   const std::filesystem::path target(path);
   const std::string base = target.filename().string();
   if (base.empty()) return;
-  std::error_code ec;
-  for (std::filesystem::directory_iterator it(target.has_parent_path() ? target.parent_path() : ".", ec), end;
-       !ec && it != end; it.increment(ec)) {
-    const pid_t owner = temp_owner(it->path().filename().string(), base);
-    // Only a process known to be gone: a live one (or one of another user's, EPERM) keeps its files.
-    if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH) continue;
-    std::error_code rm;
-    if (it->is_regular_file(rm) && !it->is_symlink(rm)) std::filesystem::remove(it->path(), rm);
-  }
+  remove_left_by_dead(target.has_parent_path() ? target.parent_path() : ".",
+                      [&](std::string_view name) { return temp_owner(name, base); }, false);
 }
 
 namespace {
@@ -141,13 +158,11 @@ namespace {
 pid_t work_folder_owner(std::string_view name, std::string_view prefix) {
   if (!name.starts_with(prefix) || name.size() < prefix.size() + 1 || name[prefix.size()] != '.') return 0;
   name.remove_prefix(prefix.size() + 1);
-  const size_t dot = name.find('.');
-  if (dot == 0 || dot > 9 || dot == std::string_view::npos || name.front() == '0' || name.size() != dot + 7) return 0;
-  for (size_t k = 0; k < name.size(); ++k)
-    if (k < dot ? !std::isdigit(static_cast<unsigned char>(name[k]))
-                : k > dot && !std::isalnum(static_cast<unsigned char>(name[k])))
-      return 0;
-  return static_cast<pid_t>(std::stol(std::string(name.substr(0, dot))));
+  const pid_t pid = take_pid(name);
+  if (!pid || name.size() != 7 || name.front() != '.') return 0;
+  for (char c : name.substr(1))
+    if (!std::isalnum(static_cast<unsigned char>(c))) return 0;
+  return pid;
 }
 
 }  // namespace
@@ -156,13 +171,7 @@ std::string make_work_folder(const std::string& prefix) {
   std::error_code ec;
   const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
   const std::filesystem::path root = ec ? std::filesystem::path("/tmp") : tmp;
-  for (std::filesystem::directory_iterator it(root, ec), end; !ec && it != end; it.increment(ec)) {
-    const pid_t owner = work_folder_owner(it->path().filename().string(), prefix);
-    // Only a process known to be gone: a live one (or one of another user's, EPERM) keeps its folder.
-    if (owner <= 0 || owner == ::getpid() || ::kill(owner, 0) == 0 || errno != ESRCH) continue;
-    std::error_code rm;
-    if (it->is_directory(rm) && !it->is_symlink(rm)) std::filesystem::remove_all(it->path(), rm);
-  }
+  remove_left_by_dead(root, [&](std::string_view name) { return work_folder_owner(name, prefix); }, true);
   std::string name = (root / fmt::format("{}.{}.XXXXXX", prefix, ::getpid())).string();
   if (!::mkdtemp(name.data()))
     throw InputError(fmt::format("{}: cannot make a working folder there: {}", root.string(), std::strerror(errno)));

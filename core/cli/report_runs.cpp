@@ -160,18 +160,18 @@ std::vector<std::string> run_bench(const std::string& bin, const std::vector<std
 
 std::string path_of(const ReportRun& run, const ReportPart& part) { return run.results_dir + "/" + part_file(part); }
 
-// What a part's results are made from: this build, the scene's content (a part of one scene) and
-// the engines the report asked of it.
-nlohmann::json made_for(const ReportPart& part, const std::vector<const EngineEntry*>& engines) {
+// What a part's results are made from: this build, the content of its scene (null: a part of no
+// scene) and the engines the report asked of it.
+nlohmann::json made_for(const Scene* scene, const std::vector<const EngineEntry*>& engines) {
   nlohmann::json m = {{"build", build_id()}, {"report_engines", engine_list(engines)}};
-  if (!part.scene.empty()) m["scene_digest"] = scene_digest(load_scene(part.scene));
+  if (scene) m["scene_digest"] = scene_digest(*scene);
   return m;
 }
 
 // The context a part's results file records: the machine and command, and what it is made from.
-nlohmann::json part_context(const ReportPart& part, const std::vector<const EngineEntry*>& engines) {
+nlohmann::json part_context(const Scene* scene, const std::vector<const EngineEntry*>& engines) {
   nlohmann::json c = run_context();
-  c.update(made_for(part, engines));
+  c.update(made_for(scene, engines));
   return c;
 }
 
@@ -185,7 +185,8 @@ bool reusable(const ReportRun& run, const ReportPart& part, Read read, const std
     const auto r = read(path);
     if constexpr (requires { r.interrupted; })
       if (!r.interrupted.empty()) return false;
-    const std::string why = made_elsewhere(r.context, made_for(part, engines));
+    const std::optional<Scene> scene = part.scene.empty() ? std::nullopt : std::optional(load_scene(part.scene));
+    const std::string why = made_elsewhere(r.context, made_for(scene ? &*scene : nullptr, engines));
     if (!why.empty()) progress_line("not reusing {}: {}\n", path, why);
     return why.empty();
   } catch (const InputError&) {
@@ -223,7 +224,7 @@ void run_match_part(const ReportRun& run, const ReportPart& part) {
   o.reference = reference_engine();
   o.converged_reference = converged_reference_engine();
   o.quiet = run.quiet;
-  write_match_files(run_match(scene, run.matched, o, part_context(part, run.matched)), path_of(run, part),
+  write_match_files(run_match(scene, run.matched, o, part_context(&scene, run.matched)), path_of(run, part),
                     fmt::format("{}/match-{}.csv", run.results_dir, part.scene));
 }
 
@@ -233,7 +234,8 @@ void run_sweep_part(const ReportRun& run, const ReportPart& part) {
   o.quiet = run.quiet;
   o.reference = reference_engine();
   o.isolation = run.isolation;
-  write_sweep_files(run_sweep(load_scene(part.scene), run.swept, o, part_context(part, run.swept)), path_of(run, part),
+  const Scene scene = load_scene(part.scene);
+  write_sweep_files(run_sweep(scene, run.swept, o, part_context(&scene, run.swept)), path_of(run, part),
                     fmt::format("{}/sweep-{}.csv", run.results_dir, part.scene));
 }
 
@@ -246,17 +248,17 @@ void run_stress_part(const ReportRun& run, const ReportPart& part) {
   o.reference = reference_engine();
   o.isolation = run.isolation;
   if (scene.container.kind != ContainerKind::Box) std::erase(o.knobs, "count");
-  write_frontier_file(path_of(run, part), run_frontier(scene, run.swept, o, part_context(part, run.swept)));
+  write_frontier_file(path_of(run, part), run_frontier(scene, run.swept, o, part_context(&scene, run.swept)));
 }
 
 void run_calibration_part(const ReportRun& run, const ReportPart& part) {
   CalibrationOptions o;
   o.isolation.timeout_s = run.suite.timeout_s;
-  write_calibration_file(path_of(run, part), run_calibration(run.engines, o, part_context(part, run.engines)));
+  write_calibration_file(path_of(run, part), run_calibration(run.engines, o, part_context(nullptr, run.engines)));
 }
 
 void run_conform_part(const ReportRun& run, const ReportPart& part) {
-  const ConformResult c = run_conform(run.engines, "all", part_context(part, run.engines), false);
+  const ConformResult c = run_conform(run.engines, "all", part_context(nullptr, run.engines), false);
   if (run.store) keep_claim_checks(*run.store, c, run.engines);
   write_conform_file(path_of(run, part), c);
 }
