@@ -48,6 +48,9 @@ class Engine {
   // around its own step calls, summed since the engine was built (s). The harness's own timing of
   // step() adds the pipe; engines in this process have none.
   virtual std::optional<double> own_step_seconds() const { return std::nullopt; }
+  // That time as taken alone: less the time its process waited for a core while other work held
+  // them (adapters/process/core_wait.h). It costs the engine as the CPU time costs the others.
+  virtual std::optional<double> own_step_cpu_seconds() const { return std::nullopt; }
   // How many steps apart the engine's states can be read: 1 for every step; k when it provides a
   // state only every k steps (an engine run in other processes that dumps samples). The runner
   // then steps k times between reads, and the metrics judged per step (tunnelling) see the samples.

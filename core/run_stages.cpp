@@ -94,9 +94,10 @@ void step_reference(RunContext& c, long k, bool read) {
 
 // The engine's step time so far as CPU time: engine_s times the share of the wall time since the
 // harness started that this process spent on a core (for an engine in another process, the step
-// time it measured itself). The CPU clock is read now and then, not
+// time it measured itself less its wait for a core). The CPU clock is read now and then, not
 // around every step: a read is a system call, which would cost more than a small scene's step.
 double engine_cpu_seconds(const RunContext& c) {
+  if (const auto alone = c.engine->own_step_cpu_seconds()) return *alone;
   if (const auto own = c.engine->own_step_seconds()) return *own;
   const double wall = seconds_since(c.harness_start);
   return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;

@@ -4,12 +4,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
+#include <sched.h>
 #include <signal.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -19,6 +22,7 @@
 #include "cli_runner.h"
 #include "input_error.h"
 #include "isolated_run.h"
+#include "process/core_wait.h"
 #include "process/engines_file.h"
 #include "process/process_engine.h"
 #include "process/protocol_client.h"
@@ -82,9 +86,62 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   // The engine's own step time, beside the harness's, which adds the pipe.
   ASSERT_TRUE(r.engine_process_s.has_value());
   EXPECT_GT(*r.engine_process_s, 0);
+  // Its cost: that time less its wait for a core, never more than it.
+  ASSERT_TRUE(r.engine_cpu_s.has_value());
+  EXPECT_GT(*r.engine_cpu_s, 0);
+  EXPECT_LE(*r.engine_cpu_s, *r.engine_process_s);
+  EXPECT_EQ(r.cost_s(), *r.engine_cpu_s);
   // Seed-box's balls move, and the figures come from the states read back.
   EXPECT_GT(r.metrics.value("energy.initial"), 0);
   EXPECT_EQ(r.metrics.count("samples"), 41);
+}
+
+// Runs `body` with this thread, the threads and processes it starts, and a thread that spins, all
+// on one core: whatever runs there shares it with the spinner.
+template <class Body>
+void on_one_busy_core(Body body) {
+  cpu_set_t was, one;
+  ASSERT_EQ(sched_getaffinity(0, sizeof was, &was), 0);
+  CPU_ZERO(&one);
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &was)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  std::atomic<bool> stop{false};
+  std::thread spinner([&] {
+    while (!stop.load(std::memory_order_relaxed)) {
+    }
+  });
+  body();
+  stop = true;
+  spinner.join();
+  sched_setaffinity(0, sizeof was, &was);
+}
+
+// A step that spends 20 ms of CPU on a core another thread keeps busy takes longer by the clock,
+// but is costed at about its 20 ms: its wait for the core is taken out.
+TEST(ProcessEngine, AStepIsCostedWithoutItsWaitForACore) {
+  if (!CoreWait(getpid()).available()) GTEST_SKIP() << "this OS does not say how long a process waited for a core";
+  Result r;
+  on_one_busy_core([&] { r = run_engine(box(), misbehaving("busy-step"), steps(10)); });  // its process started there
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
+  ASSERT_TRUE(r.engine_process_s && r.engine_cpu_s);
+  const double cpu = 10 * 0.02;
+  EXPECT_GT(*r.engine_process_s, 1.3 * cpu) << "the step was not slowed: the test proves nothing";
+  EXPECT_NEAR(*r.engine_cpu_s, cpu, 0.35 * cpu) << "by its own clock " << *r.engine_process_s << " s";
+}
+
+// A step that waits on purpose (a sleep, a helper doing the work) is charged in full: it waited
+// for no core.
+TEST(ProcessEngine, AStepThatSleepsIsChargedInFull) {
+  const EngineEntry e = misbehaving("sleep-step");
+  const Result r = run_engine(box(), e, steps(10));
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
+  ASSERT_TRUE(r.engine_process_s && r.engine_cpu_s);
+  EXPECT_GE(*r.engine_process_s, 10 * 0.02);
+  EXPECT_GT(*r.engine_cpu_s, 0.8 * *r.engine_process_s);
 }
 
 TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
@@ -93,6 +150,25 @@ TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   EXPECT_EQ(a.status, RunStatus::ok) << a.error;
   // A new scene replaces the world: the same run twice gives the same trajectory.
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
+}
+
+// box2d3 reads its states from Box2D's arrays in place once it has found them (box2d3_state.js;
+// on a pile of 500 balls after 40 steps, on the heap once its balls turn), checking every 64th
+// read against Box2D's getters: the same trajectory, bit for bit, as reading through the getters.
+TEST(ProcessEngine, Box2d3ReadsTheSameStatesInPlaceAsThroughItsGetters) {
+  const EngineEntry& e = find_engine("box2d3");
+  if (!e.info.unavailable.empty()) GTEST_SKIP() << "box2d3 is unavailable here: " << e.info.unavailable;
+  for (const char* name : {"pile", "rough-pile"}) {
+    const Scene scene = load_scene(name);
+    RunOptions in_place = steps(300), getters = steps(300);
+    getters.overrides = {{"read_in_place", false}};
+    const Result a = run_engine(scene, e, in_place), b = run_engine(scene, e, getters);
+    ASSERT_EQ(a.status, RunStatus::ok) << name << ": " << a.error;
+    ASSERT_EQ(b.status, RunStatus::ok) << name << ": " << b.error;
+    EXPECT_EQ(a.settings["read_in_place"], true);
+    EXPECT_EQ(b.settings["read_in_place"], false);
+    EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory) << name;
+  }
 }
 
 // A process serves one profile's scene after another's: module-wide settings (matter's resting

@@ -5,6 +5,7 @@
 const fs = require('fs');
 const path = require('path');
 const { serve, applySettings, wallRects, SettingsError, inertiaLabel } = require('./protocol');
+const { Box2d3State } = require('./box2d3_state');
 
 const PACKAGE = 'box2d3-wasm';
 // The Box2D commit the pinned package wraps (box2d3-wasm 5.2.0: Box2D main 3a4f0da8, v3.2's API):
@@ -32,6 +33,7 @@ function profile(name, B) {
     bullets: false,                                      // continuous collision between dynamic bodies
     warm_starting: true,
     allow_sleep: false,                                  // every engine runs awake unless asked
+    read_in_place: true,                                 // states read from Box2D's arrays (box2d3_state.js), not its getters
   };
   def.delete();
   if (name === 'stock') return stock;
@@ -127,31 +129,34 @@ async function load(scene, profileName, overrides) {
     md.delete();
     bodies.push(body);
   }
-  // Box2D's rotation is a (cos, sin) pair, its angle in (-pi, pi]; the state's accumulates from 0,
-  // so each read unwraps it against the last (exact while a ball turns less than half a turn
-  // between reads).
+  // Box2D's rotation is a (cos, sin) pair, its angle atan2(sin, cos) in (-pi, pi]; the state's
+  // accumulates from 0, so each read unwraps it against the last (exact while a ball turns less
+  // than half a turn between reads).
   const angles = new Float64Array(b.n);
+  if (s.read_in_place && s.allow_sleep)
+    throw new SettingsError('settings.box2d3.read_in_place: needs allow_sleep = false (a body that sleeps leaves the arrays it is read from)');
+  const state = new Box2d3State(B, bodies, !!scene.rotation, s.read_in_place);
   const substepRate = s.substeps / scene.dt;
   return {
     n: b.n,
     t: 0,
-    step(dt) { B.b2World_Step(world, dt, s.substeps); },
-    // No bulk read: one call per body and quantity, each returning an object freed at once.
+    step(dt) {
+      B.b2World_Step(world, dt, s.substeps);
+      state.stepped();
+    },
     read(x, y, vx, vy, w, angle) {
-      for (let i = 0; i < bodies.length; ++i) {
-        const p = B.b2Body_GetPosition(bodies[i]), v = B.b2Body_GetLinearVelocity(bodies[i]);
-        x[i] = p.x, y[i] = p.y, vx[i] = v.x, vy[i] = v.y;
-        p.delete(), v.delete();
-      }
-      if (w)
+      state.read();
+      const { position: p, velocity: v } = state.values;
+      for (let i = 0; i < bodies.length; ++i) x[i] = p[2 * i], y[i] = p[2 * i + 1], vx[i] = v[2 * i], vy[i] = v[2 * i + 1];
+      if (w) {
+        const { spin, rotation: q } = state.values;
         for (let i = 0; i < bodies.length; ++i) {
-          w[i] = B.b2Body_GetAngularVelocity(bodies[i]);
-          const q = B.b2Body_GetRotation(bodies[i]);
-          const turn = B.b2Rot_GetAngle(q) - angles[i];
-          q.delete();
+          w[i] = spin[i];
+          const turn = Math.atan2(q[2 * i + 1], q[2 * i]) - angles[i];
           angles[i] += turn - 2 * Math.PI * Math.round(turn / (2 * Math.PI));
           angle[i] = angles[i];
         }
+      }
     },
     settings: Object.assign({}, s, {
       derived: {
@@ -187,7 +192,8 @@ serve({
       },
       profiles: ['tuned', 'stock'],
       settings_keys: ['substeps', 'contact_hertz', 'contact_damping_ratio', 'contact_push_speed',
-        'restitution_threshold', 'maximum_linear_speed', 'continuous', 'bullets', 'warm_starting', 'allow_sleep'],
+        'restitution_threshold', 'maximum_linear_speed', 'continuous', 'bullets', 'warm_starting', 'allow_sleep',
+        'read_in_place'],
       speed_cap: { setting: 'maximum_linear_speed', what: 'b2WorldDef.maximumLinearSpeed' },
       sweep_knobs: [
         { key: 'substeps', values: [1, 2, 4, 8, 16] },

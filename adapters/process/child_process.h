@@ -49,6 +49,7 @@ class ChildProcess {
   bool usable() const;
   // "`node adapters/node/rapier.js`": how errors name it.
   const std::string& label() const { return label_; }
+  pid_t pid() const { return pid_; }
   // The end of what the child wrote on stderr so far, trimmed, with line breaks as " | ".
   std::string stderr_tail();
   // An error naming the child, `what` happened, and how it ended (exit status or signal) if it

@@ -50,7 +50,8 @@ class ProcessEngine final : public Engine {
 
   void step(double dt) override {
     try {
-      own_s_ += client_->step(dt, state_);
+      const ProtocolClient::StepTime t = client_->step(dt, state_);
+      own_s_ += t.own_s, alone_s_ += t.alone_s;
       have_state_ = true;
     } catch (...) {
       broken_ = true;  // the process is in an unknown state: never reused
@@ -77,11 +78,15 @@ class ProcessEngine final : public Engine {
     s["process"] = {{"command", pool_->spec.command},
                     {"cwd", pool_->spec.cwd},
                     {"protocol", client_->protocol()},
-                    {"reply_timeout_s", pool_->spec.timeout_s}};
+                    {"reply_timeout_s", pool_->spec.timeout_s},
+                    {"cost_clock", client_->measures_wait()
+                                       ? "its own step time less its wait for a core (/proc/PID/schedstat)"
+                                       : "its own step time (this OS does not say how long it waited for a core)"}};
     return s;
   }
 
   std::optional<double> own_step_seconds() const override { return own_s_; }
+  std::optional<double> own_step_cpu_seconds() const override { return alone_s_; }
 
  private:
   std::shared_ptr<ProcessPool> pool_;
@@ -89,7 +94,7 @@ class ProcessEngine final : public Engine {
   nlohmann::json settings_;
   mutable State state_;  // the state after the last step: each step's reply carries it
   mutable bool have_state_ = false, broken_ = false;
-  double own_s_ = 0;
+  double own_s_ = 0, alone_s_ = 0;
 };
 
 std::string display_name(const ProcessEngineSpec& spec) {

@@ -121,7 +121,7 @@ Capabilities default_capabilities(int protocol) {
 }
 
 ProtocolClient::ProtocolClient(const std::vector<std::string>& argv, const std::string& cwd, double timeout_s)
-    : child_(argv, cwd), timeout_s_(timeout_s) {}
+    : child_(argv, cwd), wait_(child_.pid()), timeout_s_(timeout_s) {}
 
 void ProtocolClient::send_hello() {
   const nlohmann::json hello = {{"op", "hello"}, {"protocol", kProtocolVersion}};
@@ -229,7 +229,7 @@ nlohmann::json ProtocolClient::load_scene(const Scene& scene, const std::string&
   return j.contains("settings") ? j["settings"] : nlohmann::json::object();
 }
 
-double ProtocolClient::step(double dt, State& out) {
+ProtocolClient::StepTime ProtocolClient::step(double dt, State& out) {
   const auto sent = ChildProcess::Clock::now();
   const nlohmann::json j = request({{"op", "step"}, {"dt", dt}, {"read", true}}, "step");
   const double round_trip = std::chrono::duration<double>(ChildProcess::Clock::now() - sent).count();
@@ -248,7 +248,10 @@ double ProtocolClient::step(double dt, State& out) {
                                      own, steps_, own > 0 ? "longer than" : "not above 0 and so not within", round_trip,
                                      kStepClockTolerance));
   read_state(j, out, "step");
-  return own;
+  // The process waits for a core only while it has work: between two replies that is this round
+  // trip, so the wait's share of it is the share of the step that other work took.
+  const double waited = round_trip > 0 ? std::clamp(wait_since_s_ / round_trip, 0.0, 1.0) : 0.0;
+  return {own, own * (1 - waited)};
 }
 
 // The state's time is the steps' dts summed, to a relative 1e-9 and the round-off of summing them
@@ -280,6 +283,7 @@ nlohmann::json ProtocolClient::reply(const char* op, bool stop_on_interrupt) {
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
   const std::string line = child_.read_line(deadline, kMaxReplyLine, stop_on_interrupt);
+  if (const auto w = wait_.waited_s()) wait_since_s_ = *w - waited_s_, waited_s_ = *w;
   const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("ok") || !j["ok"].is_boolean())
     throw child_.failure(fmt::format("sent garbage in reply to '{}': '{}' is not a JSON object with \"ok\"", op, excerpt(line)));

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "child_process.h"
+#include "core_wait.h"
 #include "engine.h"
 #include "scene.h"
 #include "state.h"
@@ -43,12 +44,19 @@ class ProtocolClient {
   // A new world from `scene`, replacing any world before; returns the effective settings the
   // engine reports. A reply with kind "settings" is the user's error: InputError.
   nlohmann::json load_scene(const Scene& scene, const std::string& profile, const nlohmann::json& settings);
-  // One step of dt; `out` gets the state after it (scene order). Returns the engine's own step time (s).
-  double step(double dt, State& out);
+  // A step's time: the engine's own clock around its step call (s), and that time less the
+  // share of the round trip its process waited for a core (CoreWait): the step as taken alone.
+  struct StepTime {
+    double own_s = 0, alone_s = 0;
+  };
+  // One step of dt; `out` gets the state after it (scene order).
+  StepTime step(double dt, State& out);
   void read(State& out);
 
   bool usable() const { return child_.usable(); }
   int protocol() const { return protocol_; }
+  // False where the OS does not say how long the process waited for a core: alone_s is own_s.
+  bool measures_wait() const { return wait_.available(); }
   const std::string& label() const { return child_.label(); }
 
  private:
@@ -59,6 +67,9 @@ class ProtocolClient {
   void check_time(double t, const char* op);
 
   ChildProcess child_;
+  CoreWait wait_;
+  double waited_s_ = 0;       // wait_'s reading at the last reply
+  double wait_since_s_ = 0;   // how much of it came since the reply before
   double timeout_s_;
   int protocol_ = kProtocolVersion;
   bool float_precision_ = false;  // the handshake says the engine computes in float

@@ -358,9 +358,8 @@ class Search {
     t.settings = res.settings;
     const SpecVerdict v = judge(o_.spec, res);
     t.met = v.met, t.why_not = v.why_not, t.figures = v.figures;
-    // Judged against each other while searching (possibly beside other searches): the engine's CPU
-    // time, or an engine in another process its own step time.
-    t.cost_ns = cost_per_scene_step(res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s)), scene_);
+    // Judged against each other while searching (possibly beside other searches): the engine's CPU time.
+    t.cost_ns = cost_per_scene_step(res.cost_s(), scene_);
     if (res.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(res.engine_s, scene_);
     t.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
     t.done = res.steps > 0 ? double(res.steps_done) / double(res.steps) : 1.0;
@@ -434,7 +433,7 @@ void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_k
       if (t.status != RunStatus::ok || t.steps_done < 1) break;
       // CPU time, as while searching: another job on the cores barely changes it (an engine on several
       // threads is charged for each).
-      oc.cost_repeats.push_back(whole(t.engine_process_s.value_or(t.engine_cpu_s.value_or(t.engine_s))));
+      oc.cost_repeats.push_back(whole(t.cost_s()));
       if (t.engine_process_s) pipe.push_back(whole(t.engine_s));
     }
   }

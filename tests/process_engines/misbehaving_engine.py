@@ -9,7 +9,9 @@ own, out of the engine's process group), "helper-exit" (the engine exits at step
 helper holds its stdout), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
 "unsupported" (refuses every scene as unsupported), "speed-cap-bad" (a speed cap below zero), "minimal" and "minimal-1" (a handshake of the
-required fields only, in protocol version 2 or 1). Test-only: never in an engines file."""
+required fields only, in protocol version 2 or 1). And two that behave but take time: "busy-step"
+(every step spends 20 ms of CPU) and "sleep-step" (every step sleeps 20 ms), each reporting its
+step's true time. Test-only: never in an engines file."""
 import array
 import json
 import struct
@@ -66,8 +68,16 @@ for line in sys.stdin.buffer:
         rotation = msg["scene"].get("rotation", False)
         send({"ok": True, "settings": {"level": msg["settings"].get("level", 0), "mode": mode}})
     else:
+        step_s = 1e-7  # 100 ns, inside any round trip
         if msg["op"] == "step":
             steps += 1
+            if mode in ("busy-step", "sleep-step"):
+                start, cpu = time.perf_counter(), time.process_time()
+                if mode == "sleep-step":
+                    time.sleep(0.02)
+                while mode == "busy-step" and time.process_time() - cpu < 0.02:
+                    pass
+                step_s = time.perf_counter() - start
             t += msg["dt"]
             if mode.startswith("float-t"):  # the time kept in float32, as a float engine keeps it
                 t = struct.unpack("f", struct.pack("f", t))[0]
@@ -118,8 +128,8 @@ for line in sys.stdin.buffer:
             block.extend([0.0] * n)
         reply = {"ok": True, "state": {"n": n, "t": t, "fields": fields}}
         if msg["op"] == "step":
-            # 100 ns, inside any round trip; at step 3 a step time longer than it, or none at all.
-            reply["step_s"] = 1e-7
+            # At step 3 a step time longer than the round trip, or none at all.
+            reply["step_s"] = step_s
             if steps == 3 and mode in ("huge-step-s", "long-step-s", "zero-step-s"):
                 reply["step_s"] = {"huge-step-s": 1e308, "long-step-s": 1e5, "zero-step-s": 0.0}[mode]
         if mode == "twice" and steps == 3:  # the step answered twice, in one write
