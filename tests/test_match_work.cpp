@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -186,6 +187,35 @@ TEST(MatchWork, TheCeilingStopsTriesPastAMultipleOfOurCost) {
 
   // A ceiling is a multiple of our solver's cost: without it, one line.
   EXPECT_THROW(cli::run_match(scene, {&find_engine("box2d")}, o, {}), InputError);
+}
+
+// The command's ceiling: 100 by default where our solver's default profile is searched, none where
+// it is not (nothing to be a multiple of), `none` asked for by name, and 0 refused.
+TEST(MatchWork, TheCommandHasACeilingByDefaultWhereOurSolverIsSearched) {
+  const auto dir = std::filesystem::temp_directory_path() / "ballbench-default-ceiling";
+  std::filesystem::create_directories(dir);
+  const std::string scene = (dir / "small.toml").string();
+  std::ofstream(scene) << kSmallPile;
+  const auto ceiling = [&](const std::string& args) -> std::optional<double> {
+    const std::string json = (dir / "m.json").string();
+    std::filesystem::remove(json);
+    const auto r = testing::run_cli("match --quiet --scene " + scene + " --max-halvings 0 --no-knobs --repeats 0 " +
+                                    "--store '' --json " + json + " " + args);
+    if (r.status != 0) {
+      ADD_FAILURE() << args << ": " << r.err;
+      return std::nullopt;
+    }
+    std::ifstream in(json);
+    return nlohmann::json::parse(in).at("ceiling").get<double>();
+  };
+  EXPECT_EQ(ceiling("--engine home --profile default"), cli::MatchOptions::kDefaultCeiling);
+  EXPECT_EQ(ceiling("--engine box2d --profile stock"), 0);
+  EXPECT_EQ(ceiling("--engine home --profile soft"), 0);  // our default profile is not searched
+  EXPECT_EQ(ceiling("--engine home --profile default --ceiling none"), 0);
+  EXPECT_EQ(ceiling("--engine home --profile default --ceiling 7"), 7);
+  const auto zero = testing::run_cli("match --quiet --scene " + scene + " --engine home --ceiling 0");
+  EXPECT_EQ(zero.status, 2);
+  EXPECT_NE(zero.err.find("--ceiling: must be > 0, got '0'"), std::string::npos) << zero.err;
 }
 
 // The results store: a search run again reads every try and timing it kept and finds the same; a

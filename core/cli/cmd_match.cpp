@@ -16,6 +16,7 @@
 #include "process/process_engine.h"
 #include "progress.h"
 #include "registry.h"
+#include "run_engines.h"
 #include "scene_loader.h"
 #include "spec_option.h"
 #include "sweep_result.h"
@@ -32,9 +33,21 @@ struct MatchArgs {
   std::vector<std::string> spec;
   bool no_knobs = false, fresh = false;
   std::string store = TryStore::default_dir();
-  std::optional<double> target;
+  std::optional<double> target, ceiling;
   MatchOptions options;
 };
+
+// The ceiling a match has when none is asked for: MatchOptions::kDefaultCeiling where our solver's
+// default profile is searched (the ceiling is a multiple of its cost), else none.
+double default_ceiling(const std::vector<const EngineEntry*>& engines, const std::string& profile) {
+  for (const EngineEntry* e : engines)
+    if (e->info.role == EngineRole::ours) {
+      const auto searched = profiles_for(*e, profile);
+      if (std::find(searched.begin(), searched.end(), e->info.profiles.front()) != searched.end())
+        return MatchOptions::kDefaultCeiling;
+    }
+  return 0;
+}
 
 void match(MatchArgs& a) {
   install_interrupt_handlers();  // first: a stop request during the handshakes too
@@ -49,6 +62,7 @@ void match(MatchArgs& a) {
   a.options.knobs = !a.no_knobs;
   a.options.reference = reference_engine();
   a.options.converged_reference = converged_reference_engine();
+  a.options.ceiling = a.ceiling.value_or(default_ceiling(engines, a.options.profile));
   if (!a.shard.empty()) a.options.shard = parse_shard(a.shard);
   if (a.json.empty()) a.json = shard_file_name("match-" + scene.name, a.options.shard);
   if (a.csv.empty()) a.csv = sweep_csv_path(a.json);
@@ -84,11 +98,13 @@ void add_match(CLI::App& app) {
                   "ball steps each; a try at dt/2^k costs 2^k, one stopped early its share): the same tries on any "
                   "machine, loaded or not (default 400)")
       ->check(kPositiveNumber);
-  cmd->add_option("--ceiling", a->options.ceiling,
-                  "stop every try once its CPU time passes this many times our solver's: home's default profile is "
-                  "searched first, and an engine that costs more is reported as over the ceiling instead of searched "
-                  "to its end (default: none)")
-      ->check(kPositiveNumber);
+  cmd->add_option("--ceiling", a->ceiling,
+                  fmt::format("stop every try once its CPU time passes this many times our solver's: home's default "
+                              "profile is searched first, and an engine that costs more is reported as over the "
+                              "ceiling instead of searched to its end (default {:g} when home is among --engine; none: "
+                              "every search to its end)",
+                              MatchOptions::kDefaultCeiling))
+      ->transform(kPositiveNumberOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
                   "at its middle; the median is reported (default 3; 0: its own run's time)")

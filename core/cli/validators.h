@@ -24,6 +24,17 @@ inline const CLI::Validator kPositiveNumber(
     },
     "POSITIVE", "positive number");
 
+// A finite number > 0, or "none", which it turns into 0 (no limit).
+inline const CLI::Validator kPositiveNumberOrNone(
+    [](std::string& text) -> std::string {
+      if (text == "none") {
+        text = "0";
+        return {};
+      }
+      return kPositiveNumber(text);
+    },
+    "POSITIVE|none", "positive number or none");
+
 // A whole number from `least` to `most` (CLI11's Range says "not in range" of 1.5 or 0x10).
 inline CLI::Validator whole_in_range(long long least, long long most) {
   return CLI::Validator(
