@@ -164,11 +164,14 @@ bool advance(RunContext& c, long k) {
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
   window(c, k);
-  if (const auto& limit = c.options.cost_limit; limit && k % kCostCheckSteps == 0)
+  if (const auto& limit = c.options.cost_limit;
+      limit && (k % kCostCheckSteps == 0 || c.engine_s - c.cost_checked_s > kCostCheckSeconds)) {
+    c.cost_checked_s = c.engine_s;
     if (const double spent = engine_cpu_seconds(c); spent > limit->seconds)
       return stop(c, RunStatus::over_cost, k,
                   fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit->seconds, k,
                               c.state.t, limit->what));
+  }
   if (k % c.every == 0 || k == r.steps) {
     sample(c, k);
     if (const auto why = c.metrics->stop_after_sample())

@@ -70,6 +70,7 @@ struct RunContext {
   // read_initial and step_loop: the last good state, the scratch the next one is read into, and
   // the checksums of the states the metrics saw.
   State state, next;
+  double cost_checked_s = 0;  // engine_s when the cost limit was last checked
   uint64_t final_sum = 0, trajectory_sum = 0;
   long sampled = 0;  // the last step the sampled metrics saw
 

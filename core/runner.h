@@ -25,8 +25,10 @@ inline constexpr const char* kStrideNote = "tunnelling judged on samples";
 inline constexpr int kConvergedSubsteps = 64;
 
 // How often a run with RunOptions::cost_limit reads the CPU clock (a system call): every this many
-// steps.
+// steps, and after any step that brings this much engine time (s) since the last read, so a slow
+// step (a dense solver on thousands of balls: minutes for 64 of them) is stopped after itself.
 inline constexpr long kCostCheckSteps = 64;
+inline constexpr double kCostCheckSeconds = 0.05;
 
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
@@ -58,7 +60,7 @@ struct RunOptions {
     std::string checkpoint;
   } window;
   // Stop the run (RunStatus::over_cost) once the engine's CPU time (Result::engine_cpu_s, read
-  // every kCostCheckSteps steps) passes `seconds`; none: no limit. A search sets it to the whole-run
+  // every kCostCheckSteps steps or kCostCheckSeconds) passes `seconds`; none: no limit. A search sets it to the whole-run
   // time of the cheapest configuration it has found, which a costlier one cannot beat, or to its
   // ceiling; `what` names that cost in the run's message.
   struct CostLimit {
