@@ -18,6 +18,8 @@
 #include <set>
 #include <thread>
 
+#include <time.h>
+
 #include <fmt/format.h>
 
 #include "engine_group.h"
@@ -41,6 +43,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 // Seconds an interrupted child has to finish its step and send its result before it is killed.
 constexpr int kInterruptGrace = 10;
+
+// A run under a cost limit checks it at step boundaries; a step that never ends (a dense solver on
+// thousands of balls: over 10 min for one) is killed by the parent once the child's CPU time passes
+// the limit by this factor and this margin (its set-up and the harness's work count too), read
+// this often. CPU time, not the clock: another job on the cores does not bring the kill nearer.
+constexpr double kStuckCostFactor = 2, kStuckCostMargin_s = 5;
+constexpr int kCpuCheckMs = 250;
 
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
@@ -105,6 +114,7 @@ void send(int fd, const std::string& text) {
 // What the parent saw of the child.
 struct ChildOutcome {
   bool timed_out = false;
+  std::optional<double> over_cost_cpu_s;  // killed inside a step: the child's CPU time then (s)
   bool interrupted = false;  // this process was asked to stop while the child ran
   bool reaped = false;
   int wait_status = 0;
@@ -115,14 +125,19 @@ struct ChildOutcome {
 
 class ChildWatcher {
  public:
-  ChildWatcher(pid_t pid, int fd, double timeout_s, const std::function<void(long, long)>& progress)
+  // `cpu_limit_s`: the child's CPU time past which it is killed as over cost (none: no limit).
+  ChildWatcher(pid_t pid, int fd, double timeout_s, const std::function<void(long, long)>& progress,
+               std::optional<double> cpu_limit_s)
       : pid_(pid), fd_(fd), progress_(progress),
         deadline_(Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                     std::chrono::duration<double>(std::min(timeout_s, 1e8)))) {}
+                                     std::chrono::duration<double>(std::min(timeout_s, 1e8)))),
+        cpu_limit_s_(cpu_limit_s) {
+    if (cpu_limit_s_ && ::clock_getcpuclockid(pid_, &cpu_clock_) != 0) cpu_limit_s_.reset();
+  }
 
   ChildOutcome watch() {
     read_until_eof();
-    if (!out_.timed_out) reap_before_deadline();
+    if (!out_.timed_out && !out_.over_cost_cpu_s) reap_before_deadline();
     if (!out_.reaped) {
       ::kill(pid_, SIGKILL);
       while (::waitpid(pid_, &out_.wait_status, 0) < 0 && errno == EINTR) {
@@ -138,7 +153,18 @@ class ChildWatcher {
  private:
   int ms_left() const {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count() + 1;
-    return static_cast<int>(std::clamp<long long>(left, 0, 60'000));  // poll again at least every minute
+    // Poll again at least every minute, or as often as the CPU time is read.
+    return static_cast<int>(std::clamp<long long>(left, 0, cpu_limit_s_ ? kCpuCheckMs : 60'000));
+  }
+
+  // The child's CPU time is past its limit: it is stuck in a step that costs more than the run may.
+  bool past_cpu_limit() {
+    timespec t{};
+    if (!cpu_limit_s_ || ::clock_gettime(cpu_clock_, &t) != 0) return false;
+    const double cpu = double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    if (cpu <= *cpu_limit_s_) return false;
+    out_.over_cost_cpu_s = cpu;
+    return true;
   }
   bool past_deadline() const { return Clock::now() >= deadline_; }
 
@@ -163,6 +189,7 @@ class ChildWatcher {
         out_.timed_out = true;
         return;
       }
+      if (past_cpu_limit()) return;  // killed in watch(), as after a deadline
       pollfd p{fd_, POLLIN, 0};
       const int ready = ::poll(&p, 1, ms_left());
       if (ready < 0 && errno != EINTR) return;  // cannot watch the pipe: fall back to waiting
@@ -227,13 +254,16 @@ class ChildWatcher {
   std::string inbox_;
   ChildOutcome out_;
   std::set<int> engine_groups_;  // the child's engine process groups still live
+  std::optional<double> cpu_limit_s_;
+  clockid_t cpu_clock_{};
 };
 
 // How long after its time limit a child is killed: it stops itself at the first step boundary past
 // the limit, so only one stuck inside a step (or an engine's reply) is still running then.
 double stuck_grace_s(double timeout_s) { return std::max(2.0, 0.1 * timeout_s); }
 
-Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
+Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s,
+                         const std::optional<RunOptions::CostLimit>& cost_limit) {
   // The steps it reported done, whose figures went with the process (the result's steps_done is
   // what was measured: 0).
   const std::string after =
@@ -243,6 +273,14 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s) {
   if (c.interrupted && !(c.kind == "result" && WIFEXITED(c.wait_status) && WEXITSTATUS(c.wait_status) == 0)) {
     r.status = RunStatus::interrupted;
     r.error = fmt::format("interrupted by {}{}; the engine's process sent no result", interrupt_name(), after);
+    return r;
+  }
+  if (c.over_cost_cpu_s) {
+    r.status = RunStatus::over_cost;
+    r.error = fmt::format("its process's CPU time passed {:.3g} s inside a step{}, over {:g} times its cost limit and {:g} "
+                          "s more ({}): killed",
+                          *c.over_cost_cpu_s, after, kStuckCostFactor, kStuckCostMargin_s,
+                          cost_limit ? cost_limit->what : std::string("none"));
     return r;
   }
   if (c.timed_out) {
@@ -327,11 +365,14 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     child_main(fds[1], scene, entry, options, isolation);
   }
   ::close(fds[1]);
-  const ChildOutcome outcome =
-      ChildWatcher(pid, fds[0], isolation.timeout_s + stuck_grace_s(isolation.timeout_s), options.progress).watch();
+  std::optional<double> cpu_limit_s;
+  if (options.cost_limit) cpu_limit_s = kStuckCostFactor * options.cost_limit->seconds + kStuckCostMargin_s;
+  const ChildOutcome outcome = ChildWatcher(pid, fds[0], isolation.timeout_s + stuck_grace_s(isolation.timeout_s),
+                                            options.progress, cpu_limit_s)
+                                   .watch();
   ::close(fds[0]);
   if (isolation.trajectory_error) *isolation.trajectory_error = outcome.trajectory_error;
-  return outcome_to_result(outcome, std::move(r), isolation.timeout_s);
+  return outcome_to_result(outcome, std::move(r), isolation.timeout_s, options.cost_limit);
 }
 
 }  // namespace ballbench

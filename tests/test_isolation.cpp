@@ -29,7 +29,7 @@
 namespace ballbench {
 namespace {
 
-enum class Misbehaviour { None, Segfault, Abort, Hang, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin, Slow };
+enum class Misbehaviour { None, Segfault, Abort, Hang, Spin, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin, Slow };
 
 // Balls in free flight, mirrored at the walls (no ball-ball collisions), misbehaving at step `at`.
 class TestEngine : public Engine {
@@ -65,6 +65,9 @@ class TestEngine : public Engine {
       case Misbehaviour::Abort: std::abort();
       case Misbehaviour::Hang:
         for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
+      case Misbehaviour::Spin:  // a step that computes for ever
+        for (volatile unsigned long i = 0;; i = i + 1) {
+        }
       case Misbehaviour::Throw: throw std::runtime_error("the test engine gave up");
       case Misbehaviour::Exit3: std::_Exit(3);
       case Misbehaviour::NonFinite: state_.pos(0, 0) = std::numeric_limits<double>::quiet_NaN(); break;
@@ -131,6 +134,19 @@ TEST(Isolation, AHangTimesOutAtTheLimit) {
   const Result r = isolated(test_engine("hang", Misbehaviour::Hang), 1.0);
   EXPECT_EQ(r.status, RunStatus::timed_out);
   EXPECT_NE(r.error.find("time limit of 1 s"), std::string::npos) << r.error;
+}
+
+// A step that computes for ever under a cost limit is killed once the child's CPU time passes
+// twice the limit and 5 s, long before the time limit: over cost, inside a step, after the steps it
+// made.
+TEST(Isolation, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
+  RunOptions o = steps(50);
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration"};
+  const Result r = run_engine_isolated(box(), test_engine("spin", Misbehaviour::Spin), o, {600, ""});
+  EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
+  EXPECT_NE(r.error.find("CPU time passed"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("inside a step after step 4 of 50"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("the cost of a cheaper configuration"), std::string::npos) << r.error;
 }
 
 // A slow engine that still returns from its steps stops at the first step boundary past its time
