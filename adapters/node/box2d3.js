@@ -133,9 +133,9 @@ async function load(scene, profileName, overrides) {
   // accumulates from 0, so each read unwraps it against the last (exact while a ball turns less
   // than half a turn between reads).
   const angles = new Float64Array(b.n);
-  if (s.read_in_place && s.allow_sleep)
-    throw new SettingsError('settings.box2d3.read_in_place: needs allow_sleep = false (a body that sleeps leaves the arrays it is read from)');
-  const state = new Box2d3State(B, bodies, !!scene.rotation, s.read_in_place);
+  // A body that sleeps leaves the arrays the states are read from in place: then the getters only.
+  const inPlace = s.read_in_place && !s.allow_sleep;
+  const state = new Box2d3State(B, bodies, !!scene.rotation, inPlace);
   const substepRate = s.substeps / scene.dt;
   return {
     n: b.n,
@@ -170,6 +170,8 @@ async function load(scene, profileName, overrides) {
         restitution_per_shape: e,
         friction_per_shape: mu,
         moment_of_inertia: inertiaLabel(scene),
+        state_reads: inPlace ? 'in place from Box2D\'s arrays once found, every 64th read checked against its getters'
+          : 'through Box2D\'s getters',
       },
     }),
   };

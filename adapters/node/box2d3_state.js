@@ -10,7 +10,8 @@
 // Nothing is taken on trust: until every quantity is found, and confirmed one step later, it reads
 // through the getters; once found, every CHECK_EVERY-th read goes through the getters too and must
 // agree value for value, or the run ends with an error (never a state read from the wrong place).
-// `inPlace` false reads through the getters always (the box2d3 setting `read_in_place`).
+// `inPlace` false reads through the getters always (the box2d3 setting `read_in_place`, or
+// `allow_sleep`: a body that sleeps leaves the arrays).
 
 const CHECK_EVERY = 64;
 // Finding the arrays scans the heap, about 12 ns per float32 and quantity (50 ms per 16 MB); it is
