@@ -45,9 +45,10 @@ using Clock = std::chrono::steady_clock;
 constexpr int kInterruptGrace = 10;
 
 // A run under a cost limit checks it at step boundaries; a step that never ends (a dense solver on
-// thousands of balls: over 10 min for one) is killed by the parent once the child's CPU time passes
-// the limit by this factor and this margin (its set-up and the harness's work count too), read
-// this often. CPU time, not the clock: another job on the cores does not bring the kill nearer.
+// thousands of balls: over 10 min for one) is killed by the parent once the child's CPU time since
+// its last progress report (every 1% of the steps) passes the limit times this factor and this
+// margin (the harness's work between reports counts too), read this often. CPU time, not the clock:
+// another job on the cores does not bring the kill nearer.
 constexpr double kStuckCostFactor = 2, kStuckCostMargin_s = 5;
 constexpr int kCpuCheckMs = 250;
 
@@ -114,7 +115,7 @@ void send(int fd, const std::string& text) {
 // What the parent saw of the child.
 struct ChildOutcome {
   bool timed_out = false;
-  std::optional<double> over_cost_cpu_s;  // killed inside a step: the child's CPU time then (s)
+  std::optional<double> over_cost_cpu_s;  // killed inside a step: its CPU time since the last report (s)
   bool interrupted = false;  // this process was asked to stop while the child ran
   bool reaped = false;
   int wait_status = 0;
@@ -125,7 +126,8 @@ struct ChildOutcome {
 
 class ChildWatcher {
  public:
-  // `cpu_limit_s`: the child's CPU time past which it is killed as over cost (none: no limit).
+  // `cpu_limit_s`: the child's CPU time between progress reports past which it is killed as over
+  // cost (none: no limit).
   ChildWatcher(pid_t pid, int fd, double timeout_s, const std::function<void(long, long)>& progress,
                std::optional<double> cpu_limit_s)
       : pid_(pid), fd_(fd), progress_(progress),
@@ -133,6 +135,7 @@ class ChildWatcher {
                                      std::chrono::duration<double>(std::min(timeout_s, 1e8)))),
         cpu_limit_s_(cpu_limit_s) {
     if (cpu_limit_s_ && ::clock_getcpuclockid(pid_, &cpu_clock_) != 0) cpu_limit_s_.reset();
+    cpu_at_report_s_ = child_cpu_s();
   }
 
   ChildOutcome watch() {
@@ -157,13 +160,20 @@ class ChildWatcher {
     return static_cast<int>(std::clamp<long long>(left, 0, cpu_limit_s_ ? kCpuCheckMs : 60'000));
   }
 
-  // The child's CPU time is past its limit: it is stuck in a step that costs more than the run may.
-  bool past_cpu_limit() {
+  // The child's CPU time (s), 0 where it cannot be read.
+  double child_cpu_s() const {
     timespec t{};
-    if (!cpu_limit_s_ || ::clock_gettime(cpu_clock_, &t) != 0) return false;
-    const double cpu = double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-    if (cpu <= *cpu_limit_s_) return false;
-    out_.over_cost_cpu_s = cpu;
+    if (!cpu_limit_s_ || ::clock_gettime(cpu_clock_, &t) != 0) return 0;
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+  }
+
+  // The child's CPU time since its last report is past its limit: it is stuck in a step that costs
+  // more than the whole run may.
+  bool past_cpu_limit() {
+    if (!cpu_limit_s_) return false;
+    const double spent = child_cpu_s() - cpu_at_report_s_;
+    if (spent <= *cpu_limit_s_) return false;
+    out_.over_cost_cpu_s = spent;
     return true;
   }
   bool past_deadline() const { return Clock::now() >= deadline_; }
@@ -220,6 +230,7 @@ class ChildWatcher {
         long done = 0, total = 0;
         if (std::sscanf(body.c_str(), "%ld %ld", &done, &total) == 2) {
           out_.last_done = done;
+          cpu_at_report_s_ = child_cpu_s();
           if (progress_) progress_(done, total);
         }
       } else {
@@ -256,6 +267,7 @@ class ChildWatcher {
   std::set<int> engine_groups_;  // the child's engine process groups still live
   std::optional<double> cpu_limit_s_;
   clockid_t cpu_clock_{};
+  double cpu_at_report_s_ = 0;  // the child's CPU time at its last progress report (or its start)
 };
 
 // How long after its time limit a child is killed: it stops itself at the first step boundary past
@@ -277,7 +289,7 @@ Result outcome_to_result(const ChildOutcome& c, Result r, double timeout_s,
   }
   if (c.over_cost_cpu_s) {
     r.status = RunStatus::over_cost;
-    r.error = fmt::format("its process's CPU time passed {:.3g} s inside a step{}, over {:g} times its cost limit and {:g} "
+    r.error = fmt::format("its process spent {:.3g} s of CPU inside a step{}, over {:g} times its cost limit and {:g} "
                           "s more ({}): killed",
                           *c.over_cost_cpu_s, after, kStuckCostFactor, kStuckCostMargin_s,
                           cost_limit ? cost_limit->what : std::string("none"));
