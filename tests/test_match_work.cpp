@@ -242,7 +242,12 @@ TEST(MatchWork, TheStoreReusesWhatWasMeasuredAndFreshMeasuresAgain) {
   o.store = &fresh;
   const MatchResult measured = cli::run_match(scene, engines, o, {});
   for (const MatchTry& t : measured.tries) EXPECT_FALSE(t.stored);
-  EXPECT_EQ(tried(first), tried(measured));
+  // Measured again, the profile as it is meets the spec with the same figures (a knob that costs
+  // about as much may stop over cost in one run and not in another: CPU time's noise).
+  ASSERT_FALSE(measured.tries.empty());
+  EXPECT_EQ(measured.tries.front().knob, first.tries.front().knob);
+  EXPECT_EQ(measured.tries.front().met, first.tries.front().met);
+  EXPECT_EQ(measured.tries.front().figures, first.tries.front().figures);
   o.store = &store;
   o.spec[SpecTerm::overlap] = 0.02;
   const MatchResult other = cli::run_match(scene, engines, o, {});
