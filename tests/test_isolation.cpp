@@ -4,6 +4,8 @@
 // The misbehaving engines exist only in this file, never in the product's registry.
 #include <gtest/gtest.h>
 
+#include <time.h>
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,7 +31,7 @@
 namespace ballbench {
 namespace {
 
-enum class Misbehaviour { None, Segfault, Abort, Hang, Spin, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin, Slow };
+enum class Misbehaviour { None, Segfault, Abort, Hang, Spin, Throw, Exit3, NonFinite, EnergyGrowth, NonFiniteSpin, DropsSpin, Slow, Busy };
 
 // Balls in free flight, mirrored at the walls (no ball-ball collisions), misbehaving at step `at`.
 class TestEngine : public Engine {
@@ -40,6 +42,7 @@ class TestEngine : public Engine {
     if (k_ == at_) misbehave();
     if (m_ == Misbehaviour::EnergyGrowth && k_ >= at_) state_.vel *= 2.0;  // kinetic energy x4 per step
     if (m_ == Misbehaviour::Slow) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    if (m_ == Misbehaviour::Busy && k_ >= at_) spend_cpu(0.06);
     state_.pos += dt * state_.vel;
     state_.t += dt;
     if (box_.kind != ContainerKind::Box) return;
@@ -74,6 +77,16 @@ class TestEngine : public Engine {
       case Misbehaviour::NonFiniteSpin: state_.w(0) = std::numeric_limits<double>::infinity(); break;
       case Misbehaviour::DropsSpin: state_.w.resize(0), state_.angle.resize(0); break;
       default: break;
+    }
+  }
+  // Computes until this thread has spent `seconds` of CPU.
+  static void spend_cpu(double seconds) {
+    const auto cpu = [] {
+      timespec t{};
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+      return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    };
+    for (const double end = cpu() + seconds; cpu() < end;) {
     }
   }
   State state_;
@@ -134,6 +147,17 @@ TEST(Isolation, AHangTimesOutAtTheLimit) {
   const Result r = isolated(test_engine("hang", Misbehaviour::Hang), 1.0);
   EXPECT_EQ(r.status, RunStatus::timed_out);
   EXPECT_NE(r.error.find("time limit of 1 s"), std::string::npos) << r.error;
+}
+
+// Steps of 60 ms of CPU each under a cost limit of 0.1 s stop over cost after the step that passed
+// it (its engine time checked after any step of 50 ms or more), not at the 64th step.
+TEST(CostLimit, IsCheckedAfterASlowStep) {
+  RunOptions o = steps(50);
+  o.cost_limit = RunOptions::CostLimit{0.1, "the cost of a cheaper configuration"};
+  const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
+  EXPECT_GE(r.steps_done, 2);
+  EXPECT_LE(r.steps_done, 4) << r.error;  // 0.1 s passed by the second step, a third for the CPU clock's share
 }
 
 // A step that computes for ever under a cost limit is killed once the child's CPU time passes

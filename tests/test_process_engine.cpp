@@ -128,9 +128,12 @@ TEST(ProcessEngine, AStepIsCostedWithoutItsWaitForACore) {
   on_one_busy_core([&] { r = run_engine(box(), misbehaving("busy-step"), steps(10)); });  // its process started there
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   ASSERT_TRUE(r.engine_process_s && r.engine_cpu_s);
+  // Measured: 0.201 s costed of 0.2 s spent, 0.40 s by its own clock (the spinner takes half the
+  // core). The bounds leave room for other tests' processes on that core and for waits in the round
+  // trip outside the step, whose share is taken from the step too.
   const double cpu = 10 * 0.02;
   EXPECT_GT(*r.engine_process_s, 1.3 * cpu) << "the step was not slowed: the test proves nothing";
-  EXPECT_NEAR(*r.engine_cpu_s, cpu, 0.35 * cpu) << "by its own clock " << *r.engine_process_s << " s";
+  EXPECT_NEAR(*r.engine_cpu_s, cpu, 0.1 * cpu) << "by its own clock " << *r.engine_process_s << " s";
 }
 
 // A step that waits on purpose (a sleep, a helper doing the work) is charged in full: it waited
@@ -141,6 +144,8 @@ TEST(ProcessEngine, AStepThatSleepsIsChargedInFull) {
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   ASSERT_TRUE(r.engine_process_s && r.engine_cpu_s);
   EXPECT_GE(*r.engine_process_s, 10 * 0.02);
+  // Measured: 0.2016 s costed of 0.2017 s; a waking process may wait for a core a little, under
+  // other tests more, never a fifth of a 20 ms sleep.
   EXPECT_GT(*r.engine_cpu_s, 0.8 * *r.engine_process_s);
 }
 
@@ -152,23 +157,22 @@ TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
 
-// box2d3 reads its states from Box2D's arrays in place once it has found them (box2d3_state.js;
-// on a pile of 500 balls after 40 steps, on the heap once its balls turn), checking every 64th
-// read against Box2D's getters: the same trajectory, bit for bit, as reading through the getters.
+// box2d3 reads its states from Box2D's arrays in place once it has found them (box2d3_state.js:
+// on `pile`'s 500 balls from about step 130, its getters' calls then having cost a search of the
+// heap), checking every 64th read against Box2D's getters: the same trajectory, bit for bit, as
+// reading through the getters. tests/box2d3_state_test.js checks each read of a spinning heap.
 TEST(ProcessEngine, Box2d3ReadsTheSameStatesInPlaceAsThroughItsGetters) {
   const EngineEntry& e = find_engine("box2d3");
   if (!e.info.unavailable.empty()) GTEST_SKIP() << "box2d3 is unavailable here: " << e.info.unavailable;
-  for (const char* name : {"pile", "rough-pile"}) {
-    const Scene scene = load_scene(name);
-    RunOptions in_place = steps(300), getters = steps(300);
-    getters.overrides = {{"read_in_place", false}};
-    const Result a = run_engine(scene, e, in_place), b = run_engine(scene, e, getters);
-    ASSERT_EQ(a.status, RunStatus::ok) << name << ": " << a.error;
-    ASSERT_EQ(b.status, RunStatus::ok) << name << ": " << b.error;
-    EXPECT_EQ(a.settings["read_in_place"], true);
-    EXPECT_EQ(b.settings["read_in_place"], false);
-    EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory) << name;
-  }
+  const Scene scene = load_scene("pile");
+  RunOptions in_place = steps(300), getters = steps(300);
+  getters.overrides = {{"read_in_place", false}};
+  const Result a = run_engine(scene, e, in_place), b = run_engine(scene, e, getters);
+  ASSERT_EQ(a.status, RunStatus::ok) << a.error;
+  ASSERT_EQ(b.status, RunStatus::ok) << b.error;
+  EXPECT_EQ(a.settings["derived"]["state_reads"].get<std::string>().rfind("in place", 0), 0u) << a.settings.dump();
+  EXPECT_EQ(b.settings["derived"]["state_reads"], "through Box2D's getters");
+  EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
 
 // A process serves one profile's scene after another's: module-wide settings (matter's resting

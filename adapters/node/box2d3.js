@@ -140,6 +140,7 @@ async function load(scene, profileName, overrides) {
   return {
     n: b.n,
     t: 0,
+    state,  // how its states are read (tests)
     step(dt) {
       B.b2World_Step(world, dt, s.substeps);
       state.stepped();
@@ -177,7 +178,7 @@ async function load(scene, profileName, overrides) {
   };
 }
 
-serve({
+const driver = {
   hello() {
     return {
       name: 'box2d3',
@@ -209,4 +210,8 @@ serve({
     };
   },
   load,
-});
+};
+
+// Run as an engine process; required (tests/box2d3_state_test.js), its load() alone.
+if (require.main === module) serve(driver);
+module.exports = { load };

@@ -14,11 +14,13 @@
 // `allow_sleep`: a body that sleeps leaves the arrays).
 
 const CHECK_EVERY = 64;
-// Finding the arrays scans the heap, about 12 ns per float32 and quantity (50 ms per 16 MB); it is
-// tried once the getters have cost as much as a search, and after a search that found nothing
-// once they have cost twice as much again, so searching never costs more than the getters did and
-// a short run never pays for it.
-const SCAN_S_PER_FLOAT = 12e-9;
+// Finding the arrays scans the heap once per quantity, about 12 ns per float32 (50 ms per 16 MB),
+// where a getter's call costs about 0.8 us (both measured on pile): a search costs as much as this
+// many getter calls per float32 of the heap. It is tried once the getters have made that many
+// calls since the last search, and after a search that found nothing twice as many, so searching
+// never costs more than the getters did and a short run never pays for it. Counted in calls, not
+// timed: the same run reads the same way on any machine.
+const GETTER_CALLS_PER_HEAP_FLOAT = 12e-9 / 0.8e-6;
 // A quantity whose first value occurs more often than this in the heap cannot be placed yet.
 const MAX_CANDIDATES = 64;
 
@@ -80,8 +82,7 @@ class Box2d3State {
     for (const q of this.names) this.values[q] = new Float32Array(this.n * QUANTITIES[q].dims);
     this.where = null;       // quantity -> [offset, stride] once found and confirmed
     this.candidates = null;  // quantity -> placements found, to be confirmed after the next step
-    this.gettersS = 0;       // the getters' time since the last search (s)
-    this.searchS = null;     // a search's time: estimated, then as the last one took (s)
+    this.calls = 0;          // getter calls since the last search
     this.searchAfter = 1;    // a search waits for the getters to cost this many searches
     this.steps = 0, this.stepsAtSearch = -1, this.reads = 0;
     this.view = null;
@@ -106,12 +107,12 @@ class Box2d3State {
   }
 
   readGetters() {
-    const { B, bodies, n } = this, start = process.hrtime.bigint();
+    const { B, bodies, n } = this;
     for (const q of this.names) {
       const { dims, get } = QUANTITIES[q], out = this.values[q];
       for (let i = 0; i < n; ++i) get(B, bodies[i], out, i * dims);
     }
-    this.gettersS += Number(process.hrtime.bigint() - start) * 1e-9;
+    this.calls += n * this.names.length;
   }
 
   readInPlace() {
@@ -145,13 +146,13 @@ class Box2d3State {
       this.where = kept, this.candidates = null;
       return;
     }
-    if (this.searchS === null) this.searchS = heap.length * this.names.length * SCAN_S_PER_FLOAT;
-    if (this.candidates || this.gettersS < this.searchAfter * this.searchS || this.steps === 0) return;
+    const cost = this.searchAfter * heap.length * this.names.length * GETTER_CALLS_PER_HEAP_FLOAT;
+    if (this.candidates || this.calls < cost || this.steps === 0) return;
     if (!this.names.every((q) => distinctive(this.values[q], QUANTITIES[q].dims))) return;
-    const start = process.hrtime.bigint(), found = {};
+    const found = {};
     for (const q of this.names)
       if (!(found[q] = placements(heap, this.values[q], this.n, QUANTITIES[q].dims)).length) break;
-    this.searchS = Number(process.hrtime.bigint() - start) * 1e-9, this.gettersS = 0;
+    this.calls = 0;
     if (this.names.every((q) => found[q] && found[q].length)) this.candidates = found, this.stepsAtSearch = this.steps;
     else this.searchAfter *= 2;
   }
