@@ -2,10 +2,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 namespace ballbench::bench {
 namespace {
@@ -40,6 +42,15 @@ double budget_seconds() { return budget; }
 }  // namespace ballbench::bench
 
 int main(int argc, char** argv) {
+  // 0.2 s a benchmark unless --benchmark_min_time says otherwise (the report's suites do): a
+  // benchmark's own MinTime would override the flag.
+  std::vector<char*> args(argv, argv + argc);
+  char default_min_time[] = "--benchmark_min_time=0.2";
+  if (std::none_of(args.begin(), args.end(), [](const char* a) { return std::strncmp(a, "--benchmark_min_time", 20) == 0; }))
+    args.insert(args.begin() + 1, default_min_time);
+  args.push_back(nullptr);
+  argc = int(args.size()) - 1;
+  argv = args.data();
   benchmark::Initialize(&argc, argv);
   if (!ballbench::bench::read_budget(argc, argv)) return 1;
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

@@ -226,8 +226,7 @@ void register_benchmarks() {
       for (SceneKind kind : {SceneKind::Gas, SceneKind::Bowl})
         for (int n = 10; n <= e.info.bench.for_profile(profile).free_balls; n *= 10)
           add(fmt::format("step/{}/{}/{}/{}", e.info.name, profile, scene_kind_name(kind), n), &e, profile,
-              kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, e.info.bench.settings)
-              ->MinTime(0.2);
+              kind == SceneKind::Gas ? gas_scene : bowl_scene, n, {}, e.info.bench.settings);
   }
   // A pile at rest (settled_pile.h) from 10^2 balls, and the fluid from 10^3, each to the engine's
   // sizes (EngineInfo::bench).
@@ -239,8 +238,7 @@ void register_benchmarks() {
       const BenchSizes& sizes = e.info.bench.for_profile(profile);
       for (int n = 100; n <= sizes.settled_balls; n *= 10)
         add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n,
-            {.settle = true}, nlohmann::json::object())
-            ->MinTime(0.2);
+            {.settle = true}, nlohmann::json::object());
       for (int n = 1000; n <= sizes.fluid_balls; n *= 10)
         add(fmt::format("step/{}/{}/fluid/{}", e.info.name, profile, n), &e, profile, fluid_scene, n,
             {.warm_up = 0, .check_divergence = true},
@@ -264,7 +262,7 @@ void register_benchmarks() {
     for (int n = 100; n <= v.max_n; n *= 10)
       add(fmt::format("step/{}/{}/settled/{}", v.engine, v.label, n), &find_engine(v.engine), v.profile,
           shared_settled_pile, n, {.warm_up = v.warm_up, .settle = true}, v.settings)
-          ->MinTime(0.2);
+          ;
   // The engine process protocol's own cost: a Node process engine that moves nothing
   // (adapters/node/noop.js), so its time per step is the request, the reply and the state block
   // through the pipes, to read beside the Node engines' (engine_process_ns_per_ball_step is their
@@ -280,7 +278,7 @@ void register_benchmarks() {
   }();
   if (noop.info.unavailable.empty())
     for (int n = 10; n <= 1000; n *= 10)
-      add(fmt::format("pipe/noop/default/gas/{}", n), &noop, "default", gas_scene, n, {}, nlohmann::json::object())->MinTime(0.2);
+      add(fmt::format("pipe/noop/default/gas/{}", n), &noop, "default", gas_scene, n, {}, nlohmann::json::object());
   constexpr int kPourSteps = 100;  // one second of the scaled bowl (dt 0.01)
   add("pour/home/default/bowl/1000000", &find_engine("home"), "default", bowl_scene, 1'000'000, {.warm_up = 0},
       nlohmann::json::object())

@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace ballbench {
 namespace {
 
@@ -38,7 +40,7 @@ bool environment_holds(const char* pid, const std::string& entry) {
 void kill_engine_group(int group) {
   if (group <= 0) return;
   ::kill(-group, SIGKILL);
-  const std::string entry = std::string(kEngineGroupVariable) + "=" + std::to_string(group);
+  const std::string entry = fmt::format("{}={}", kEngineGroupVariable, group);
   DIR* proc = ::opendir("/proc");
   if (!proc) return;
   const pid_t self = ::getpid();

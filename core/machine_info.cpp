@@ -3,8 +3,9 @@
 #include <sys/utsname.h>
 
 #include <fstream>
-#include <iterator>
+#include <memory>
 #include <thread>
+#include <vector>
 
 #include <fmt/format.h>
 #include <xxhash.h>
@@ -37,10 +38,18 @@ MachineInfo machine_info() {
 }
 
 const std::string& build_id() {
+  // Hashed in blocks as read: every command computes it, and a sanitized executable is tens of MB.
   static const std::string id = [] {
     std::ifstream exe("/proc/self/exe", std::ios::binary);
-    const std::string bytes{std::istreambuf_iterator<char>(exe), std::istreambuf_iterator<char>()};
-    return bytes.empty() ? std::string("unknown") : fmt::format("{:016x}", XXH3_64bits(bytes.data(), bytes.size()));
+    std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)> state(XXH3_createState(), &XXH3_freeState);
+    if (!exe || !state || XXH3_64bits_reset(state.get()) != XXH_OK) return std::string("unknown");
+    std::vector<char> block(1 << 20);
+    std::size_t total = 0;
+    while (exe.read(block.data(), std::streamsize(block.size())) || exe.gcount() > 0) {
+      XXH3_64bits_update(state.get(), block.data(), std::size_t(exe.gcount()));
+      total += std::size_t(exe.gcount());
+    }
+    return total == 0 ? std::string("unknown") : fmt::format("{:016x}", XXH3_64bits_digest(state.get()));
   }();
   return id;
 }

@@ -10,6 +10,7 @@
 
 #include "input_error.h"
 #include "interrupt.h"
+#include "recorded_reference.h"
 #include "scene_writer.h"
 #include "spec_verdict.h"
 #include "data_file.h"
@@ -230,32 +231,30 @@ bool set_up(RunContext& c) {
 }
 
 // A reference that cannot run the scene faithfully is never compared against: a converged run of
-// another engine stands in, or there is none.
+// another engine stands in, or there is none. A recording of it made for this scene is replayed.
 void set_up_reference(RunContext& c) {
   const Scene& scene = c.scene;
-  c.ref_entry = c.options.reference;
-  c.ref_dt = scene.dt;
-  if (c.ref_entry) {
-    if (const std::string why = unsupported_reason(c.ref_entry->info, scene); !why.empty()) {
-      const EngineEntry* stand_in = c.options.converged_reference;
-      if (stand_in && unsupported_reason(stand_in->info, scene).empty()) {
-        c.ref_entry = stand_in, c.ref_substeps = kConvergedSubsteps;
-      } else {
-        c.r.skipped.push_back(fmt::format("error against the reference: {}, and no converged run stands in", why));
-        c.ref_entry = nullptr;
-      }
-    }
-  }
+  const ReferenceChoice choice = choose_reference(scene, c.options);
+  if (!choice.skipped.empty()) c.r.skipped.push_back(choice.skipped);
+  c.ref_entry = choice.entry;
+  c.ref_substeps = choice.substeps;
+  c.ref_dt = scene.dt / choice.substeps;
   if (!c.ref_entry) return;
   c.error.emplace(scene);
   if (c.ref_substeps > 1) {
     c.converged_scene = scene;
-    c.converged_scene->dt = c.ref_dt = scene.dt / c.ref_substeps;
+    c.converged_scene->dt = c.ref_dt;
   }
+  const auto& recorded = c.options.recorded_reference;
   try {
-    const Scene& ref_scene = c.converged_scene ? *c.converged_scene : scene;
-    c.reference = c.ref_entry->create(ref_scene, c.ref_entry->info.profiles.front(),
-                                      merged_settings(scene, c.ref_entry->info.name, {}));
+    if (recorded && recording_fits(*recorded, scene, choice, c.r.steps)) {
+      if (recorded->failed_step == 0) throw std::runtime_error(recorded->failure);
+      c.reference = replay_reference(recorded);
+    } else {
+      const Scene& ref_scene = c.converged_scene ? *c.converged_scene : scene;
+      c.reference = c.ref_entry->create(ref_scene, c.ref_entry->info.profiles.front(),
+                                        merged_settings(scene, c.ref_entry->info.name, {}));
+    }
     c.reference->read(c.ref_state);
   } catch (const std::exception& e) {
     c.error->reference_failed(0, e.what());

@@ -4,7 +4,7 @@
 // reads and what it writes; the context holds nothing a stage does not pass on to a later one.
 //
 //   set_up            profile, capability refusal, the engine, its state stride
-//   set_up_reference  the reference engine (or a converged stand-in) that runs in lockstep
+//   set_up_reference  the reference engine (or a converged stand-in) that runs in lockstep, or its recording
 //   set_up_sampling   metrics, figures' and frames' spacing
 //   read_initial      step 0: the first state, its metrics, figures and checksum
 //   step_loop         steps, times and reads the engine until the last step or a stop

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +16,7 @@
 namespace ballbench {
 
 class TrajectoryCsv;
+struct RecordedReference;
 
 // How Result::skipped's note for an engine read only every k steps (Engine::state_stride) begins:
 // "tunnelling judged on samples every k steps: ...". `run` prints it under its table.
@@ -42,6 +44,9 @@ struct RunOptions {
   // engine's first profile at dt / kConvergedSubsteps stands in, a converged run (registry.h's
   // converged_reference_engine()); null: no error is reported for such a scene.
   const EngineEntry* converged_reference = nullptr;
+  // The reference recorded once for this scene (recorded_reference.h; run_all records it): replayed
+  // where it is the one the run would step, instead of stepping it again. Null: stepped in lockstep.
+  std::shared_ptr<const RecordedReference> recorded_reference;
   // Points kept in Result::series (energy, centre of mass, a few tracks) for the report's figures.
   int series_points = 300;
   // Whole-scene frames kept in Result::series for animations and the trajectory viewer (0: none):

@@ -10,6 +10,8 @@
 #include <iterator>
 #include <string>
 
+#include <fmt/format.h>
+
 namespace ballbench::testing {
 
 struct CliOutcome {
@@ -28,7 +30,7 @@ inline CliOutcome run_cli(const std::string& args) {
   const std::string tag = std::to_string(::getpid());  // per process: ctest runs tests in parallel
   const std::string out = (dir / ("ballbench_cli_out." + tag)).string();
   const std::string err = (dir / ("ballbench_cli_err." + tag)).string();
-  const int rc = std::system((std::string(BALLBENCH_CLI) + " " + args + " >" + out + " 2>" + err).c_str());
+  const int rc = std::system(fmt::format("{} {} >{} 2>{}", BALLBENCH_CLI, args, out, err).c_str());
   CliOutcome outcome{WIFEXITED(rc) ? WEXITSTATUS(rc) : 128 + WTERMSIG(rc), slurp(out), slurp(err)};
   std::error_code ec;  // nothing left behind in the temporary folder
   std::filesystem::remove(out, ec), std::filesystem::remove(err, ec);

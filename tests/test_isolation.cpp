@@ -69,8 +69,7 @@ class TestEngine : public Engine {
       case Misbehaviour::Hang:
         for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
       case Misbehaviour::Spin:  // a step that computes for ever
-        for (volatile unsigned long i = 0;; i = i + 1) {
-        }
+        for (volatile unsigned long i = 0;;) i = i + 1;
       case Misbehaviour::Throw: throw std::runtime_error("the test engine gave up");
       case Misbehaviour::Exit3: std::_Exit(3);
       case Misbehaviour::NonFinite: state_.pos(0, 0) = std::numeric_limits<double>::quiet_NaN(); break;

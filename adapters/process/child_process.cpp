@@ -65,7 +65,7 @@ void kill_live_groups() {
 // allocating, as a fork of a threaded process must.
 std::vector<std::string> child_environment() {
   std::vector<std::string> env;
-  const std::string name = std::string(kEngineGroupVariable) + "=";
+  const std::string name = fmt::format("{}=", kEngineGroupVariable);
   for (char** e = environ; e && *e; ++e)
     if (std::string_view(*e).rfind(name, 0) != 0) env.emplace_back(*e);
   env.push_back(name + std::string(20, '\0'));

@@ -18,7 +18,8 @@ namespace {
 
 
 ConformRow check(const EngineEntry& e, const std::string& profile, const ConformCaseDef& d) {
-  ConformRow row{e.info.name, profile, d.key, d.tolerance};
+  ConformRow row;
+  row.engine = e.info.name, row.profile = profile, row.check = d.key, row.tolerance = d.tolerance;
   try {
     const double figure = conform_figure(e, profile, d.c);
     row.figure = figure;

@@ -17,6 +17,7 @@
 #include "machine_info.h"
 #include "metrics/catalog.h"
 #include "progress.h"
+#include "recorded_reference.h"
 #include "trajectory_csv.h"
 
 namespace ballbench::cli {
@@ -332,9 +333,14 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
                             std::string* trajectory_error) {
   TrajectorySink sink(scene, isolation, trajectory_path, trajectory_error != nullptr);
   std::vector<Result> results;
+  // The reference once for every run of the scene, where more than one run compares against it.
+  std::shared_ptr<const RecordedReference> recorded = base.recorded_reference;
+  if (!recorded && base.reference && run_count(engines, profile) > 1)
+    recorded = record_reference(scene, base, isolation.timeout_s);
   for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
       RunOptions options = base;
+      options.recorded_reference = recorded;
       options.profile = p;
       if (interrupt_signal()) {  // asked to stop: the rows so far are the result
         // A signal between runs marks the run that was next; one during a run marked that run.

@@ -116,7 +116,7 @@ EngineEntry exact_engine() {
               throw InputError(
                   "settings.exact.rest_velocity: must be > 0 under gravity (it ends bouncing on supports)");
             return std::unique_ptr<Engine>(std::make_unique<Exact>(scene, s));
-          }};
+          }, {}};
 }
 
 }  // namespace ballbench

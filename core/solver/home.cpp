@@ -311,7 +311,7 @@ EngineEntry home_engine() {
             home_settings_table().read(overrides, s);
             if (s.resting == RestingMethod::automatic) resolve_auto(scene, overrides, s);
             return make_home(scene, s);
-          }};
+          }, {}};
 }
 
 std::unique_ptr<Engine> make_home(const Scene& scene, const HomeSettings& settings) {

@@ -180,7 +180,7 @@ EngineEntry home_seed_engine() {
             HomeSeedSettings s;
             home_seed_settings_table().read(overrides, s);
             return std::unique_ptr<Engine>(std::make_unique<HomeSeed>(scene, s));
-          }};
+          }, {}};
 }
 
 }  // namespace ballbench
