@@ -144,6 +144,10 @@ class Search {
 
   const EngineEntry& entry() const { return e_; }
   const std::string& profile() const { return profile_; }
+  // How much this search is likely to cost against the others, to start the costliest first: its
+  // configurations, each a ladder of tries, four times over for an engine whose every run starts a
+  // process (EngineInfo::costly_runs: its start and its pipe on every try).
+  double expected_work() const { return double(configs_.size()) * (e_.info.costly_runs ? 4.0 : 1.0); }
   // The store key of try `index` of this search.
   nlohmann::json key_of(int index) const {
     const MatchTry& t = tries.at(index);
@@ -526,6 +530,11 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   std::vector<size_t> items;
   for (size_t i = 0; i < plan.searches.size(); ++i)
     if (plan.first[i] == setting_ceiling) items.push_back(i);
+  // The costliest first, so that the last to finish is a short one and no core waits at the end
+  // (longest processing time first). What a search finds never depends on when it ran.
+  std::stable_sort(items.begin(), items.end(), [&](size_t a, size_t b) {
+    return plan.searches[a]->expected_work() > plan.searches[b]->expected_work();
+  });
   std::mutex done_mutex;
   std::atomic<size_t> next{0};
   const auto worker = [&] {
