@@ -45,10 +45,10 @@ using Clock = std::chrono::steady_clock;
 constexpr int kInterruptGrace = 10;
 
 // A run under a cost limit checks it at step boundaries; a step that never ends (a dense solver on
-// thousands of balls: over 10 min for one) is killed by the parent once the child's CPU time since
-// its last progress report (every 1% of the steps) passes the limit times this factor and this
-// margin (the harness's work between reports counts too), read this often. CPU time, not the clock:
-// another job on the cores does not bring the kill nearer.
+// thousands of balls: over 10 min for one) is killed by the parent once the CPU time of the child
+// and of its engines' processes since its last progress report (every 1% of the steps) passes the
+// limit times this factor and this margin (the harness's work between reports counts too), read
+// this often. CPU time, not the clock: another job on the cores does not bring the kill nearer.
 constexpr double kStuckCostFactor = 2, kStuckCostMargin_s = 5;
 constexpr int kCpuCheckMs = 250;
 
@@ -160,11 +160,20 @@ class ChildWatcher {
     return static_cast<int>(std::clamp<long long>(left, 0, cpu_limit_s_ ? kCpuCheckMs : 60'000));
   }
 
-  // The child's CPU time (s), 0 where it cannot be read.
+  // The child's CPU time (s), and that of its engines' processes (an engine in another process
+  // computes there, the child only waits for its reply); 0 for what cannot be read. An engine's
+  // process leads its group, so the group's number is its pid. A process that ended leaves the sum,
+  // which can only put a kill off, never bring it nearer.
   double child_cpu_s() const {
+    if (!cpu_limit_s_) return 0;
+    double s = cpu_seconds(cpu_clock_);
+    for (const int group : engine_groups_)
+      if (clockid_t c{}; ::clock_getcpuclockid(group, &c) == 0) s += cpu_seconds(c);
+    return s;
+  }
+  static double cpu_seconds(clockid_t clock) {
     timespec t{};
-    if (!cpu_limit_s_ || ::clock_gettime(cpu_clock_, &t) != 0) return 0;
-    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+    return ::clock_gettime(clock, &t) == 0 ? double(t.tv_sec) + 1e-9 * double(t.tv_nsec) : 0;
   }
 
   // The child's CPU time since its last report is past its limit: it is stuck in a step that costs

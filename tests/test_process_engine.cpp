@@ -208,6 +208,17 @@ TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
   EXPECT_TRUE(has(r.error, "sent no reply within the time limit")) << r.error;
 }
 
+// A step that computes for ever in the engine's own process is killed once that process's CPU time
+// passes the run's cost limit (twice it, and 5 s), not at the reply limit (here 600 s).
+TEST(ProcessEngine, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
+  RunOptions o = steps(10);
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration"};
+  const Result r = run_engine_isolated(box(), misbehaving("spin-step", 600), o, {600, ""});
+  // At the reply limit it would be a failed row, "sent no reply within the time limit".
+  EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
+  EXPECT_TRUE(has(r.error, "s of CPU inside a step after step 2 of 10")) << r.error;
+}
+
 TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
   for (const auto& [mode, says] : {std::pair{"garbage", "sent garbage in reply to 'step': 'this is not json'"},
                                    {"short-block", "closed its output after a state block 792 bytes short (of 800)"},

@@ -6,7 +6,7 @@ Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-e
 with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
 stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 3), "helper-session" (the helper in a session of its
 own, out of the engine's process group), "helper-exit" (the engine exits at step 3 while its
-helper holds its stdout), "float-t" and "float-t-undeclared" (the time summed in
+helper holds its stdout), "spin-step" (its step 3 computes for ever), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
 "unsupported" (refuses every scene as unsupported), "speed-cap-bad" (a speed cap below zero), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). And two that behave but take time: "busy-step"
@@ -88,6 +88,8 @@ for line in sys.stdin.buffer:
                 sys.exit(3)
             if mode in ("hang", "helper-hang"):
                 time.sleep(3600)
+            while mode == "spin-step":  # a step that computes for ever
+                pass
             if mode == "helper-exit":
                 sys.stderr.write("misbehaving engine: leaving my helper behind\n")
                 sys.stderr.flush()
