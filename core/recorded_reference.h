@@ -1,12 +1,11 @@
 #pragma once
 // The reference recorded once per scene and replayed beside every engine's run. A comparison table
-// runs every engine and profile on one scene, and each run used to step its own copy of the same
-// reference in lockstep: on a friction scene the reference is a converged run at dt / 64, most of
-// the table's time, computed two dozen times over. run_all records it once, in a child process
-// with the runs' time limit (a reference that hangs or crashes costs no more than it did), and
-// each run replays it; where it cannot be recorded (too large, timed out, crashed, interrupted),
-// each run steps its own as before. The figures are the same either way: a state read from an
-// engine does not change it, and every run replays the one trajectory.
+// runs every engine and profile on one scene against the same reference, which on a friction scene
+// is a converged run at dt / 64, most of the table's time: run_all records it once, in a child
+// process with the runs' time limit (a reference that hangs or crashes costs no more than one run),
+// and each run replays it. Where it cannot be recorded (too large, timed out, crashed,
+// interrupted), each run steps its own. The figures are the same either way: reading an engine's
+// state does not change it, and every run replays the one trajectory.
 #include <memory>
 #include <string>
 #include <vector>
