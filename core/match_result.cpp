@@ -35,10 +35,19 @@ SearchStop search_stop_from_text(std::string_view text) { return kStopWords.valu
 
 std::string cost_text(double ns) { return ns >= 100 ? fmt::format("{:.0f}", ns) : fmt::format("{:.3g}", ns); }
 
+namespace {
+// The range of an outcome's timing runs (its cost alone where it was timed once).
+std::pair<double, double> cost_range(const MatchOutcome& oc) {
+  if (oc.cost_repeats.empty()) return {oc.cost_ns, oc.cost_ns};
+  const auto [lo, hi] = std::minmax_element(oc.cost_repeats.begin(), oc.cost_repeats.end());
+  return {*lo, *hi};
+}
+}  // namespace
+
 std::string cost_spread_text(const MatchOutcome& oc) {
   if (oc.cost_repeats.size() < 2 || oc.cost_ns <= 0) return cost_text(oc.cost_ns);
-  const auto [lo, hi] = std::minmax_element(oc.cost_repeats.begin(), oc.cost_repeats.end());
-  return fmt::format("{} ±{:.0f}%", cost_text(oc.cost_ns), 50 * (*hi - *lo) / oc.cost_ns);
+  const auto [lo, hi] = cost_range(oc);
+  return fmt::format("{} ±{:.0f}%", cost_text(oc.cost_ns), 50 * (hi - lo) / oc.cost_ns);
 }
 
 std::string step_text(int halvings) { return halvings == 0 ? "dt" : fmt::format("dt/{}", 1 << halvings); }
@@ -91,6 +100,16 @@ const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& ro
   for (const MatchOutcome& oc : m.outcomes)
     if (oc.reached && !oc.cut_short() && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
   return best;
+}
+
+std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutcome& pick) {
+  std::vector<const MatchOutcome*> out;
+  const auto [lo, hi] = cost_range(pick);
+  for (const MatchOutcome& oc : m.outcomes) {
+    if (&oc == &pick || !oc.reached || oc.cut_short() || oc.role != pick.role) continue;
+    if (const auto [a, b] = cost_range(oc); a <= hi && b >= lo) out.push_back(&oc);
+  }
+  return out;
 }
 
 std::optional<double> ratio_at_least(const MatchResult& m, const MatchOutcome& ours) {

@@ -68,6 +68,10 @@ struct Result {
   // The engine's step time over RunOptions::window (s): how that window's cost relates to the
   // whole run's. JSON "window_engine_s"; none for a run without a window or one that stopped in it.
   std::optional<double> window_engine_s;
+  // The run's pace where RunOptions::record_pace asked for it: engine_s at each 1/kPacePoints of
+  // its steps, as far as it went (a shape: a projection takes its ratios, to CPU time). JSON
+  // "pace"; absent when not recorded.
+  std::vector<double> pace;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   // Every metric of the run's states by catalog key (metrics/catalog.h), as its meters measured
   // them; none for a metric its scene does not call for, or a run not measured.

@@ -104,6 +104,22 @@ double engine_cpu_seconds(const RunContext& c) {
   return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;
 }
 
+// Why the run is past its cost limit at step k: its engine time so far passed it, or, from
+// kPaceFrom of its steps on, projects a whole run past kPaceMargin times it at the limit's pace.
+std::optional<std::string> past_cost_limit(const RunContext& c, const RunOptions::CostLimit& limit, long k) {
+  const double spent = engine_cpu_seconds(c);
+  if (spent > limit.seconds)
+    return fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit.seconds, k, c.state.t,
+                       limit.what);
+  const double share = double(k) / double(std::max(1L, c.r.steps));
+  if (!limit.pace || share < kPaceFrom) return std::nullopt;
+  if (const double whole = limit.pace->project(spent, share); whole > kPaceMargin * limit.seconds)
+    return fmt::format("its engine time of {:.3g} s at step {} (t = {:g} s), grown as its engine's pace grows from "
+                       "there, projects {:.3g} s for the run, past {:g} times {:.3g} s, {}",
+                       spent, k, c.state.t, whole, kPaceMargin, limit.seconds, limit.what);
+  return std::nullopt;
+}
+
 // The window of steps options.window asks for: its start's state written as a scene, and the
 // engine's time over it.
 void window(RunContext& c, long k) {
@@ -165,13 +181,12 @@ bool advance(RunContext& c, long k) {
   if (c.options.trajectory) c.options.trajectory->write(r.engine, r.profile, k, c.state);
   r.steps_done = k;
   window(c, k);
+  if (c.options.record_pace)
+    for (const size_t reached = pace_points_reached(k, r.steps); r.pace.size() < reached;) r.pace.push_back(c.engine_s);
   if (const auto& limit = c.options.cost_limit;
       limit && (k % kCostCheckSteps == 0 || c.engine_s - c.cost_checked_s > kCostCheckSeconds)) {
     c.cost_checked_s = c.engine_s;
-    if (const double spent = engine_cpu_seconds(c); spent > limit->seconds)
-      return stop(c, RunStatus::over_cost, k,
-                  fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit->seconds, k,
-                              c.state.t, limit->what));
+    if (const auto why = past_cost_limit(c, *limit, k)) return stop(c, RunStatus::over_cost, k, *why);
   }
   if (k % c.every == 0 || k == r.steps) {
     sample(c, k);

@@ -4,10 +4,12 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "cost_pace.h"
 #include "engine.h"
 #include "metrics/metrics_config.h"
 #include "result.h"
@@ -65,14 +67,18 @@ struct RunOptions {
     std::string checkpoint;
   } window;
   // Stop the run (RunStatus::over_cost) once the engine's CPU time (Result::engine_cpu_s, read
-  // every kCostCheckSteps steps or kCostCheckSeconds) passes `seconds`; none: no limit. A search sets it to the whole-run
-  // time of the cheapest configuration it has found, which a costlier one cannot beat, or to its
-  // ceiling; `what` names that cost in the run's message.
+  // every kCostCheckSteps steps or kCostCheckSeconds) passes `seconds`, or, with a `pace`, once
+  // that time projects a whole run past kPaceMargin times `seconds` (cost_pace.h); none: no limit.
+  // A search sets it to the whole-run time of the cheapest configuration it has found, which a
+  // costlier one cannot beat, or to its ceiling; `what` names that cost in the run's message.
   struct CostLimit {
     double seconds = 0;
     std::string what;
+    std::optional<CostPace> pace;
   };
   std::optional<CostLimit> cost_limit;
+  // Record the run's pace (Result::pace): its engine time at each 1/kPacePoints of its steps.
+  bool record_pace = false;
   // The run ends at the first step boundary past this time (RunStatus::timed_out), keeping what it
   // measured (an isolated run's child sets it to its time limit; its parent kills a child stuck in
   // a step a grace later); none: no limit.

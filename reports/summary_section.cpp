@@ -44,8 +44,13 @@ std::string configuration_words(const ReportInputs& in, const MatchResult& m, co
 
 // The pick's cells: configuration and cost, or the nearest miss.
 std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const MatchResult& m, EngineRole role) {
-  if (const MatchOutcome* oc = cheapest_reached(m, role_name(role)))
-    return {configuration_words(in, m, *oc), cost_spread_text(*oc)};
+  if (const MatchOutcome* oc = cheapest_reached(m, role_name(role))) {
+    std::string words = configuration_words(in, m, *oc);
+    for (const MatchOutcome* tie : tied_with(m, *oc))
+      words += fmt::format("; [a tie](pages/terms.md#cost-step-and-search) with {} ({})",
+                           configuration_words(in, m, *tie), cost_spread_text(*tie));
+    return {words, cost_spread_text(*oc)};
+  }
   const MatchOutcome* near = nearest_unreached(m, role_name(role));
   if (!near) return {"none ran", "n/a"};
   const std::string why = near->stop == SearchStop::ceiling ? fmt::format("within {:g}x our cost", m.ceiling)

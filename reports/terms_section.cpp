@@ -29,6 +29,8 @@ void put_cost_terms(MarkdownBuffer& put) {
       "steps per scene step, so it costs 8 of them. The configuration found is timed alone after the searches, over a "
       "tenth of its run from the state it saved there, scaled to the whole run: the median of the repeats, with half "
       "their range as its spread (`±2%`).\n"
+      "- **a tie**: two engines whose costs' ranges overlap: the timing cannot tell them apart, and either is the "
+      "pick; the summary names both.\n"
       "- **dt, dt/2^k**: dt is the scene's own step (s); a configuration at dt/2^k steps 2^k times as often.\n"
       "- **configuration**: a profile, at one step size, with at most one of the engine's own knobs set on top of it "
       "(`iterations=5`).\n"

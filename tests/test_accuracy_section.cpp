@@ -78,6 +78,27 @@ TEST(AccuracySection, TheSummaryAnswersWithThePickAndTheRatioInWords) {
       << md2;
 }
 
+// Two external engines whose timing runs overlap are a tie: the summary names both, the cheaper
+// first; ranges apart are no tie.
+TEST(AccuracySection, ThePickNamesAnEngineItCannotBeToldFrom) {
+  MatchResult m = pile();
+  m.tries[3] = try_of("box2d", "stock", 6, true, 0.009, 46000);
+  m.outcomes[1].cost_repeats = {44000, 45000, 47000};
+  m.outcomes[2] = outcome("box2d", "stock", "external", 3, 3, 7, 46000);
+  m.outcomes[2].cost_repeats = {46000, 46500, 48000};
+  ReportInputs in;
+  in.matches = {m};
+  const std::string md = summary_section(in, {});
+  EXPECT_NE(md.find("| **chipmunk** as shipped, dt/64; [a tie](pages/terms.md#cost-step-and-search) with **box2d** as "
+                    "shipped, dt/64 (46000 ±2%) | 45000 ±3% |"),
+            std::string::npos)
+      << md;
+  ASSERT_EQ(tied_with(m, m.outcomes[1]).size(), 1u);
+  m.outcomes[2].cost_repeats = {47500, 48000, 49000};
+  EXPECT_TRUE(tied_with(m, m.outcomes[1]).empty());
+  EXPECT_TRUE(tied_with(m, m.outcomes[0]).empty());  // ours: no other of its role met it
+}
+
 TEST(AccuracySection, OneBallIsOneBall) {
   MatchResult one = pile();
   one.n = 1;

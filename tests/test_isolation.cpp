@@ -152,11 +152,67 @@ TEST(Isolation, AHangTimesOutAtTheLimit) {
 // it (its engine time checked after any step of 50 ms or more), not at the 64th step.
 TEST(CostLimit, IsCheckedAfterASlowStep) {
   RunOptions o = steps(50);
-  o.cost_limit = RunOptions::CostLimit{0.1, "the cost of a cheaper configuration"};
+  o.cost_limit = RunOptions::CostLimit{0.1, "the cost of a cheaper configuration", std::nullopt};
   const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
   EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
   EXPECT_GE(r.steps_done, 2);
   EXPECT_LE(r.steps_done, 4) << r.error;  // 0.1 s passed by the second step, a third for the CPU clock's share
+}
+
+// A run records its pace: its engine's step time at each 1/32 of its steps, rising to the whole run's.
+TEST(CostPace, ARunRecordsItsEngineTimeAlongItsSteps) {
+  RunOptions o = steps(20);
+  o.record_pace = true;
+  const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
+  ASSERT_EQ(r.pace.size(), size_t(kPacePoints));
+  EXPECT_TRUE(std::is_sorted(r.pace.begin(), r.pace.end()));
+  EXPECT_DOUBLE_EQ(r.pace.back(), r.engine_s);
+  const double half = r.pace[kPacePoints / 2 - 1] / r.pace.back();  // steps of equal work: about half
+  EXPECT_GT(half, 0.3);
+  EXPECT_LT(half, 0.7);
+  const auto pace = CostPace::from_points(r.pace);
+  ASSERT_TRUE(pace);
+  EXPECT_NEAR(pace->project(1.0, 0.5), 1.0 / half, 1e-9);
+}
+
+// A pace projects a run from a point of its steps as its pace run grew from there: in proportion
+// for steps of equal work, ten times for a pace that spent a tenth by half way; only a whole run's
+// pace, never falling, is one.
+TEST(CostPace, ProjectsAWholeRunFromAPartOfIt) {
+  std::vector<double> even(kPacePoints), late(kPacePoints);
+  for (int i = 0; i < kPacePoints; ++i) {
+    even[i] = i + 1;
+    late[i] = i < kPacePoints / 2 ? 0.1 * (i + 1) / (kPacePoints / 2) : 0.1 + 0.9 * (i + 1 - kPacePoints / 2) / (kPacePoints / 2);
+  }
+  EXPECT_DOUBLE_EQ(CostPace::from_points(even)->project(2.0, 0.25), 8.0);
+  EXPECT_NEAR(CostPace::from_points(late)->project(2.0, 0.5), 20.0, 1e-9);
+  EXPECT_DOUBLE_EQ(CostPace::from_points(even)->project(2.0, 1.0), 2.0);  // done: what it spent
+  EXPECT_FALSE(CostPace::from_points({1, 2, 3}));                        // a run that stopped short
+  std::vector<double> falling = even;
+  std::swap(falling[3], falling[4]);
+  EXPECT_FALSE(CostPace::from_points(falling));
+  EXPECT_FALSE(CostPace::from_points(std::vector<double>(kPacePoints, 0.0)));
+}
+
+// Steps of 60 ms under a limit of 0.5 s with a pace of equal steps: from 1/16 of the run on, the time
+// so far projects the whole run's 1.2 s, past 1.25 times the limit, so it stops at once, where
+// without a pace it runs to the limit (CostLimit.IsCheckedAfterASlowStep). Under a limit above the
+// whole run, the same pace lets it finish.
+TEST(CostPace, AProjectionPastTheLimitStopsARunEarly) {
+  std::vector<double> even(kPacePoints);
+  for (int i = 0; i < kPacePoints; ++i) even[i] = i + 1;
+  RunOptions o = steps(20);
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration", CostPace::from_points(even)};
+  const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
+  EXPECT_LE(r.steps_done, 3) << r.error;
+  EXPECT_NE(r.error.find("projects"), std::string::npos) << r.error;
+  EXPECT_NE(r.error.find("the cost of a cheaper configuration"), std::string::npos) << r.error;
+  o.cost_limit->seconds = 5.0;
+  const Result whole = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  EXPECT_EQ(whole.status, RunStatus::ok) << whole.error;
+  EXPECT_EQ(whole.steps_done, 20);
 }
 
 // A step that computes for ever under a cost limit is killed once the child's CPU time passes
@@ -164,7 +220,7 @@ TEST(CostLimit, IsCheckedAfterASlowStep) {
 // made.
 TEST(Isolation, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
   RunOptions o = steps(50);
-  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration"};
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration", std::nullopt};
   const Result r = run_engine_isolated(box(), test_engine("spin", Misbehaviour::Spin), o, {600, ""});
   EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
   EXPECT_NE(r.error.find("s of CPU inside a step"), std::string::npos) << r.error;

@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include "cost_pace.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -223,15 +224,17 @@ class Search {
   }
 
   // The cost (ns per ball per scene step) of a whole run at dt / 2^k, from the finest completed or
-  // missed try of this configuration before it: its CPU time per step made, twice per halving
-  // since. A pile's steps grow costlier as it settles, so this errs low.
+  // missed try of this configuration before it: its CPU time projected to its whole run at the
+  // engine's pace (else in proportion to its steps, which errs low on a pile, whose steps grow
+  // costlier as it settles), twice per halving since.
   std::optional<double> projected_cost_ns(const Ladder& l, int k) const {
     for (auto it = l.tried.rbegin(); it != l.tried.rend(); ++it) {
       if (it->first >= k) continue;
       const MatchTry& t = tries[it->second];
       if ((t.status != RunStatus::ok && t.status != RunStatus::missed) || !(t.done > 0) || !(t.cost_ns > 0))
         return std::nullopt;
-      return t.cost_ns / t.done * double(1L << (k - it->first));
+      const double whole = pace_ ? pace_->project(t.cost_ns, t.done) : t.cost_ns / t.done;
+      return whole * double(1L << (k - it->first));
     }
     return std::nullopt;
   }
@@ -274,7 +277,11 @@ class Search {
     // Every configuration is judged at the scene's own step times (tunnelling at every step).
     r.metrics.sample_every = 1 << k;
     r.series_points = 0;
-    r.stop_on_miss = &o_.spec;
+    // The profile as it is at the scene's own step runs to its end, whatever it misses: its engine
+    // time along the scene is the pace every later try is projected with (cost_pace.h).
+    const bool pace_run = c.knob.empty() && k == 0;
+    r.stop_on_miss = pace_run ? nullptr : &o_.spec;
+    r.record_pace = pace_run;
     r.cost_limit = cost_limit(c);
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
     // The window a found configuration is timed over: from the middle of its run, at a scene step.
@@ -305,7 +312,8 @@ class Search {
     return RunOptions::CostLimit{
         ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
         ceiling ? fmt::format("the match's ceiling ({:g}x our solver's cost)", o_.ceiling)
-                : "the cost of a cheaper configuration"};
+                : "the cost of a cheaper configuration",
+        pace_};
   }
 
   // What decides a try's outcome: its key in the results store.
@@ -339,6 +347,7 @@ class Search {
                                           r.cost_limit->seconds, r.cost_limit->what);
       }
       last_trajectory_ = kept->value("trajectory", "");
+      if (kept->contains("pace")) take_pace(kept->at("pace").get<std::vector<double>>());
       if (kept->contains("window")) {
         write_file_atomically(r.window.checkpoint, kept->at("window").at("scene").get<std::string>(),
                               "the window's scene");
@@ -376,6 +385,7 @@ class Search {
     t.work = double(1L << k) * (decided_by_states ? t.done : 1.0);
     last_trajectory_ = res.checksum_trajectory;
     nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
+    if (r.record_pace && take_pace(res.pace)) kept["pace"] = res.pace;
     std::error_code ec;
     if (t.met && res.window_engine_s && res.engine_s > 0) {
       windows[index] = {r.window.checkpoint, *res.window_engine_s / res.engine_s};
@@ -390,6 +400,12 @@ class Search {
     return t;
   }
 
+  // The pace of the profile's run at the scene's step, where it ran to its end. False: none.
+  bool take_pace(const std::vector<double>& seconds) {
+    if (const auto p = CostPace::from_points(seconds)) pace_ = *p;
+    return pace_.has_value();
+  }
+
   std::string checkpoint_path(int index) const {
     return fmt::format("{}/{}-{}-{}.toml", o_.work_dir, e_.info.name, profile_, index);
   }
@@ -402,6 +418,7 @@ class Search {
   double used_ = 0;                              // work so far, in runs of the scene at dt
   std::optional<double> found_cost_ns_;          // the cost of the configuration found so far
   std::optional<double> ceiling_ns_;             // MatchOptions::ceiling times our solver's cost
+  std::optional<CostPace> pace_;                 // the engine's pace on the scene (cost_pace.h)
   bool hit_ceiling_ = false;                     // a try stopped at the ceiling
   std::string last_trajectory_;                  // the last try's trajectory checksum
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum

@@ -13,6 +13,10 @@
 // over a window of its own run started from the state it saved there. Under a ceiling (a multiple
 // of our solver's cost) every try stops once it costs more: the question a comparison asks is
 // which engine is cheapest, and an engine at 100x the cheapest need not be searched to its end.
+// A try past a limit is known long before its time reaches it: the search's first try (the profile
+// as it is at the scene's own step) runs to its end, whatever it misses, and gives the engine's pace
+// on the scene; every later try stops once its time so far, grown as that pace grows from the same
+// point, projects past kPaceMargin times its limit (cost_pace.h).
 #include <optional>
 #include <string>
 #include <vector>
