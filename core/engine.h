@@ -77,7 +77,7 @@ class SceneUnsupported : public std::runtime_error {
 struct SweepKnob {
   std::string key;
   nlohmann::json values;              // a JSON array of setting values
-  std::vector<std::string> profiles;  // the profiles whose runs it changes; empty: every profile
+  std::vector<std::string> profiles{};  // the profiles whose runs it changes; empty: every profile
 };
 
 // What an engine is to the harness. The report compares `ours` with `external` engines, measures
@@ -127,6 +127,9 @@ struct SpeedCap {
   std::string what;
 };
 
+// An external engine's profiles: as its own documentation recommends for the scene, then as shipped.
+inline const std::vector<std::string> kExternalProfiles{"tuned", "stock"};
+
 struct EngineInfo {
   std::string name;        // as typed on the command line: "home", "box2d"
   std::string version;     // of the engine library or our solver
@@ -164,7 +167,7 @@ struct EngineEntry {
   EngineFactory create;
   // The user's engines file (--engines, BALLBENCH_ENGINES) that registered it, as given; "" for a
   // built-in or an engine of the project's engines.toml. A command reproducing its run names it.
-  std::string engines_file;
+  std::string engines_file{};
 };
 
 // For 3D engines that turn balls about z only: the angle (rad) of the unit quaternion

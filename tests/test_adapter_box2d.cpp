@@ -22,14 +22,14 @@ namespace {
 // what separates the measured ratio from e is float32 round-off: the scene values are rounded to
 // float (relative 6e-8 each) and the impulse takes about ten float operations. 1e-5 is about 80
 // float ulps at 1.0, well above that and far below any solver effect worth seeing.
-constexpr double kRestitutionTol = 1e-5;
+constexpr double kBox2dRestitutionTol = 1e-5;
 
 using calibration::Calibration;
 using calibration::calibration_name;
 using calibration::head_on_scene;
 using calibration::wall_scene;
 
-State run(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
+State run_box2d(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
   return calibration::run_steps("box2d", s, profile, steps, overrides);
 }
 
@@ -39,22 +39,22 @@ TEST_P(Box2dCalibration, BallWallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = wall_scene(e, 5.0);
   // Wall at t = 0.18 s; back at the far wall not before t = 0.18 + 1.8 / 5 = 0.54 s.
-  const State st = run(s, profile, 40);
+  const State st = run_box2d(s, profile, 40);
   const double measured = -st.vel(0, 0) / s.initial.vel(0, 0);  // post / pre normal speed
   RecordProperty("effective_restitution", fmt::format("{:.9g}", measured));
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kBox2dRestitutionTol);
   EXPECT_EQ(st.vel(0, 1), 0.0);  // a frictionless wall gives no tangential push
 }
 
 TEST_P(Box2dCalibration, BallBallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = head_on_scene(e);
-  const State st = run(s, profile, 40);
+  const State st = run_box2d(s, profile, 40);
   const double pre = s.initial.vel(0, 0) - s.initial.vel(1, 0);  // approach speed along the line of centres
   const double post = st.vel(1, 0) - st.vel(0, 0);               // separation speed
   const double measured = post / pre;
   RecordProperty("effective_restitution", fmt::format("{:.9g}", measured));
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kBox2dRestitutionTol);
   // Momentum 1 * 3 + 2 * (-2) = -1 kg m/s is kept by an equal and opposite impulse; float
   // velocities of a few m/s carry about 1e-6 of round-off.
   EXPECT_NEAR(s.mass(0) * st.vel(0, 0) + s.mass(1) * st.vel(1, 0), -1.0, 1e-5);
@@ -70,10 +70,10 @@ INSTANTIATE_TEST_SUITE_P(Profiles, Box2dCalibration,
 TEST(Box2dLimits, StockIgnoresRestitutionBelowOneMeterPerSecond) {
   const Scene s = wall_scene(0.8, 0.5);
   // Wall at t = 1.8 s; 2.5 s leaves time to come back 0.28 m (tuned) but not to reach x = -0.9.
-  const State stock = run(s, "stock", 250);
-  const State tuned = run(s, "tuned", 250);
+  const State stock = run_box2d(s, "stock", 250);
+  const State tuned = run_box2d(s, "tuned", 250);
   EXPECT_NEAR(stock.vel(0, 0), 0.0, 1e-6);  // perfectly inelastic
-  EXPECT_NEAR(-tuned.vel(0, 0) / 0.5, 0.8, kRestitutionTol);
+  EXPECT_NEAR(-tuned.vel(0, 0) / 0.5, 0.8, kBox2dRestitutionTol);
 }
 
 // b2_maxTranslation (2 m per step, compile-time) caps the speed at 2 / dt = 200 m/s at dt = 0.01:
@@ -88,7 +88,7 @@ vel = [300.0, 0.0]
 radius = 0.1
 )",
                               "fast.toml");
-  const State st = run(s, "tuned", 1);
+  const State st = run_box2d(s, "tuned", 1);
   EXPECT_NEAR(st.vel(0, 0), 200.0, 200.0 * 1e-6);  // float rounding of 2 / 0.01f
   EXPECT_NEAR(st.pos(0, 0), 2.0, 2.0 * 1e-6);
 }
@@ -170,7 +170,7 @@ TEST(Box2dAdapter, BadSettingsAreInputErrors) {
 TEST(Box2dAdapter, IsDeterministic) {
   const Scene s = load_scene("seed-box");
   for (const char* profile : {"tuned", "stock"}) {
-    const State a = run(s, profile, 300), b = run(s, profile, 300);
+    const State a = run_box2d(s, profile, 300), b = run_box2d(s, profile, 300);
     EXPECT_EQ(a.pos, b.pos) << profile;
     EXPECT_EQ(a.vel, b.vel) << profile;
   }

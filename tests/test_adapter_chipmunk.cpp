@@ -31,14 +31,14 @@ namespace {
 // first iteration. What separates the measured ratio from e is double round-off: sqrt(e)^2 is e to
 // an ulp and the impulse takes about ten operations, so ~1e-15. 1e-12 is well above that and far
 // below any solver effect worth seeing.
-constexpr double kRestitutionTol = 1e-12;
+constexpr double kChipmunkRestitutionTol = 1e-12;
 
 using calibration::Calibration;
 using calibration::calibration_name;
 using calibration::head_on_scene;
 using calibration::wall_scene;
 
-State run(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
+State run_chipmunk(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
   return calibration::run_steps("chipmunk", s, profile, steps, overrides);
 }
 
@@ -48,24 +48,24 @@ TEST_P(ChipmunkCalibration, BallWallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = wall_scene(e, 5.0);
   // Wall at t = 0.18 s; back at the far wall not before t = 0.18 + 1.8 / 5 = 0.54 s.
-  const State st = run(s, profile, 40);
+  const State st = run_chipmunk(s, profile, 40);
   const double measured = -st.vel(0, 0) / s.initial.vel(0, 0);  // post / pre normal speed
   RecordProperty("effective_restitution", fmt::format("{:.17g}", measured));
   std::printf("chipmunk/%s ball-wall e = %g: measured %.17g\n", profile.c_str(), e, measured);
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kChipmunkRestitutionTol);
   EXPECT_EQ(st.vel(0, 1), 0.0);  // a frictionless wall gives no tangential push
 }
 
 TEST_P(ChipmunkCalibration, BallBallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = head_on_scene(e);
-  const State st = run(s, profile, 40);
+  const State st = run_chipmunk(s, profile, 40);
   const double pre = s.initial.vel(0, 0) - s.initial.vel(1, 0);  // approach speed along the line of centres
   const double post = st.vel(1, 0) - st.vel(0, 0);               // separation speed
   const double measured = post / pre;
   RecordProperty("effective_restitution", fmt::format("{:.17g}", measured));
   std::printf("chipmunk/%s ball-ball e = %g: measured %.17g\n", profile.c_str(), e, measured);
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kChipmunkRestitutionTol);
   // The masses are the scene's: momentum 1 * 3 + 2 * (-2) = -1 kg m/s is kept, and each ball gets
   // its own share of the impulse m1 m2 / (m1 + m2) (1 + e) 5 = (10 / 3) (1 + e).
   EXPECT_NEAR(s.mass(0) * st.vel(0, 0) + s.mass(1) * st.vel(1, 0), -1.0, 1e-12);
@@ -99,14 +99,14 @@ mass = 2.0
                               "glancing.toml");
   for (const char* profile : {"tuned", "stock"}) {
     // Floor at t = 0.3 s; the next wall (x = 0.9) not before t = 0.3 + 0.3 / (2/3) = 0.75 s.
-    const State st = run(s, profile, 40);
+    const State st = run_chipmunk(s, profile, 40);
     EXPECT_NEAR(st.vel(0, 0), 2.0 / 3.0, 1e-12) << profile;
     EXPECT_NEAR(st.vel(0, 1), 1.5, 1e-12) << profile;
   }
   // Frictionless, the same bounce keeps vx: the disc is never spun.
   Scene smooth = s;
   smooth.friction = 0.0;
-  EXPECT_NEAR(run(smooth, "tuned", 40).vel(0, 0), 1.0, 1e-12);
+  EXPECT_NEAR(run_chipmunk(smooth, "tuned", 40).vel(0, 0), 1.0, 1e-12);
 }
 
 TEST(ChipmunkAdapter, InitialStateReadsBackAsTheScenes) {
@@ -210,7 +210,7 @@ TEST(ChipmunkAdapter, BadSettingsAreInputErrors) {
 TEST(ChipmunkAdapter, IsDeterministic) {
   const Scene s = load_scene("seed-box");
   for (const char* profile : {"tuned", "stock"}) {
-    const State a = run(s, profile, 300), b = run(s, profile, 300);
+    const State a = run_chipmunk(s, profile, 300), b = run_chipmunk(s, profile, 300);
     EXPECT_EQ(a.pos, b.pos) << profile;
     EXPECT_EQ(a.vel, b.vel) << profile;
   }

@@ -29,7 +29,7 @@ namespace {
 using calibration::Calibration;
 using calibration::calibration_name;
 
-State run(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
+State run_lammps(const Scene& s, const std::string& profile, int steps, const nlohmann::json& overrides = {}) {
   return calibration::run_steps("lammps", s, profile, steps, overrides);
 }
 
@@ -81,29 +81,29 @@ seed = {}
 // Velocity Verlet at a DEM step of t_c / 50 or less meets the contact's start and end within a
 // step, and integrates the damped oscillation to O((pi / 50)^2): the measured restitution sits
 // within 1% of the law's. Hertz's damping is fitted at the design speed, which both scenes use.
-constexpr double kRestitutionTol = 0.01;
+constexpr double kLammpsRestitutionTol = 0.01;
 
 class LammpsCalibration : public ::testing::TestWithParam<Calibration> {};
 
 TEST_P(LammpsCalibration, BallWallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = calibration::wall_scene(e, 5.0);  // at the wall t = 0.18 s, back by t = 0.4 s
-  const State st = run(s, profile, 40);
+  const State st = run_lammps(s, profile, 40);
   const double measured = -st.vel(0, 0) / s.initial.vel(0, 0);
   RecordProperty("effective_restitution", fmt::format("{:.6g}", measured));
   std::printf("lammps/%s ball-wall e = %g: measured %.6g\n", profile.c_str(), e, measured);
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kLammpsRestitutionTol);
   EXPECT_EQ(st.vel(0, 1), 0.0);
 }
 
 TEST_P(LammpsCalibration, BallBallRestitutionIsTheScenes) {
   const auto [profile, e] = GetParam();
   const Scene s = equal_head_on(e);
-  const State st = run(s, profile, 20);
+  const State st = run_lammps(s, profile, 20);
   const double measured = (st.vel(1, 0) - st.vel(0, 0)) / 5.0;
   RecordProperty("effective_restitution", fmt::format("{:.6g}", measured));
   std::printf("lammps/%s ball-ball e = %g: measured %.6g\n", profile.c_str(), e, measured);
-  EXPECT_NEAR(measured, e, kRestitutionTol);
+  EXPECT_NEAR(measured, e, kLammpsRestitutionTol);
   EXPECT_NEAR(st.vel(0, 0) + st.vel(1, 0), 0.0, 1e-12);  // momentum: pairwise forces, equal masses
 }
 
@@ -330,7 +330,7 @@ TEST(LammpsAdapter, SlidingBallRollsOnAtTheMomentsSpeed) {
   // 2 ranks, the spins from the dumps every 5 steps: the same spin as one rank (measured: equal
   // bits), the angle a trapezoid over 5 steps instead of 1, off at the kink only (measured 0.0030 rad).
   const Scene s = sliding_ball("disk", 0.5);
-  const State one = run(s, "hooke", 50), two = run(s, "hooke", 50, {{"ranks", 2}, {"sample_every", 5}});
+  const State one = run_lammps(s, "hooke", 50), two = run_lammps(s, "hooke", 50, {{"ranks", 2}, {"sample_every", 5}});
   std::printf("lammps 2 ranks vs 1, sliding disk: w %.17g vs %.17g, angle %.9g vs %.9g\n", two.w(0), one.w(0),
               two.angle(0), one.angle(0));
   EXPECT_NEAR(two.w(0), one.w(0), 1e-9);
@@ -350,7 +350,7 @@ TEST(LammpsAdapter, ElasticHookeContactsRefuseFriction) {
   const Result refused = run_engine(s, find_engine("lammps"), o);
   EXPECT_EQ(refused.status, RunStatus::unsupported);
   EXPECT_NE(refused.error.find("would be ignored"), std::string::npos) << refused.error;
-  const State hertz = run(s, "hertz", 50);
+  const State hertz = run_lammps(s, "hertz", 50);
   EXPECT_NEAR(hertz.vel(0, 0) / 2.0, 1.0, 0.01);
 }
 
@@ -394,7 +394,7 @@ TEST(LammpsAdapter, FrictionlessSpinIsKeptAndItsAngleIntegrated) {
   Scene still = s;
   still.initial.w.setZero();
   ASSERT_FALSE(still.features().rotation);
-  EXPECT_EQ(run(still, "hooke", 1).w.size(), 0);
+  EXPECT_EQ(run_lammps(still, "hooke", 1).w.size(), 0);
 }
 
 // mpirun that cannot run its program ends the run as failed, with mpirun's own words.

@@ -24,7 +24,7 @@ namespace {
 // so the ratio falls short by (1 + e) * 1e-8 * m_eff (measured: 1.8e-8 ball-wall, 1.35e-8 for masses
 // 1 and 3); quickstep's SOR (w = 1.3) leaves |1 - w|^20 = 3.5e-11 of one isolated row unsolved;
 // double round-off. 1e-6 is fifty times the largest of these.
-constexpr double kRestitutionTol = 1e-6;
+constexpr double kOdeRestitutionTol = 1e-6;
 
 using calibration::Calibration;
 
@@ -65,7 +65,7 @@ radius = 0.1
                               "ball-wall.toml");
   const auto [pre, post] = first_impact(s, profile);
   const double measured = -post.vel(0, 0) / pre.vel(0, 0);
-  EXPECT_NEAR(measured, e, kRestitutionTol) << profile;
+  EXPECT_NEAR(measured, e, kOdeRestitutionTol) << profile;
   EXPECT_DOUBLE_EQ(post.vel(0, 1), 0.0);  // frictionless: no tangential change
 }
 
@@ -92,7 +92,7 @@ mass = 3.0
   const auto [pre, post] = first_impact(s, profile);
   const double approach = pre.vel(0, 0) - pre.vel(1, 0);
   const double separation = post.vel(1, 0) - post.vel(0, 0);
-  EXPECT_NEAR(separation / approach, e, kRestitutionTol) << profile;
+  EXPECT_NEAR(separation / approach, e, kOdeRestitutionTol) << profile;
   // Momentum: one impulse, equal and opposite; round-off only.
   EXPECT_NEAR(1.0 * post.vel(0, 0) + 3.0 * post.vel(1, 0), 1.0 * pre.vel(0, 0) + 3.0 * pre.vel(1, 0), 1e-12);
 }
@@ -117,7 +117,7 @@ radius = 0.1
                               "slow-wall.toml");
   {
     const auto [pre, post] = first_impact(s, "tuned");
-    EXPECT_NEAR(-post.vel(0, 0) / pre.vel(0, 0), 1.0, kRestitutionTol);
+    EXPECT_NEAR(-post.vel(0, 0) / pre.vel(0, 0), 1.0, kOdeRestitutionTol);
   }
   {
     const auto [pre, post] = first_impact(s, "stock");

@@ -246,7 +246,7 @@ EngineEntry box2d_engine() {
       "multiple contacts; TOI against other balls only for bullets (tuned), capped at 8 sub-steps and 32 contacts; "
       "these constants are compiled into 2.4.1";
   info.summary = "Box2D (float32 sequential impulses + TOI); tuned: elastic fast balls, stock: game defaults";
-  info.profiles = {"tuned", "stock"};
+  info.profiles = kExternalProfiles;
   info.speed_cap = [](double dt, const nlohmann::json&) {  // one b2World::Step per scene step
     return std::optional<SpeedCap>(SpeedCap{b2_maxTranslation / dt, "b2_maxTranslation (2 m per step)"});
   };

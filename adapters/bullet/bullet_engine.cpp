@@ -251,7 +251,7 @@ EngineEntry bullet_engine() {
       "Baumgarte energy (stock -0.04 m); no bounce below restitution_velocity_threshold (stock 0.2 m/s); CCD is "
       "motion clamping of a 0.4 r core against start-of-step positions (tuned only)";
   info.summary = "Bullet Physics (float), 3D spheres held to the plane; sequential impulses";
-  info.profiles = {"tuned", "stock"};
+  info.profiles = kExternalProfiles;
   // Solver sweeps, Bullet's own sub-stepping and CCD off / on (threshold in radii, 0 = off).
   info.settings = bullet_settings_table().describe();
   info.sweep_knobs = {{"solver_iterations", {4, 10, 50}}, {"substeps", {1, 2, 4}}, {"ccd_motion_threshold", {0.0, 1.0}}};

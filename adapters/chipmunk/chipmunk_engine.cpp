@@ -27,7 +27,6 @@ namespace {
 
 static_assert(std::is_same_v<cpFloat, double>, "ballbench needs Chipmunk built with CP_USE_DOUBLES (cpFloat = double)");
 
-constexpr const char* kProfiles[] = {"tuned", "stock"};
 
 // What the library printed on stdout while the first space of this process was created: Debian's
 // libchipmunk is built without NDEBUG, so cpSpaceInit prints "Initializing cpSpace - Chipmunk
@@ -287,7 +286,7 @@ ChipmunkSettings chipmunk_profile(const std::string& profile, const Scene& scene
     s.spatial_index = SpatialIndex::hash;  // "1000s of objects that are all the same size"
     return s;                              // collision_bias: the default (see the README)
   }
-  throw InputError(fmt::format("chipmunk: unknown profile '{}' (known: {})", profile, fmt::join(kProfiles, ", ")));
+  throw InputError(fmt::format("chipmunk: unknown profile '{}' (known: {})", profile, fmt::join(kExternalProfiles, ", ")));
 }
 
 EngineEntry chipmunk_engine() {
@@ -301,7 +300,7 @@ EngineEntry chipmunk_engine() {
       "per step at dt 0.01), by position only; restitution exact for isolated contacts, approximate for simultaneous "
       "ones (iterative solver)";
   info.summary = "Chipmunk2D (double sequential impulses, no CCD); tuned: spatial hash, 30 iterations, small slop";
-  info.profiles = {kProfiles[0], kProfiles[1]};
+  info.profiles = kExternalProfiles;
   info.settings = chipmunk_settings_table().describe();
   info.sweep_knobs = {{"iterations", {5, 10, 30}}, {"spatial_index", {"bbtree", "hash"}}};
   info.caps.open_space = true;

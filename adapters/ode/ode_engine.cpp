@@ -38,7 +38,6 @@ void ensure_ode_ready() {
   if (!dAllocateODEDataForThread(dAllocateMaskAll)) throw std::runtime_error("ode: dAllocateODEDataForThread failed");
 }
 
-constexpr const char* kProfiles[] = {"tuned", "stock"};
 
 // ode's user settings, each declared once: reading, bounds, settings() and `ballbench list
 // --settings ode` come from these rows.
@@ -251,7 +250,7 @@ OdeSettings ode_settings_for_profile(const std::string& profile) {
     s.align_to_plane = true;
     return s;
   }
-  throw InputError(fmt::format("ode: unknown profile '{}' (known: {})", profile, fmt::join(kProfiles, ", ")));
+  throw InputError(fmt::format("ode: unknown profile '{}' (known: {})", profile, fmt::join(kExternalProfiles, ", ")));
 }
 
 EngineEntry ode_engine() {
@@ -268,7 +267,7 @@ EngineEntry ode_engine() {
   info.caps.any_restitution = false;
   info.caps.continuous_collision = false;  // discrete overlap tests only: fast balls tunnel
   info.caps.deterministic = true;          // single-threaded stepping, fixed insertion order
-  info.profiles = {kProfiles[0], kProfiles[1]};
+  info.profiles = kExternalProfiles;
   // Stock uses the hash space, whose cost per ball grows with n (README.md: 49 us per ball-step at
   // 10^4), so 10^5 would take minutes per benchmark. Tuned steps with dWorldStep, a dense LCP over
   // every contact, whose cost grows with the cube of the contacts (a settled pile of 100 balls: 87 ms
