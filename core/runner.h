@@ -74,7 +74,7 @@ struct RunOptions {
   struct CostLimit {
     double seconds = 0;
     std::string what;
-    std::optional<CostPace> pace;
+    std::optional<CostPace> pace{};
   };
   std::optional<CostLimit> cost_limit;
   // Record the run's pace (Result::pace): its engine time at each 1/kPacePoints of its steps.

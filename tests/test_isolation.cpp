@@ -152,7 +152,7 @@ TEST(Isolation, AHangTimesOutAtTheLimit) {
 // it (its engine time checked after any step of 50 ms or more), not at the 64th step.
 TEST(CostLimit, IsCheckedAfterASlowStep) {
   RunOptions o = steps(50);
-  o.cost_limit = RunOptions::CostLimit{0.1, "the cost of a cheaper configuration", std::nullopt};
+  o.cost_limit = RunOptions::CostLimit{0.1, "the cost of a cheaper configuration"};
   const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
   EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
   EXPECT_GE(r.steps_done, 2);
@@ -220,7 +220,7 @@ TEST(CostPace, AProjectionPastTheLimitStopsARunEarly) {
 // made.
 TEST(Isolation, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
   RunOptions o = steps(50);
-  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration", std::nullopt};
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration"};
   const Result r = run_engine_isolated(box(), test_engine("spin", Misbehaviour::Spin), o, {600, ""});
   EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
   EXPECT_NE(r.error.find("s of CPU inside a step"), std::string::npos) << r.error;

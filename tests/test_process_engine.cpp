@@ -212,7 +212,7 @@ TEST(ProcessEngine, AHangIsAnErrorAtTheReplyTimeLimit) {
 // passes the run's cost limit (twice it, and 5 s), not at the reply limit (here 600 s).
 TEST(ProcessEngine, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
   RunOptions o = steps(10);
-  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration", std::nullopt};
+  o.cost_limit = RunOptions::CostLimit{0.5, "the cost of a cheaper configuration"};
   const Result r = run_engine_isolated(box(), misbehaving("spin-step", 600), o, {600, ""});
   // At the reply limit it would be a failed row, "sent no reply within the time limit".
   EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;

@@ -400,10 +400,12 @@ class Search {
     return t;
   }
 
-  // The pace of the profile's run at the scene's step, where it ran to its end. False: none.
+  // The pace of the profile's run at the scene's step, where it ran to its end. False: that run
+  // gave none.
   bool take_pace(const std::vector<double>& seconds) {
-    if (const auto p = CostPace::from_points(seconds)) pace_ = *p;
-    return pace_.has_value();
+    const auto p = CostPace::from_points(seconds);
+    if (p) pace_ = *p;
+    return p.has_value();
   }
 
   std::string checkpoint_path(int index) const {
