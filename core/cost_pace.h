@@ -2,8 +2,9 @@
 // How a run's engine time accrues over the scene (its pace), and what a run stopped part way would
 // cost in whole. A pile's steps grow costlier as it forms, a gas's stay alike: time so far over
 // the share of steps done projects a pile low and stops its costly tries late. A search records the
-// pace of one whole run of each engine and profile (its first try, at the scene's own step: 1/2^k of
-// a try at dt/2^k) and projects every later try of that engine from the same point of the scene.
+// pace of each engine and profile's first try (at the scene's own step: 1/2^k of a try at dt/2^k),
+// to its end or its cost limit, and projects every later try of that engine from the same point of
+// the scene.
 #include <algorithm>
 #include <cstddef>
 #include <optional>
@@ -27,19 +28,29 @@ inline constexpr double kPaceMargin = 1.25;
 class CostPace {
  public:
   CostPace() = default;
-  // The engine time (s) at each 1/kPacePoints of a whole run; anything else (a run that stopped
-  // short, a time that falls or is not positive) is no pace.
+  // The engine time (s) at each 1/kPacePoints of a run's steps, as far as it went: a run stopped
+  // at a cost limit is the pace of what it covered, at least kPaceFrom of the run. Times that fall,
+  // or a last one that is not positive, are no pace.
   static std::optional<CostPace> from_points(const std::vector<double>& seconds);
 
   // The whole run's engine time projected from `spent` (s) at `share` of its steps (0 .. 1): as
-  // much more as the pace's run spent after that share, proportionally.
+  // much more as the pace's run spent after that share, proportionally. Past the share its points
+  // cover, the pace goes on at the rate of its last quarter: the rate a pile's steps only grow from
+  // as it forms, so the projection errs low, never stopping a run that would have stayed under.
   double project(double spent, double share) const;
 
   const std::vector<double>& points() const { return s_; }
 
  private:
+  double at(double share) const;  // the pace's time at `share`, 0 at the start
   std::vector<double> s_;
 };
+
+// What a run that spent `spent` (s) by `share` of its steps costs in whole: at `pace` where there
+// is one, else in proportion to its steps (which projects a forming pile low). None before kPaceFrom
+// of its steps: its time is mostly the engine's start then (a JIT's first compilations), which
+// would project far too high.
+std::optional<double> whole_run_cost(double spent, double share, const CostPace* pace);
 
 // The points of a pace a run of `steps` steps has reached by step k: one per 1/kPacePoints.
 inline size_t pace_points_reached(long k, long steps) {

@@ -30,4 +30,12 @@ void Progress::update(double fraction) {
   }
 }
 
+void Progress::count(size_t done, size_t total, const std::string& what) {
+  if (quiet) return;
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  fmt::print(stderr, "{}{}: {} of {} done after {:.0f} s ({})\n", tty_ && shown_ ? "\n" : "", label_, done, total,
+             elapsed, what);
+  shown_ = false;
+}
+
 }  // namespace ballbench

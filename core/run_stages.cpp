@@ -111,12 +111,12 @@ std::optional<std::string> past_cost_limit(const RunContext& c, const RunOptions
   if (spent > limit.seconds)
     return fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit.seconds, k, c.state.t,
                        limit.what);
+  if (!limit.pace) return std::nullopt;
   const double share = double(k) / double(std::max(1L, c.r.steps));
-  if (!limit.pace || share < kPaceFrom) return std::nullopt;
-  if (const double whole = limit.pace->project(spent, share); whole > kPaceMargin * limit.seconds)
+  if (const auto whole = whole_run_cost(spent, share, &*limit.pace); whole && *whole > kPaceMargin * limit.seconds)
     return fmt::format("its engine time of {:.3g} s at step {} (t = {:g} s), grown as its engine's pace grows from "
                        "there, projects {:.3g} s for the run, past {:g} times {:.3g} s, {}",
-                       spent, k, c.state.t, whole, kPaceMargin, limit.seconds, limit.what);
+                       spent, k, c.state.t, *whole, kPaceMargin, limit.seconds, limit.what);
   return std::nullopt;
 }
 

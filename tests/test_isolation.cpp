@@ -177,8 +177,7 @@ TEST(CostPace, ARunRecordsItsEngineTimeAlongItsSteps) {
 }
 
 // A pace projects a run from a point of its steps as its pace run grew from there: in proportion
-// for steps of equal work, ten times for a pace that spent a tenth by half way; only a whole run's
-// pace, never falling, is one.
+// for steps of equal work, ten times for a pace that spent a tenth by half way; a pace never falls.
 TEST(CostPace, ProjectsAWholeRunFromAPartOfIt) {
   std::vector<double> even(kPacePoints), late(kPacePoints);
   for (int i = 0; i < kPacePoints; ++i) {
@@ -188,11 +187,43 @@ TEST(CostPace, ProjectsAWholeRunFromAPartOfIt) {
   EXPECT_DOUBLE_EQ(CostPace::from_points(even)->project(2.0, 0.25), 8.0);
   EXPECT_NEAR(CostPace::from_points(late)->project(2.0, 0.5), 20.0, 1e-9);
   EXPECT_DOUBLE_EQ(CostPace::from_points(even)->project(2.0, 1.0), 2.0);  // done: what it spent
-  EXPECT_FALSE(CostPace::from_points({1, 2, 3}));                        // a run that stopped short
+  EXPECT_FALSE(CostPace::from_points({1}));  // a run that stopped before kPaceFrom of its steps
   std::vector<double> falling = even;
   std::swap(falling[3], falling[4]);
   EXPECT_FALSE(CostPace::from_points(falling));
   EXPECT_FALSE(CostPace::from_points(std::vector<double>(kPacePoints, 0.0)));
+}
+
+// A pace run stopped at its cost limit part way is the pace of what it covered, and goes on past it
+// at the rate of its last quarter: half a run of equal steps projects as a whole one; one whose
+// steps grew costlier projects at its latest steps' rate, never above the rate it reached.
+TEST(CostPace, APaceStoppedPartWayGoesOnAtItsLastRate) {
+  std::vector<double> half_even(kPacePoints / 2), half_growing(kPacePoints / 2);
+  for (int i = 0; i < kPacePoints / 2; ++i) half_even[i] = i + 1, half_growing[i] = (i + 1) * (i + 1);
+  const auto even = CostPace::from_points(half_even);
+  ASSERT_TRUE(even);
+  EXPECT_DOUBLE_EQ(even->project(2.0, 0.25), 8.0);  // inside what it covered
+  EXPECT_DOUBLE_EQ(even->project(2.0, 0.75), 2.0 / 0.75);  // past it
+  const auto growing = CostPace::from_points(half_growing);
+  ASSERT_TRUE(growing);
+  // Its last quarter (points 12 .. 16: 144 -> 256) goes on at 28 a point, 16 points more: 704.
+  EXPECT_DOUBLE_EQ(growing->project(1.0, 0.5), (256.0 + 28 * 16) / 256.0);
+  // A growing pace's true whole (32^2 = 1024) is above the projection: it errs low.
+  EXPECT_LT(growing->project(1.0, 0.5), 1024.0 / 256.0);
+}
+
+// A try's whole run from what it ran: at the pace, or in proportion without one; never from less
+// than kPaceFrom of its steps (a run that missed at its third step is mostly its engine's start).
+TEST(CostPace, AWholeRunIsProjectedOnlyFromEnoughOfIt) {
+  std::vector<double> even(kPacePoints);
+  for (int i = 0; i < kPacePoints; ++i) even[i] = i + 1;
+  const auto pace = CostPace::from_points(even);
+  EXPECT_DOUBLE_EQ(*whole_run_cost(2.0, 0.25, &*pace), 8.0);
+  EXPECT_DOUBLE_EQ(*whole_run_cost(2.0, 0.25, nullptr), 8.0);
+  EXPECT_DOUBLE_EQ(*whole_run_cost(2.0, 1.0, nullptr), 2.0);
+  EXPECT_FALSE(whole_run_cost(2.0, 0.001, &*pace));
+  EXPECT_FALSE(whole_run_cost(2.0, 0.001, nullptr));
+  EXPECT_TRUE(whole_run_cost(2.0, kPaceFrom, nullptr));
 }
 
 // Steps of 60 ms under a limit of 0.5 s with a pace of equal steps: from 1/16 of the run on, the time

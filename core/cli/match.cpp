@@ -224,17 +224,16 @@ class Search {
   }
 
   // The cost (ns per ball per scene step) of a whole run at dt / 2^k, from the finest completed or
-  // missed try of this configuration before it: its CPU time projected to its whole run at the
-  // engine's pace (else in proportion to its steps, which errs low on a pile, whose steps grow
-  // costlier as it settles), twice per halving since.
+  // missed try of this configuration before it: its CPU time projected to its whole run
+  // (whole_run_cost), twice per halving since.
   std::optional<double> projected_cost_ns(const Ladder& l, int k) const {
     for (auto it = l.tried.rbegin(); it != l.tried.rend(); ++it) {
       if (it->first >= k) continue;
       const MatchTry& t = tries[it->second];
-      if ((t.status != RunStatus::ok && t.status != RunStatus::missed) || !(t.done > 0) || !(t.cost_ns > 0))
-        return std::nullopt;
-      const double whole = pace_ ? pace_->project(t.cost_ns, t.done) : t.cost_ns / t.done;
-      return whole * double(1L << (k - it->first));
+      if ((t.status != RunStatus::ok && t.status != RunStatus::missed) || !(t.cost_ns > 0)) return std::nullopt;
+      const auto whole = whole_run_cost(t.cost_ns, t.done, pace_ ? &*pace_ : nullptr);
+      if (!whole) return std::nullopt;
+      return *whole * double(1L << (k - it->first));
     }
     return std::nullopt;
   }
@@ -277,8 +276,9 @@ class Search {
     // Every configuration is judged at the scene's own step times (tunnelling at every step).
     r.metrics.sample_every = 1 << k;
     r.series_points = 0;
-    // The profile as it is at the scene's own step runs to its end, whatever it misses: its engine
-    // time along the scene is the pace every later try is projected with (cost_pace.h).
+    // The profile as it is at the scene's own step runs to its end (or its cost limit), whatever it
+    // misses: its engine time along the scene is the pace every later try is projected with
+    // (cost_pace.h).
     const bool pace_run = c.knob.empty() && k == 0;
     r.stop_on_miss = pace_run ? nullptr : &o_.spec;
     r.record_pace = pace_run;
@@ -400,8 +400,8 @@ class Search {
     return t;
   }
 
-  // The pace of the profile's run at the scene's step, where it ran to its end. False: that run
-  // gave none.
+  // The pace of the profile's run at the scene's step, as far as it ran. False: that run gave none
+  // (it stopped before kPaceFrom of its steps).
   bool take_pace(const std::vector<double>& seconds) {
     const auto p = CostPace::from_points(seconds);
     if (p) pace_ = *p;
@@ -519,6 +519,7 @@ struct SearchPlan {
   std::vector<std::unique_ptr<Search>> searches;
   std::vector<bool> taken;  // this shard's own (the others only search to set the ceiling)
   std::vector<bool> first;  // sets the ceiling: searched before the rest
+  std::vector<bool> timed;  // its found configuration timed alone (time_found)
   std::vector<std::optional<MatchOutcome>> outcomes;
   std::vector<std::string> every;  // every search of the match, "engine/profile", whichever shard runs it
 };
@@ -541,6 +542,7 @@ SearchPlan plan_searches(const Scene& scene, const std::vector<const EngineEntry
   if (o.ceiling > 0 && std::find(plan.first.begin(), plan.first.end(), true) == plan.first.end())
     throw InputError("--ceiling: a multiple of our solver's cost, and our solver (home) is not among --engine");
   plan.outcomes.resize(plan.searches.size());
+  plan.timed.resize(plan.searches.size());
   return plan;
 }
 
@@ -558,10 +560,20 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   std::atomic<size_t> next{0};
   const auto worker = [&] {
     for (size_t n = next++; n < items.size() && !interrupt_signal(); n = next++) {
-      MatchOutcome oc = plan.searches[items[n]]->run();
+      const auto t0 = std::chrono::steady_clock::now();
+      Search& s = *plan.searches[items[n]];
+      MatchOutcome oc = s.run();
+      const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::lock_guard lock(done_mutex);
+      ++done;
+      if (!o.quiet)
+        progress.count(done, plan.searches.size(),
+                       fmt::format("{}: {}, {} {} in {:.0f} s", run_label(s.entry().info.name, s.profile()),
+                                   oc.reached ? "met at " + configuration_text(s.tries[oc.found])
+                                   : oc.stopped.empty() ? "not met"
+                                                        : "not met: stopped at " + oc.stopped,
+                                   oc.tries, oc.tries == 1 ? "try" : "tries", took));
       plan.outcomes[items[n]] = std::move(oc);
-      if (!o.quiet) progress.update(double(++done) / double(plan.searches.size()));
     }
   };
   std::vector<std::thread> team;
@@ -570,13 +582,31 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   for (auto& t : team) t.join();
 }
 
-// The ceiling from our solver's cheapest configuration found; where it met nothing, nothing is a
-// multiple of its cost: no ceiling.
-void set_ceiling(SearchPlan& plan, const MatchOptions& o, MatchResult& m) {
+// Search i's found configuration timed alone (time_alone), once; where the search was interrupted,
+// its own run's cost stands.
+void time_found(SearchPlan& plan, size_t i, const Scene& scene, const MatchOptions& o) {
+  MatchOutcome& oc = *plan.outcomes[i];
+  if (!oc.reached || plan.timed[i]) return;
+  Search& s = *plan.searches[i];
+  if (interrupt_signal()) {
+    oc.cost_repeats = {s.tries[oc.found].cost_ns}, oc.cost_ns = s.tries[oc.found].cost_ns;
+    return;
+  }
+  const auto w = s.windows.find(oc.found);
+  time_alone(oc, s.tries[oc.found], s.key_of(oc.found), w == s.windows.end() ? nullptr : &w->second, scene,
+             s.entry(), o);
+  plan.timed[i] = true;
+}
+
+// The ceiling from our solver's cheapest configuration found, timed alone (the cost the report
+// shows beside it: "over 80x" is 80 times that); where it met nothing, nothing is a multiple of its
+// cost: no ceiling.
+void set_ceiling(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchResult& m) {
   std::optional<double> ours;
   for (size_t i = 0; i < plan.searches.size(); ++i)
     if (plan.first[i] && plan.outcomes[i] && plan.outcomes[i]->reached) {
-      const double ns = plan.searches[i]->tries[plan.outcomes[i]->found].cost_ns;
+      time_found(plan, i, scene, o);
+      const double ns = plan.outcomes[i]->cost_ns;
       ours = ours ? std::min(*ours, ns) : ns;
     }
   if (!ours) return;
@@ -596,15 +626,9 @@ void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchRe
       m.outcomes.push_back(std::move(oc));
       continue;
     }
+    time_found(plan, i, scene, o);
     MatchOutcome oc = std::move(*plan.outcomes[i]);
     const int offset = int(m.tries.size());
-    if (oc.reached && !interrupt_signal()) {
-      const auto w = s.windows.find(oc.found);
-      time_alone(oc, s.tries[oc.found], s.key_of(oc.found), w == s.windows.end() ? nullptr : &w->second, scene,
-                 s.entry(), o);
-    } else if (oc.reached) {
-      oc.cost_repeats = {s.tries[oc.found].cost_ns}, oc.cost_ns = s.tries[oc.found].cost_ns;
-    }
     const int shown = oc.reached ? oc.found : oc.best;
     if (shown >= 0) oc.command = run_command(scene, s.entry(), s.tries[shown], o);
     if (oc.found >= 0) oc.found += offset;
@@ -631,7 +655,7 @@ MatchResult run_match(const Scene& scene, const std::vector<const EngineEntry*>&
                                 std::min<size_t>(o.jobs, plan.searches.size())));
   size_t done = 0;
   run_phase(plan, true, o, progress, done);
-  if (o.ceiling > 0) set_ceiling(plan, o, m);
+  if (o.ceiling > 0) set_ceiling(plan, scene, o, m);
   run_phase(plan, false, o, progress, done);
   gather(plan, scene, o, m);
   if (interrupt_signal()) m.interrupted = interrupt_name();
