@@ -106,7 +106,7 @@ std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutc
   std::vector<const MatchOutcome*> out;
   const auto [lo, hi] = cost_range(pick);
   for (const MatchOutcome& oc : m.outcomes) {
-    if (&oc == &pick || !oc.reached || oc.cut_short() || oc.role != pick.role) continue;
+    if (oc.engine == pick.engine || !oc.reached || oc.cut_short() || oc.role != pick.role) continue;
     if (const auto [a, b] = cost_range(oc); a <= hi && b >= lo) out.push_back(&oc);
   }
   return out;

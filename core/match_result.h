@@ -125,8 +125,9 @@ std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec);
 // The cheapest outcome of engines of `role` ("ours", "external") that met the spec, or none.
 const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role);
 
-// The other outcomes of engines of `role` that met the spec at a cost the timing cannot tell from
-// `pick`'s: their timing runs' ranges overlap. A pick with such a tie is a pick among equals.
+// The outcomes of the other engines of `pick`'s role that met the spec at a cost the timing cannot
+// tell from `pick`'s: their timing runs' ranges overlap. A pick with such a tie is a pick among
+// equal engines (another profile of the pick's own engine is no other choice of engine).
 std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutcome& pick);
 
 // Of the outcomes of engines of `role` that did not meet the spec, the one whose nearest try came

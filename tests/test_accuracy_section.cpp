@@ -97,6 +97,10 @@ TEST(AccuracySection, ThePickNamesAnEngineItCannotBeToldFrom) {
   m.outcomes[2].cost_repeats = {47500, 48000, 49000};
   EXPECT_TRUE(tied_with(m, m.outcomes[1]).empty());
   EXPECT_TRUE(tied_with(m, m.outcomes[0]).empty());  // ours: no other of its role met it
+  // Another profile of the pick's own engine at the same cost is no other engine to pick.
+  m.outcomes[2] = outcome("chipmunk", "tuned", "external", 3, 3, 7, 46000);
+  m.outcomes[2].cost_repeats = {44000, 45000, 47000};
+  EXPECT_TRUE(tied_with(m, m.outcomes[1]).empty());
 }
 
 TEST(AccuracySection, OneBallIsOneBall) {
