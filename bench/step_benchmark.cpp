@@ -166,21 +166,12 @@ void step_benchmark(benchmark::State& state, const std::string& name, const Engi
       ++settle_steps;
       if (over_budget(fmt::format("in warm-up step {} of {}", k + 1, warm_up))) return;
     }
-    if (options.settle) engine->read(read), start_rms = rms_speed(read);
-    if (options.settle) kept.name = name;
+    if (options.settle) engine->read(read), start_rms = rms_speed(read), kept.name = name;
   } catch (const std::exception& e) {
     engine.reset();
     state.SkipWithError(e.what());
     return;
   }
-  // Only a settled pile's engine outlives this run (its setup is the costly one).
-  struct Release {
-    Prepared& kept;
-    bool keep;
-    ~Release() {
-      if (!keep) kept = Prepared{};
-    }
-  } release{kept, options.settle};
   const auto timed_start = Clock::now();
   const std::optional<double> own_before = engine->own_step_seconds();
   long steps = 0;
@@ -238,6 +229,7 @@ void step_benchmark(benchmark::State& state, const std::string& name, const Engi
     state.counters["settle_steps"] = settle_steps;  // warm-up included
     state.counters["start_rms_speed"] = start_rms;  // m/s, when the first run's timed steps began
   }
+  if (!options.settle) kept = Prepared{};  // only a settled pile's engine outlives its run: its setup is the costly one
 }
 
 }  // namespace

@@ -582,16 +582,12 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   for (auto& t : team) t.join();
 }
 
-// Search i's found configuration timed alone (time_alone), once; where the search was interrupted,
-// its own run's cost stands.
+// Search i's found configuration timed alone (time_alone: after an interrupt, its own run's cost),
+// once.
 void time_found(SearchPlan& plan, size_t i, const Scene& scene, const MatchOptions& o) {
   MatchOutcome& oc = *plan.outcomes[i];
   if (!oc.reached || plan.timed[i]) return;
   Search& s = *plan.searches[i];
-  if (interrupt_signal()) {
-    oc.cost_repeats = {s.tries[oc.found].cost_ns}, oc.cost_ns = s.tries[oc.found].cost_ns;
-    return;
-  }
   const auto w = s.windows.find(oc.found);
   time_alone(oc, s.tries[oc.found], s.key_of(oc.found), w == s.windows.end() ? nullptr : &w->second, scene,
              s.entry(), o);
