@@ -55,6 +55,9 @@ class Engine {
   // state only every k steps (an engine run in other processes that dumps samples). The runner
   // then steps k times between reads, and the metrics judged per step (tunnelling) see the samples.
   virtual int state_stride() const { return 1; }
+  // The caller takes at most this many more steps: an engine that steps ahead of its reads (one in
+  // another process, stepped in batches to spare the pipe's round trips) never steps past them.
+  virtual void plan_steps(long /*steps*/) {}
 };
 
 // Thrown by an engine's factory for a scene it cannot run faithfully that its capabilities cannot

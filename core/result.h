@@ -65,12 +65,13 @@ struct Result {
   // What a search costs the engine by: its CPU time where the run timed it, else its own step
   // clock's, else the harness's (s). Load barely changes it.
   double cost_s() const { return engine_cpu_s.value_or(engine_process_s.value_or(engine_s)); }
-  // The engine's step time over RunOptions::window (s): how that window's cost relates to the
-  // whole run's. JSON "window_engine_s"; none for a run without a window or one that stopped in it.
+  // The engine's step time over RunOptions::window (s), by its own clock where it has one
+  // (engine_process_s's, else engine_s's): how that window's cost relates to the whole run's. JSON
+  // "window_engine_s"; none for a run without a window or one that stopped in it.
   std::optional<double> window_engine_s;
-  // The run's pace where RunOptions::record_pace asked for it: engine_s at each 1/kPacePoints of
-  // its steps, as far as it went (a shape: a projection takes its ratios, to CPU time). JSON
-  // "pace"; absent when not recorded.
+  // The run's pace where RunOptions::record_pace asked for it: the engine's time (by the window's
+  // clock) at each 1/kPacePoints of its steps, as far as it went (a shape: a projection takes its
+  // ratios, to CPU time). JSON "pace"; absent when not recorded.
   std::vector<double> pace;
   double out_of_plane_max = 0;  // 3D engines: max |z| position or velocity seen (see Engine)
   // Every metric of the run's states by catalog key (metrics/catalog.h), as its meters measured

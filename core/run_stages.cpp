@@ -104,6 +104,11 @@ double engine_cpu_seconds(const RunContext& c) {
   return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;
 }
 
+// The engine's time so far by its own clock where it has one (an engine in another process, which
+// may step ahead in batches: the harness's clock around a step would hold a whole batch), else by
+// the harness's around its steps. The pace and the window are read from it.
+double engine_clock_s(const RunContext& c) { return c.engine->own_step_seconds().value_or(c.engine_s); }
+
 // Why the run is past its cost limit at step k: its engine time so far passed it, or, from
 // kPaceFrom of its steps on, projects a whole run past kPaceMargin times it at the limit's pace.
 std::optional<std::string> past_cost_limit(const RunContext& c, const RunOptions::CostLimit& limit, long k) {
@@ -126,14 +131,14 @@ void window(RunContext& c, long k) {
   const RunOptions::Window& w = c.options.window;
   if (w.start < 0) return;
   if (k == w.start) {
-    c.window_start_s = c.engine_s;
+    c.window_start_s = engine_clock_s(c);
     if (!w.checkpoint.empty()) {
       const std::string name = c.scene.name + "-window";
       write_file_atomically(w.checkpoint, scene_at_state(c.scene, c.state, name, double(w.steps) * c.scene.dt).text,
                             "the window's scene");
     }
   }
-  if (k == w.start + w.steps && c.window_start_s >= 0) c.r.window_engine_s = c.engine_s - c.window_start_s;
+  if (k == w.start + w.steps && c.window_start_s >= 0) c.r.window_engine_s = engine_clock_s(c) - c.window_start_s;
 }
 
 // Step k of the loop: the engine's step (timed), then, where the engine provides a state, its
@@ -182,7 +187,7 @@ bool advance(RunContext& c, long k) {
   r.steps_done = k;
   window(c, k);
   if (c.options.record_pace)
-    for (const size_t reached = pace_points_reached(k, r.steps); r.pace.size() < reached;) r.pace.push_back(c.engine_s);
+    for (const size_t reached = pace_points_reached(k, r.steps); r.pace.size() < reached;) r.pace.push_back(engine_clock_s(c));
   if (const auto& limit = c.options.cost_limit;
       limit && (k % kCostCheckSteps == 0 || c.engine_s - c.cost_checked_s > kCostCheckSeconds)) {
     c.cost_checked_s = c.engine_s;
@@ -231,6 +236,7 @@ bool set_up(RunContext& c) {
     return stop(c, RunStatus::failed, 0, fmt::format("building the world failed: {}", e.what()));
   }
   r.settings = c.engine->settings();
+  c.engine->plan_steps(r.steps);
   if (entry.info.speed_cap) c.speed_cap = entry.info.speed_cap(c.scene.dt, r.settings);
   // An engine that provides a state only every `stride` steps is read at those steps alone: every
   // per-step metric (tunnelling, finiteness, leaving the box) is judged on those samples, and the

@@ -36,9 +36,9 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
       if (p.scene == scene && p.n == n && p.error.empty()) return &p;
     return nullptr;
   };
-  put("Engines in another process (`adapters/process/`, the Node engines) pay the pipe on every step: the step "
-      "request, the reply and the state block. The engine's process times its own step call (its ns per ball-step, "
-      "as in the tables above); the harness times the whole round trip; `pipe/noop/default/SCENE/N` is a Node "
+  put("Engines in another process (`adapters/process/`, the Node engines) pay the pipe: a request for several steps, "
+      "the reply and every step's state block. The engine's process times its own step calls (its ns per ball-step, "
+      "as in the tables above); the harness times the whole round trips; `pipe/noop/default/SCENE/N` is a Node "
       "engine that moves nothing (`adapters/node/noop.js`), so its time is the pipe alone.\n\n");
   put("| engine | scene | balls | harness: step and pipe | its own step | pipe alone (`pipe/noop`) |\n"
       "|---|---|---:|---:|---:|---:|\n");

@@ -82,7 +82,7 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   EXPECT_EQ(r.status, RunStatus::ok) << r.error;
   EXPECT_EQ(r.steps_done, 40);
   EXPECT_EQ(r.settings["pair_passes"], 1);
-  EXPECT_EQ(r.settings["process"]["protocol"], 2);
+  EXPECT_EQ(r.settings["process"]["protocol"], 3);
   // The engine's own step time, beside the harness's, which adds the pipe.
   ASSERT_TRUE(r.engine_process_s.has_value());
   EXPECT_GT(*r.engine_process_s, 0);
@@ -230,6 +230,58 @@ TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
   }
 }
 
+// Protocol 3 steps in batches (one round trip for several steps, each step's state and time back):
+// the states and figures are those of stepping one at a time, and what goes wrong inside a batch
+// fails the run at the step it happened, the steps before it kept.
+TEST(ProcessEngine, ABatchGivesTheStatesOfSingleSteps) {
+  const EngineEntry batched = process_engine_entry(spec({"python3", kExample}));
+  const Result a = run_engine(box(), batched, steps(100));
+  ASSERT_EQ(a.status, RunStatus::ok) << a.error;
+  // The same engine stepped one step a request: a protocol 2 handshake of the same program.
+  const std::string dir = (std::filesystem::temp_directory_path() / ("bb_v2." + std::to_string(::getpid()))).string();
+  std::filesystem::create_directories(dir);
+  {
+    std::ifstream in(kExample);
+    std::ofstream out(dir + "/v2.py");
+    for (std::string line; std::getline(in, line);) {
+      if (const auto at = line.find("protocol=3"); at != std::string::npos) line.replace(at, 10, "protocol=2");
+      out << line << "\n";
+    }
+  }
+  const Result b = run_engine(box(), process_engine_entry(spec({"python3", dir + "/v2.py"})), steps(100));
+  std::filesystem::remove_all(dir);
+  ASSERT_EQ(b.status, RunStatus::ok) << b.error;
+  EXPECT_EQ(b.settings["process"]["protocol"], 2);
+  EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
+  EXPECT_EQ(a.metrics.count("samples"), 101);
+  EXPECT_EQ(a.metrics.value("energy.final"), b.metrics.value("energy.final"));
+}
+
+TEST(ProcessEngine, WhatGoesWrongInABatchFailsItsStepAndKeepsTheOnesBefore) {
+  for (const auto& [mode, says] :
+       {std::pair{"batched-error", "refused 'steps' at step 3: the solver lost track of ball 7"},
+        {"batched-long-step-s", "reported a step time of 100000 s for step 3"},
+        {"batched-wrong-t", "sent a state at t = 270 s in reply to 'steps' after 3 step(s)"},
+        {"batched-bad-ids", "ball id 0 at row 1 is not a new index"},
+        {"batched-cumulative-step-s", "reported step times summing to"}}) {
+    const Result r = run_engine(box(), misbehaving(mode), steps(10));
+    EXPECT_EQ(r.status, RunStatus::failed) << mode;
+    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
+    EXPECT_EQ(r.steps_done, 2) << mode << ": " << r.error;
+  }
+  // Fewer step times than asked, with no error to say why, is garbage; a crash loses its batch.
+  const Result shorter = run_engine(box(), misbehaving("batched-short-count"), steps(10));
+  EXPECT_TRUE(has(shorter.error, "step time(s) in reply to 'steps' 2 to 3, and no 'error'")) << shorter.error;
+  const Result crash = run_engine(box(), misbehaving("batched-crash"), steps(10));
+  EXPECT_TRUE(has(crash.error, "exited with status 3")) << crash.error;
+  EXPECT_EQ(crash.steps_done, 1);
+  // A batch never steps past the run's end: a run of 2 steps never reaches the crash at step 3
+  // (batches of 1 and 2 steps would).
+  const Result before = run_engine(box(), misbehaving("batched-crash"), steps(2));
+  EXPECT_EQ(before.status, RunStatus::ok) << before.error;
+  EXPECT_EQ(before.steps_done, 2);
+}
+
 TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   EngineEntry missing = process_engine_entry(spec({"no-such-program-for-ballbench"}));
   EXPECT_TRUE(has(run_engine(box(), missing, steps(5)).error, "'no-such-program-for-ballbench' is not found on PATH"));
@@ -242,7 +294,7 @@ TEST(ProcessEngine, AnEngineThatCannotStartSaysWhy) {
   EXPECT_EQ(r.status, RunStatus::unsupported);
   EXPECT_TRUE(has(r.error, "absent is unavailable here")) << r.error;
   for (const auto& [mode, says] : {std::pair{"unavailable", "the frobnicator library is not installed"},
-                                   {"protocol-3", "speaks protocol version 3"},
+                                   {"protocol-4", "speaks protocol version 4"},
                                    {"no-hello", "refusing to start"}}) {
     ProcessEngineSpec s = spec({"python3", kMisbehaving, mode});
     s.name = "m";

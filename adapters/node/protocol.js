@@ -5,16 +5,30 @@
 // stdout, so console.log is sent to stderr, which the harness keeps for its error messages.
 console.log = console.info = console.warn = console.error;
 
-const PROTOCOL = 2;
+const PROTOCOL = 3;
 
 // A bad setting: the user's error, reported as such by the harness.
 class SettingsError extends Error {}
 
 // One write per reply: each write to the pipe wakes the harness, and a reply in two writes costs
-// two wake-ups.
+// two wake-ups. Corked, the line and the block leave in one system call without being copied
+// together (a batch's block is megabytes).
 function send(reply, block) {
   const line = Buffer.from(JSON.stringify(reply) + '\n');
-  process.stdout.write(block ? Buffer.concat([line, block]) : line);
+  if (!block) return process.stdout.write(line);
+  process.stdout.cork();
+  process.stdout.write(line);
+  process.stdout.write(block);
+  process.stdout.uncork();
+}
+
+// The blocks of a batch's states, kept from one batch to the next: a new one per batch costs its
+// pages' first touch and the collector's time. Written to the pipe before the next batch begins
+// (Node writes to a pipe synchronously on Linux); one still queued is never overwritten.
+let blocks = new Float64Array(0);
+function blockSpace(doubles) {
+  if (blocks.length < doubles || process.stdout.writableLength > 0) blocks = new Float64Array(Math.max(doubles, 2 * blocks.length));
+  return blocks.subarray(0, doubles);
 }
 
 // Settings of a profile with the overrides applied; each override must exist and keep the type.
@@ -37,15 +51,51 @@ const ROTATION_FIELDS = ['id', 'x', 'y', 'vx', 'vy', 'w', 'angle'];
 
 // The state block: n ids, then n x, n y, n vx, n vy (doubles, little-endian: the machine's order),
 // and for a scene that rotates (scene.rotation) n w (rad/s) and n angles (rad) after them.
-function stateReply(world, extra) {
-  const n = world.n, fields = world.rotation ? ROTATION_FIELDS : FIELDS;
-  const block = new Float64Array(fields.length * n);
+function fieldsOf(world) { return world.rotation ? ROTATION_FIELDS : FIELDS; }
+
+function writeState(world, block) {
+  const n = world.n;
   for (let i = 0; i < n; ++i) block[i] = i;  // bodies are kept in scene order
   const col = (k) => block.subarray(k * n, (k + 1) * n);
   if (world.rotation) world.read(col(1), col(2), col(3), col(4), col(5), col(6));
   else world.read(col(1), col(2), col(3), col(4));
-  const reply = Object.assign({ ok: true }, extra, { state: { n, t: world.t, fields } });
-  return [reply, Buffer.from(block.buffer, block.byteOffset, block.byteLength)];
+}
+
+const bytesOf = (a) => Buffer.from(a.buffer, a.byteOffset, a.byteLength);
+
+function stateReply(world, extra) {
+  const block = new Float64Array(fieldsOf(world).length * world.n);
+  writeState(world, block);
+  return [Object.assign({ ok: true }, extra, { state: { n: world.n, t: world.t, fields: fieldsOf(world) } }), bytesOf(block)];
+}
+
+// One step of the world, timed by the engine's clock around its step call alone (s).
+function timedStep(world, dt) {
+  const t0 = process.hrtime.bigint();
+  world.step(dt);
+  const stepS = Number(process.hrtime.bigint() - t0) * 1e-9;
+  world.t += dt;
+  return stepS;
+}
+
+// `count` steps, each one's time and state, in one reply: one round trip of the pipe for them all.
+// A step that throws ends the batch there; the steps before it are sent, with the error.
+function batchReply(world, dt, count) {
+  if (!(Number.isInteger(count) && count >= 1)) throw new Error(`'count' is ${JSON.stringify(count)}, not a whole number >= 1`);
+  const size = fieldsOf(world).length * world.n, space = blockSpace(count * size);
+  const times = [], ts = [];
+  const reply = { ok: true, step_s: times, state: { n: world.n, t: ts, fields: fieldsOf(world) } };
+  for (let k = 0; k < count; ++k) {
+    try {
+      times.push(timedStep(world, dt));
+    } catch (e) {
+      reply.error = e.message || String(e);
+      break;
+    }
+    ts.push(world.t);
+    writeState(world, space.subarray(k * size, (k + 1) * size));
+  }
+  return [reply, bytesOf(space.subarray(0, times.length * size))];
 }
 
 // The moment of inertia a scene asks for, for the settings: 'k m r^2 (disk, k = 0.5)'.
@@ -79,13 +129,13 @@ function serve(driver) {
         return send({ ok: true, settings: world.settings });
       case 'step': {
         if (!world) throw new Error('step before any scene');
-        const t0 = process.hrtime.bigint();
-        world.step(msg.dt);
-        const stepS = Number(process.hrtime.bigint() - t0) * 1e-9;  // the engine's own step call only
-        world.t += msg.dt;
+        const stepS = timedStep(world, msg.dt);
         if (!msg.read) return send({ ok: true, step_s: stepS });
         return send(...stateReply(world, { step_s: stepS }));
       }
+      case 'steps':
+        if (!world) throw new Error('steps before any scene');
+        return send(...batchReply(world, msg.dt, msg.count));
       case 'read':
         if (!world) throw new Error('read before any scene');
         return send(...stateReply(world, {}));

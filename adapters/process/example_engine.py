@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """A ballbench engine in Python (standard library only): a template for your own.
 
-It speaks the engine process protocol (PROTOCOL.md beside this file): JSON requests, one a line, on
-stdin; JSON replies, one a line, on stdout, a state reply followed by its block of little-endian
-doubles. Its physics is the simplest that is right for single contacts: symplectic Euler (velocity
+It speaks the engine process protocol (PROTOCOL.md beside this file), version 3: JSON requests, one
+a line, on stdin; JSON replies, one a line, on stdout, a state reply followed by its block of
+little-endian doubles (a reply to `steps`, by one block per step). Its physics is the simplest that is right for single contacts: symplectic Euler (velocity
 first), walls that mirror a ball back in, and one restitution impulse per approaching overlapping
 pair per step. Run it: ballbench run --scene seed-box --engine "process:python3 adapters/process/example_engine.py"
 """
@@ -118,21 +118,42 @@ def main():
         state = {"n": world.n, "t": world.t, "fields": ["id", "x", "y", "vx", "vy"]}
         send(dict(ok=True, state=state, **extra), world.state_block())
 
+    def timed_step(dt):
+        t0 = time.perf_counter()
+        world.step(dt)
+        step_s = time.perf_counter() - t0  # the engine's own step, nothing of the pipe
+        world.t += dt
+        return step_s
+
+    def send_steps(dt, count):
+        # Each step's time and state in one reply; a step that fails ends the batch there, the
+        # steps before it sent with the error.
+        times, ts, blocks, reply = [], [], [], {"ok": True}
+        for _ in range(count):
+            try:
+                times.append(timed_step(dt))
+            except Exception as e:
+                reply["error"] = f"{type(e).__name__}: {e}"
+                break
+            ts.append(world.t)
+            blocks.append(world.state_block())
+        reply.update(step_s=times, state={"n": world.n, "t": ts, "fields": ["id", "x", "y", "vx", "vy"]})
+        send(reply, b"".join(blocks))
+
     for line in sys.stdin.buffer:  # the harness closing stdin ends the engine
         try:
             msg = json.loads(line)
             op = msg.get("op")
             if op == "hello":
-                send(dict(ok=True, protocol=2, **hello()))
+                send(dict(ok=True, protocol=3, **hello()))
             elif op == "scene":
                 world, settings = load(msg)
                 send({"ok": True, "settings": settings})
+            elif op == "steps":
+                send_steps(msg["dt"], msg["count"])
             elif op == "step":
-                t0 = time.perf_counter()
-                world.step(msg["dt"])
-                step_s = time.perf_counter() - t0  # the engine's own step, nothing of the pipe
-                world.t += msg["dt"]
-                send_state({"step_s": step_s}) if msg.get("read") else send({"ok": True, "step_s": step_s})
+                step_s = timed_step(msg["dt"])
+                send_state({"step_s": step_s}) if msg.get("read", True) else send({"ok": True, "step_s": step_s})
             elif op == "read":
                 send_state({})
             else:

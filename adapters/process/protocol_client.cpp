@@ -235,23 +235,83 @@ ProtocolClient::StepTime ProtocolClient::step(double dt, State& out) {
   const double round_trip = std::chrono::duration<double>(ChildProcess::Clock::now() - sent).count();
   ++steps_, t_ += dt;
   const auto it = j.find("step_s");
-  if (it == j.end() || !it->is_number())
+  if (it == j.end())
     throw child_.failure(fmt::format("sent garbage in reply to 'step' {}: no step time 'step_s' in '{}'", steps_,
                                      excerpt(j.dump())));
-  // The engine's own step time is checked against the harness's clock: it is spent inside the
-  // round trip, so it can be neither 0 nor longer than it (kStepClockTolerance for two clocks).
-  const double own = it->get<double>();
+  const double own = checked_step_time(*it, round_trip);
+  read_state(j, out, "step");
+  return {own, own * (1 - wait_share(round_trip))};
+}
+
+void ProtocolClient::steps(double dt, int count, Batch& out) {
+  out.done = 0;
+  out.failure = nullptr;
+  if (out.states.size() < size_t(count)) out.states.resize(size_t(count)), out.times.resize(size_t(count));
+  const auto sent = ChildProcess::Clock::now();
+  const nlohmann::json j = request({{"op", "steps"}, {"dt", dt}, {"count", count}}, "steps");
+  const double round_trip = std::chrono::duration<double>(ChildProcess::Clock::now() - sent).count();
+  const long first = steps_ + 1;
+  const auto it = j.find("step_s");
+  if (it == j.end() || !it->is_array() || it->size() > size_t(count))
+    throw child_.failure(fmt::format("sent garbage in reply to 'steps' {} to {}: 'step_s' is not a list of at most {} "
+                                     "step times in '{}'",
+                                     first, first + count - 1, count, excerpt(j.dump())));
+  const int done = static_cast<int>(it->size());
+  std::string stopped;  // the engine's word for the step after the last it did
+  if (done < count) {
+    const auto e = j.find("error");
+    if (e == j.end())
+      throw child_.failure(fmt::format("sent {} step time(s) in reply to 'steps' {} to {}, and no 'error' saying why it "
+                                       "stopped short",
+                                       done, first, first + count - 1));
+    stopped = e->is_string() ? e->get<std::string>() : e->dump();
+  }
+  const double waited = wait_share(round_trip);
+  double sum = 0;
+  try {
+    const StateLayout layout = done > 0 ? state_layout(j, "steps", size_t(done)) : StateLayout{};
+    for (int k = 0; k < done; ++k) {
+      ++steps_, t_ += dt;
+      const double own = checked_step_time((*it)[size_t(k)], round_trip);
+      // Steps in one round trip are spent inside it together.
+      if (!((sum += own) <= round_trip + kStepClockTolerance))
+        throw child_.failure(fmt::format("reported step times summing to {:.6g} s for steps {} to {}, longer than the "
+                                         "round trip the harness measured for them ({:.6g} s, tolerance {:g} s): its "
+                                         "own timing cannot be used",
+                                         sum, first, steps_, round_trip, kStepClockTolerance));
+      read_block(layout, size_t(k), out.states[size_t(k)], "steps");
+      out.times[size_t(k)] = {own, own * (1 - waited)};
+      out.done = k + 1;
+    }
+  } catch (...) {
+    out.failure = std::current_exception();
+    return;
+  }
+  if (done < count)
+    out.failure = std::make_exception_ptr(std::runtime_error(
+        fmt::format("engine process {} refused 'steps' at step {}: {}", child_.label(), steps_ + 1, stopped)));
+}
+
+// The engine's own step time is checked against the harness's clock: it is spent inside the
+// round trip, so it can be neither 0 nor longer than it (kStepClockTolerance for two clocks).
+double ProtocolClient::checked_step_time(const nlohmann::json& value, double round_trip) {
+  if (!value.is_number())
+    throw child_.failure(fmt::format("sent garbage in reply to a step: step {}'s time 'step_s' is {}, not a number",
+                                     steps_, excerpt(value.dump())));
+  const double own = value.get<double>();
   if (!(own > 0) || !(own <= round_trip + kStepClockTolerance))
     throw child_.failure(fmt::format("reported a step time of {:.6g} s for step {}, which is {} the round trip the "
                                      "harness measured for it ({:.6g} s, tolerance {:g} s): its own timing cannot be "
                                      "used",
                                      own, steps_, own > 0 ? "longer than" : "not above 0 and so not within", round_trip,
                                      kStepClockTolerance));
-  read_state(j, out, "step");
-  // The process waits for a core only while it has work: between two replies that is this round
-  // trip, so the wait's share of it is the share of the step that other work took.
-  const double waited = round_trip > 0 ? std::clamp(wait_since_s_ / round_trip, 0.0, 1.0) : 0.0;
-  return {own, own * (1 - waited)};
+  return own;
+}
+
+// The process waits for a core only while it has work: between two replies that is this round
+// trip, so the wait's share of it is the share of its steps that other work took.
+double ProtocolClient::wait_share(double round_trip) const {
+  return round_trip > 0 ? std::clamp(wait_since_s_ / round_trip, 0.0, 1.0) : 0.0;
 }
 
 // The state's time is the steps' dts summed, to a relative 1e-9 and the round-off of summing them
@@ -301,64 +361,86 @@ nlohmann::json ProtocolClient::reply(const char* op, bool stop_on_interrupt) {
   throw std::runtime_error(fmt::format("engine process {} refused '{}': {}", child_.label(), op, error));
 }
 
-void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const char* op) {
+ProtocolClient::StateLayout ProtocolClient::state_layout(const nlohmann::json& reply, const char* op, size_t states) {
   const auto it = reply.find("state");
   std::vector<std::string> fields;
-  long n = -1;
-  double t = NAN;
+  StateLayout l;
   try {
     if (it == reply.end()) throw std::runtime_error("no 'state'");
     if (!it->is_object()) throw std::runtime_error("'state' is not an object");
     for (const char* key : {"n", "t", "fields"})
       if (!it->contains(key)) throw std::runtime_error(fmt::format("'{}' is missing", key));
     if (!it->at("n").is_number_integer()) throw std::runtime_error("'n' is not a whole number");
-    if (!it->at("t").is_number()) throw std::runtime_error("'t' is not a number");
-    n = it->at("n").get<long>();
-    t = it->at("t").get<double>();
+    l.n = it->at("n").get<long>();
+    // One state: t is its time; several (a reply to 'steps'): t lists each one's.
+    const nlohmann::json& t = it->at("t");
+    if (std::string_view(op) != "steps") {
+      if (!t.is_number()) throw std::runtime_error("'t' is not a number");
+      l.t = {t.get<double>()};
+    } else {
+      if (!t.is_array() || t.size() != states)
+        throw std::runtime_error(fmt::format("'t' is not a list of {} times, one per step done", states));
+      for (const auto& v : t) {
+        if (!v.is_number()) throw std::runtime_error("'t' holds a non-number");
+        l.t.push_back(v.get<double>());
+      }
+    }
     fields = strings_from(it->at("fields"), "fields", false);
   } catch (const std::exception& e) {
     throw child_.failure(fmt::format("sent garbage in reply to '{}': {} in '{}'", op, e.what(), excerpt(reply.dump())));
   }
-  if (n != n_) throw child_.failure(fmt::format("sent a state of {} balls in reply to '{}'; the scene has {}", n, op, n_));
+  if (l.n != n_) throw child_.failure(fmt::format("sent a state of {} balls in reply to '{}'; the scene has {}", l.n, op, n_));
   constexpr size_t kMaxFields = 16;  // id, x, y, vx, vy and room for more (w, ...), not a memory bomb
   if (fields.size() > kMaxFields)
     throw child_.failure(fmt::format("sent a state of {} fields in reply to '{}' (at most {})", fields.size(), op, kMaxFields));
-  const auto col = [&](const char* name) {
-    return std::find(fields.begin(), fields.end(), name) - fields.begin();
+  const auto col = [&](const char* name) -> long {
+    const long c = std::find(fields.begin(), fields.end(), name) - fields.begin();
+    return c == static_cast<long>(fields.size()) ? -1 : c;
   };
   for (const char* need : {"id", "x", "y", "vx", "vy"})
-    if (col(need) == static_cast<long>(fields.size()))
-      throw child_.failure(fmt::format("sent a state without '{}' in reply to '{}'", need, op));
+    if (col(need) < 0) throw child_.failure(fmt::format("sent a state without '{}' in reply to '{}'", need, op));
   // A scene that rotates needs every ball's angular velocity and angle back (PROTOCOL.md, States).
   if (rotation_)
     for (const char* need : {"w", "angle"})
-      if (col(need) == static_cast<long>(fields.size()))
+      if (col(need) < 0)
         throw child_.failure(fmt::format(
             "sent a state without '{}' in reply to '{}'; the scene rotates (friction or spin), so its states need 'w' and 'angle'",
             need, op));
-  block_.resize(fields.size() * static_cast<size_t>(n));
+  l.id = col("id"), l.x = col("x"), l.y = col("y"), l.vx = col("vx"), l.vy = col("vy");
+  if (rotation_) l.w = col("w"), l.angle = col("angle");
+  l.fields = fields.size();
+  return l;
+}
+
+void ProtocolClient::read_block(const StateLayout& l, size_t k, State& out, const char* op) {
+  const long n = l.n;
+  block_.resize(l.fields * static_cast<size_t>(n));
   const auto deadline = ChildProcess::Clock::now() + std::chrono::duration_cast<ChildProcess::Clock::duration>(
                                                           std::chrono::duration<double>(timeout_s_));
   child_.read_bytes(block_.data(), block_.size() * sizeof(double), deadline);
-  check_time(t, op);
-  out.t = t;
+  check_time(l.t[k], op);
+  out.t = l.t[k];
   out.resize(static_cast<int>(n), rotation_);
-  const double* ids = block_.data() + col("id") * n;
-  const double *x = block_.data() + col("x") * n, *y = block_.data() + col("y") * n;
-  const double *vx = block_.data() + col("vx") * n, *vy = block_.data() + col("vy") * n;
-  const double *w = rotation_ ? block_.data() + col("w") * n : nullptr;
-  const double *angle = rotation_ ? block_.data() + col("angle") * n : nullptr;
-  std::vector<char> seen(static_cast<size_t>(n), 0);
-  for (long k = 0; k < n; ++k) {
-    const double id = ids[k];
-    if (!(id >= 0 && id < static_cast<double>(n) && id == std::floor(id)) || seen[static_cast<size_t>(id)])
+  const double* ids = block_.data() + l.id * n;
+  const double *x = block_.data() + l.x * n, *y = block_.data() + l.y * n;
+  const double *vx = block_.data() + l.vx * n, *vy = block_.data() + l.vy * n;
+  const double *w = rotation_ ? block_.data() + l.w * n : nullptr;
+  const double *angle = rotation_ ? block_.data() + l.angle * n : nullptr;
+  seen_.assign(static_cast<size_t>(n), 0);
+  for (long r = 0; r < n; ++r) {
+    const double id = ids[r];
+    if (!(id >= 0 && id < static_cast<double>(n) && id == std::floor(id)) || seen_[static_cast<size_t>(id)])
       throw child_.failure(
-          fmt::format("sent garbage in reply to '{}': ball id {} at row {} is not a new index below {}", op, id, k, n));
+          fmt::format("sent garbage in reply to '{}': ball id {} at row {} is not a new index below {}", op, id, r, n));
     const long i = static_cast<long>(id);
-    seen[static_cast<size_t>(i)] = 1;
-    out.pos(i, 0) = x[k], out.pos(i, 1) = y[k], out.vel(i, 0) = vx[k], out.vel(i, 1) = vy[k];
-    if (rotation_) out.w(i) = w[k], out.angle(i) = angle[k];
+    seen_[static_cast<size_t>(i)] = 1;
+    out.pos(i, 0) = x[r], out.pos(i, 1) = y[r], out.vel(i, 0) = vx[r], out.vel(i, 1) = vy[r];
+    if (rotation_) out.w(i) = w[r], out.angle(i) = angle[r];
   }
+}
+
+void ProtocolClient::read_state(const nlohmann::json& reply, State& out, const char* op) {
+  read_block(state_layout(reply, op, 1), 0, out, op);
 }
 
 }  // namespace ballbench

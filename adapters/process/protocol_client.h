@@ -3,6 +3,7 @@
 // as JSON lines, states as a block of little-endian doubles after their reply. Each call waits for
 // its reply at most the connection's time limit; a reply that breaks the protocol is an error
 // naming what was wrong, never a guess.
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -19,7 +20,7 @@ namespace ballbench {
 
 // The version the harness speaks; it also takes engines that answer with an older one it lists
 // in PROTOCOL.md (version 1: every capability left out defaults to true, friction included).
-inline constexpr int kProtocolVersion = 2;
+inline constexpr int kProtocolVersion = 3;
 inline constexpr int kOldestProtocolVersion = 1;
 
 // What the handshake says about the engine.
@@ -53,6 +54,20 @@ class ProtocolClient {
   StepTime step(double dt, State& out);
   void read(State& out);
 
+  // Protocol 3's `steps`: several steps of dt in one request, each step's state and time back, so
+  // the pipe's round trip is paid once for them all. The steps before a failure are kept: `done`
+  // of them arrived and were checked, and `failure` holds why the next did not.
+  bool batches() const { return protocol_ >= 3; }
+  struct Batch {
+    std::vector<State> states;  // after each step, in order (the first `done`)
+    std::vector<StepTime> times;
+    int done = 0;
+    std::exception_ptr failure;  // set when fewer than the steps asked for arrived
+  };
+  void steps(double dt, int count, Batch& out);
+  // The bytes of one state's block for the scene loaded, with the fields the harness needs.
+  size_t state_bytes() const { return size_t(n_) * (rotation_ ? 7 : 5) * sizeof(double); }
+
   bool usable() const { return child_.usable(); }
   int protocol() const { return protocol_; }
   // False where the OS does not say how long the process waited for a core: alone_s is own_s.
@@ -62,7 +77,20 @@ class ProtocolClient {
  private:
   nlohmann::json request(const nlohmann::json& message, const char* op);
   nlohmann::json reply(const char* op, bool stop_on_interrupt = false);
-  void read_state(const nlohmann::json& header, State& out, const char* op);
+  // A state reply's header: its columns and the time of each of its `states` blocks.
+  struct StateLayout {
+    long n = 0;
+    std::vector<double> t;
+    long id = 0, x = 0, y = 0, vx = 0, vy = 0, w = -1, angle = -1;  // columns (-1: none)
+    size_t fields = 0;
+  };
+  StateLayout state_layout(const nlohmann::json& reply, const char* op, size_t states);
+  void read_block(const StateLayout& layout, size_t k, State& out, const char* op);
+  void read_state(const nlohmann::json& reply, State& out, const char* op);
+  // The engine's own time for the step just counted, checked against the round trip it lies in.
+  double checked_step_time(const nlohmann::json& value, double round_trip);
+  // The share of the last round trip its process waited for a core.
+  double wait_share(double round_trip) const;
 
   void check_time(double t, const char* op);
 
@@ -78,6 +106,7 @@ class ProtocolClient {
   int n_ = 0;  // balls in the scene loaded
   bool rotation_ = false;  // the scene loaded rotates: states carry w and angle
   std::vector<double> block_;  // the last state's doubles
+  std::vector<char> seen_;     // the ids it held
 };
 
 }  // namespace ballbench

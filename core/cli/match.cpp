@@ -387,8 +387,8 @@ class Search {
     nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
     if (r.record_pace && take_pace(res.pace)) kept["pace"] = res.pace;
     std::error_code ec;
-    if (t.met && res.window_engine_s && res.engine_s > 0) {
-      windows[index] = {r.window.checkpoint, *res.window_engine_s / res.engine_s};
+    if (const double whole = res.engine_process_s.value_or(res.engine_s); t.met && res.window_engine_s && whole > 0) {
+      windows[index] = {r.window.checkpoint, *res.window_engine_s / whole};
       kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"share", windows[index].share}};
     } else {
       std::filesystem::remove(r.window.checkpoint, ec);

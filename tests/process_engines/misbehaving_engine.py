@@ -2,7 +2,7 @@
 """A process engine that misbehaves on purpose (tests/test_process_engine.cpp): balls stay put,
 and at step 3 it does what argv[1] names. For a scene that rotates its states carry w (each
 ball's initial spin) and angle (0), except in mode "no-w", whose states from step 3 on carry no w.
-Modes that misbehave elsewhere: "unavailable", "protocol-3", "no-hello", "name-escape" (a name
+Modes that misbehave elsewhere: "unavailable", "protocol-4", "no-hello", "name-escape" (a name
 with an escape code), "name-all", "profiles-twice", "helper" (starts a process that keeps its
 stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 3), "helper-session" (the helper in a session of its
 own, out of the engine's process group), "helper-exit" (the engine exits at step 3 while its
@@ -11,7 +11,11 @@ float32, the precision declared or not), "settings-at-scene" (a settings error f
 "unsupported" (refuses every scene as unsupported), "speed-cap-bad" (a speed cap below zero), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). And two that behave but take time: "busy-step"
 (every step spends 20 ms of CPU) and "sleep-step" (every step sleeps 20 ms), each reporting its
-step's true time. Test-only: never in an engines file."""
+step's true time. A mode prefixed "batched-" speaks protocol 3 and answers `steps` with each step's
+state, at step 3 doing what the rest of its name says: "error" (the batch stops there, with the
+error), "crash", "long-step-s", "wrong-t", "bad-ids", "short-count" (one step time too few, no
+error), "cumulative-step-s" (each step sleeps 1 ms and reports the time since the batch began, so
+their sum exceeds the round trip) or "none". Test-only: never in an engines file."""
 import array
 import json
 import struct
@@ -19,6 +23,7 @@ import sys
 import time
 
 mode = sys.argv[1] if len(sys.argv) > 1 else "none"
+batched = mode.startswith("batched-")
 out = sys.stdout.buffer
 
 
@@ -44,7 +49,7 @@ for line in sys.stdin.buffer:
             send({"ok": False, "kind": "unavailable", "error": "the frobnicator library is not installed"})
             continue
         name = {"name-escape": "mis\x1b[31mbehaving", "name-all": "all"}.get(mode, "misbehaving")
-        hello = {"ok": True, "protocol": 3 if mode == "protocol-3" else 2, "name": name, "version": "0",
+        hello = {"ok": True, "protocol": 4 if mode == "protocol-4" else 3 if batched else 2, "name": name, "version": "0",
                  "capabilities": {"friction": True}, "profiles": ["default"], "settings_keys": ["level"]}
         if mode == "float-t":
             hello["precision"] = "float"
@@ -67,6 +72,37 @@ for line in sys.stdin.buffer:
         n, t, dt = balls["n"], 0.0, msg["scene"]["dt"]
         rotation = msg["scene"].get("rotation", False)
         send({"ok": True, "settings": {"level": msg["settings"].get("level", 0), "mode": mode}})
+    elif msg["op"] == "steps":
+        began, times, ts, blocks, reply = time.perf_counter(), [], [], [], {"ok": True}
+        for _ in range(msg["count"]):
+            steps += 1
+            t += msg["dt"]
+            step_s = 1e-7
+            if mode == "batched-cumulative-step-s":
+                time.sleep(0.001)
+                step_s = time.perf_counter() - began
+            if steps == 3:
+                if mode == "batched-error":
+                    reply["error"] = "the solver lost track of ball 7"
+                    break
+                if mode == "batched-crash":
+                    sys.exit(3)
+                step_s = 1e5 if mode == "batched-long-step-s" else step_s
+            times.append(step_s)
+            ts.append(270.0 if steps == 3 and mode == "batched-wrong-t" else t)
+            block = array.array("d", [0.0] * n if steps == 3 and mode == "batched-bad-ids" else range(n))
+            for c in ("x", "y"):
+                block.extend(balls[c])
+            block.extend([0.0] * (2 * n))
+            if rotation:
+                block.extend(balls["w"])
+                block.extend([0.0] * n)
+            blocks.append(block.tobytes())
+        if mode == "batched-short-count" and steps >= 3:
+            times.pop()
+        fields = ["id", "x", "y", "vx", "vy"] + (["w", "angle"] if rotation else [])
+        reply.update(step_s=times, state={"n": n, "t": ts, "fields": fields})
+        send(reply, b"".join(blocks))
     else:
         step_s = 1e-7  # 100 ns, inside any round trip
         if msg["op"] == "step":
