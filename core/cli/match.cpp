@@ -114,15 +114,17 @@ class Search {
       : scene_(scene), e_(e), profile_(std::move(profile)), configs_(std::move(configs)), o_(o) {}
 
   // First the profile as it is, coarse to fine until it meets the spec; then each knob setting from
-  // two halvings coarser than that (a knob may let a longer step meet it) down to where the profile
-  // met it (or to the finest step if it never did).
+  // two halvings coarser than that, or than the configuration found where the profile never met (a
+  // knob may let a longer step meet it), down to where the profile met it (or to the finest step if
+  // it never did: a knob that makes steps cheaper, fewer substeps, may meet finer for less).
   MatchOutcome run() {
     MatchOutcome oc;
     oc.engine = e_.info.name, oc.profile = profile_, oc.role = role_name(e_.info.role);
     int met_at = -1;
     for (size_t c = 0; c < configs_.size() && oc.stop == SearchStop::none; ++c) {
       Ladder l;
-      l.first = c == 0 || met_at < 0 ? 0 : std::max(0, met_at - 2);
+      const int from = met_at >= 0 ? met_at : oc.found >= 0 ? tries[oc.found].halvings : -1;
+      l.first = c == 0 || from < 0 ? 0 : std::max(0, from - 2);
       l.last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
       const int found = climb(c, l, oc);
       if (found >= 0 && c == 0) met_at = tries[found].halvings;
@@ -169,13 +171,14 @@ class Search {
   int climb(size_t c, Ladder& l, MatchOutcome& oc) {
     int k = l.first, met = -1;
     while (k >= l.first && k <= l.last && oc.stop == SearchStop::none) {
-      // A step its coarser try's cost already puts well past the ceiling is not run.
-      if (const auto projected = projected_cost_ns(l, k);
-          projected && ceiling_ns_ && *projected > kCeilingProjectionMargin * *ceiling_ns_) {
+      // A step its coarser try's cost already puts well past the ceiling, or past what a knob must
+      // stay under to replace the configuration found, is not run.
+      if (const auto projected = projected_cost_ns(l, k); projected && limit_ns(configs_[c]) &&
+                                                          *projected > kCeilingProjectionMargin * *limit_ns(configs_[c])) {
         l.tried[k] = int(tries.size());
-        tries.push_back(projected_over_ceiling(configs_[c], k, *projected));
+        tries.push_back(projected_over_limit(configs_[c], k, *projected));
         ++oc.tries;
-        hit_ceiling_ = true;
+        if (ceiling_binds(configs_[c])) hit_ceiling_ = true;
         break;
       }
       if (const double need = double(1L << k); used_ + need > o_.budget_runs) {
@@ -238,15 +241,17 @@ class Search {
     return std::nullopt;
   }
 
-  // A try not run: its projected cost is past the ceiling.
-  MatchTry projected_over_ceiling(const Config& c, int k, double projected_ns) const {
+  // A try not run: its projected cost is past its limit.
+  MatchTry projected_over_limit(const Config& c, int k, double projected_ns) const {
     MatchTry t;
     t.engine = e_.info.name, t.profile = profile_, t.knob = c.knob, t.value = c.value;
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
     t.status = RunStatus::over_cost, t.done = 0, t.work = 0;
-    t.why_not = t.error = fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x the match's "
-                                      "ceiling ({} ns)",
-                                      cost_text(projected_ns), kCeilingProjectionMargin, cost_text(*ceiling_ns_));
+    t.why_not = t.error =
+        fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x {} ({} ns)", cost_text(projected_ns),
+                    kCeilingProjectionMargin,
+                    ceiling_binds(c) ? "the match's ceiling" : "the cost a knob must stay under to replace the one found",
+                    cost_text(*limit_ns(c)));
     return t;
   }
 
@@ -304,11 +309,13 @@ class Search {
     const auto knob = knob_limit_ns(c);
     return ceiling_ns_ && (!knob || *ceiling_ns_ < *knob);
   }
+  // The cost a run of configuration c stops at (ns per ball per scene step), if any.
+  std::optional<double> limit_ns(const Config& c) const { return ceiling_binds(c) ? ceiling_ns_ : knob_limit_ns(c); }
   std::optional<RunOptions::CostLimit> cost_limit(const Config& c) const {
     const auto knob = knob_limit_ns(c);
     if (!knob && !ceiling_ns_) return std::nullopt;
     const bool ceiling = ceiling_binds(c);
-    const double ns = ceiling ? *ceiling_ns_ : *knob;
+    const double ns = *limit_ns(c);
     return RunOptions::CostLimit{
         ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
         ceiling ? fmt::format("the match's ceiling ({:g}x our solver's cost)", o_.ceiling)
@@ -376,13 +383,14 @@ class Search {
     if (res.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(res.engine_s, scene_);
     t.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
     t.done = res.steps > 0 ? double(res.steps_done) / double(res.steps) : 1.0;
-    // The budget is charged what the states decide (a run to its end, or to where it missed or
-    // diverged); a run ended by the clock (over cost, hung, crashed) is charged in full, so that
-    // the tries a search can afford never depend on timing.
+    // The budget is charged the ball steps the engine took: a run to its end, or to where it missed,
+    // diverged or passed its cost limit (the engine's CPU time, which load barely moves). A run the
+    // wall clock ended (hung, timed out) or the user interrupted is charged in full.
     const bool decided_by_states = res.status == RunStatus::ok || res.status == RunStatus::missed ||
                                    res.status == RunStatus::diverged || res.status == RunStatus::failed ||
                                    res.status == RunStatus::unsupported;
-    t.work = double(1L << k) * (decided_by_states ? t.done : 1.0);
+    const bool charged_as_done = decided_by_states || res.status == RunStatus::over_cost;
+    t.work = double(1L << k) * (charged_as_done ? t.done : 1.0);
     last_trajectory_ = res.checksum_trajectory;
     nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
     if (r.record_pace && take_pace(res.pace)) kept["pace"] = res.pace;
