@@ -950,8 +950,9 @@ TEST(Cli, ARunKilledWhileWritingItsTrajectoryIsCleanedUpByTheNext) {
 
 // SIGINT before the first step of a scene of ten million balls, while they are placed (random) or
 // checked and built into the engine's and the reference's worlds (a lattice, placed in a moment):
-// the command ends within a few seconds, 130, saying so in one line. The bound is a hang guard, not
-// a speed: a signal that waited for the world in progress would wait tens of seconds.
+// the command ends within seconds, 130, saying so in one line. The bound is a hang guard, not a
+// speed: the run to its end takes some 46 s (this build, idle), and a signal that waited for the
+// world in progress would wait tens of seconds; beside another test's job (ctest -j2) it took 6.8 s.
 TEST(Cli, AnInterruptBeforeTheFirstStepOfTenMillionBallsActsAtOnce) {
   const Scratch s("bb_huge_interrupt");
   const std::string head = "dt = 0.001\nduration = 0.002\n[container]\nkind = \"box\"\nmin = [-50.0, -50.0]\n"
@@ -971,7 +972,7 @@ TEST(Cli, AnInterruptBeforeTheFirstStepOfTenMillionBallsActsAtOnce) {
     std::istringstream(slurp(s / "status")) >> status >> ms;
     const std::string e = slurp(s / "err");
     EXPECT_EQ(status, 130) << scene << " after " << delay << " s: " << e;
-    EXPECT_LT(ms, 5000) << scene << " after " << delay << " s: the signal waited " << ms << " ms";
+    EXPECT_LT(ms, 15000) << scene << " after " << delay << " s: the signal waited " << ms << " ms";
     EXPECT_NE(e.find("ballbench: interrupted by SIGINT"), std::string::npos) << scene << ": " << e;
     EXPECT_EQ(std::count(e.begin(), e.end(), '\n'), 1) << scene << ": " << e;
   }
