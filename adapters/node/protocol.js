@@ -27,7 +27,7 @@ function send(reply, block) {
 // (Node writes to a pipe synchronously on Linux); one still queued is never overwritten.
 let blocks = new Float64Array(0);
 function blockSpace(doubles) {
-  if (blocks.length < doubles || process.stdout.writableLength > 0) blocks = new Float64Array(Math.max(doubles, 2 * blocks.length));
+  if (blocks.length < doubles || process.stdout.writableLength > 0) blocks = new Float64Array(doubles);
   return blocks.subarray(0, doubles);
 }
 
