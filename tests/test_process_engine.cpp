@@ -219,15 +219,20 @@ TEST(ProcessEngine, AStepThatComputesForEverIsKilledAtTheCostLimitsCpuTime) {
   EXPECT_TRUE(has(r.error, "s of CPU inside a step after step 2 of 10")) << r.error;
 }
 
+// The misbehaving engine in `mode` run for 10 steps of seed-box: a failed run whose error says `says`.
+Result failed_saying(const std::string& mode, const std::string& says) {
+  const Result r = run_engine(box(), misbehaving(mode), steps(10));
+  EXPECT_EQ(r.status, RunStatus::failed) << mode;
+  EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
+  return r;
+}
+
 TEST(ProcessEngine, GarbageIsAnErrorQuotingIt) {
   for (const auto& [mode, says] : {std::pair{"garbage", "sent garbage in reply to 'step': 'this is not json'"},
                                    {"short-block", "closed its output after a state block 792 bytes short (of 800)"},
                                    {"bad-ids", "ball id 0 at row 1 is not a new index"},
-                                   {"error", "refused 'step': the solver lost track of ball 7"}}) {
-    const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, RunStatus::failed) << mode;
-    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
-  }
+                                   {"error", "refused 'step': the solver lost track of ball 7"}})
+    failed_saying(mode, says);
 }
 
 // Protocol 3 steps in batches (one round trip for several steps, each step's state and time back):
@@ -263,12 +268,8 @@ TEST(ProcessEngine, WhatGoesWrongInABatchFailsItsStepAndKeepsTheOnesBefore) {
         {"batched-long-step-s", "reported a step time of 100000 s for step 3"},
         {"batched-wrong-t", "sent a state at t = 270 s in reply to 'steps' after 3 step(s)"},
         {"batched-bad-ids", "ball id 0 at row 1 is not a new index"},
-        {"batched-cumulative-step-s", "reported step times summing to"}}) {
-    const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, RunStatus::failed) << mode;
-    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
-    EXPECT_EQ(r.steps_done, 2) << mode << ": " << r.error;
-  }
+        {"batched-cumulative-step-s", "reported step times summing to"}})
+    EXPECT_EQ(failed_saying(mode, says).steps_done, 2) << mode;
   // Fewer step times than asked, with no error to say why, is garbage; a crash loses its batch.
   const Result shorter = run_engine(box(), misbehaving("batched-short-count"), steps(10));
   EXPECT_TRUE(has(shorter.error, "step time(s) in reply to 'steps' 2 to 3, and no 'error'")) << shorter.error;
@@ -663,12 +664,8 @@ TEST(Conform, RunAndMatchMarkARefutedClaim) {
 TEST(ProcessEngine, EachRequestHasOneReplyAndTheStatesTimeIsChecked) {
   for (const auto& [mode, says] :
        {std::pair{"twice", "sent more than one reply before 'step' was asked"},
-        {"wrong-t", "sent a state at t = 270 s in reply to 'step' after 3 step(s), whose dts sum to 0.03 s"}}) {
-    const Result r = run_engine(box(), misbehaving(mode), steps(10));
-    EXPECT_EQ(r.status, RunStatus::failed) << mode;
-    EXPECT_TRUE(has(r.error, says)) << mode << ": " << r.error;
-    EXPECT_LE(r.steps_done, 3) << mode;
-  }
+        {"wrong-t", "sent a state at t = 270 s in reply to 'step' after 3 step(s), whose dts sum to 0.03 s"}})
+    EXPECT_LE(failed_saying(mode, says).steps_done, 3) << mode;
 }
 
 // An engine that declares "precision": "float" may keep its time in float: t is checked to float's
