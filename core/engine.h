@@ -1,6 +1,7 @@
 #pragma once
 // The one door between the harness and a solver: our own solvers and every adapter implement it.
 // An engine never reports metrics; the harness computes them from the states it reads back.
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -58,6 +59,21 @@ class Engine {
   // The caller takes at most this many more steps: an engine that steps ahead of its reads (one in
   // another process, stepped in batches to spare the pipe's round trips) never steps past them.
   virtual void plan_steps(long /*steps*/) {}
+  // Bounds for the steps of a run that wait for another process (RunOptions::stuck): past
+  // `wall_end`, once that process has spent `cpu_s` of CPU on one request, or asked to stop
+  // (interrupt.h: a grace for the step, none once hurried), the step ends the process and throws
+  // StepStuck. An engine in this process is bounded from outside (isolated_run.h): it ignores them.
+  virtual void bound_step(std::optional<std::chrono::steady_clock::time_point> /*wall_end*/,
+                          std::optional<double> /*cpu_s*/) {}
+};
+
+// A step that passed Engine::bound_step's bounds, its engine's process ended.
+class StepStuck : public std::runtime_error {
+ public:
+  enum class By { time_limit, cpu, interrupt };
+  StepStuck(const std::string& what, By by, double cpu_s = 0) : std::runtime_error(what), by(by), cpu_s(cpu_s) {}
+  By by;
+  double cpu_s;  // By::cpu: the CPU it spent on the request (s)
 };
 
 // Thrown by an engine's factory for a scene it cannot run faithfully that its capabilities cannot
@@ -147,6 +163,9 @@ struct EngineInfo {
   // Each run costs far more than its steps: a process to start, thousands of DEM sub-steps per
   // step. The quick report's sweeps and frontiers, hundreds of runs each, leave it out.
   bool costly_runs = false;
+  // It steps in a process of its own (an engine process, PROTOCOL.md), which isolates its crashes
+  // and hangs already: its runs need no forked child, and its process serves run after run.
+  bool own_process = false;
   BenchLimits bench;  // the step benchmark's sizes and settings for it
   // Why the engine cannot run a scene that its capabilities allow, judged from the scene alone
   // (say, friction under gravity among several balls, where `exact` has no closed form), or "";

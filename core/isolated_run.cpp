@@ -72,31 +72,39 @@ void send(int fd, const std::string& text) {
   }
 }
 
+// run_engine() with the isolation's time limit at a step boundary and its trajectory file; what
+// keeps the file from being written goes to `trajectory_error` (the run's result stands).
+Result run_limited(const Scene& scene, const EngineEntry& entry, RunOptions options, const IsolationOptions& isolation,
+                   std::string& trajectory_error) {
+  std::optional<TrajectoryCsv> trajectory;
+  if (!isolation.trajectory_path.empty())
+    trajectory.emplace(isolation.trajectory_path, scene.features().rotation, isolation.trajectory_path + ".tmp"),
+        options.trajectory = &*trajectory;
+  options.deadline = std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                         std::chrono::duration<double>(std::min(isolation.timeout_s, 1e8)));
+  Result r = run_engine(scene, entry, options);
+  if (trajectory) {
+    try {
+      trajectory_error = trajectory->finish();
+    } catch (const InputError& e) {
+      trajectory_error = e.what();
+    }
+  }
+  return r;
+}
+
 [[noreturn]] void child_main(int fd, const Scene& scene, const EngineEntry& entry, RunOptions options,
                              const IsolationOptions& isolation) {
   std::string message;
   g_parent_pipe = fd;
   try {
-    std::optional<TrajectoryCsv> trajectory;
-    if (!isolation.trajectory_path.empty())
-      trajectory.emplace(isolation.trajectory_path, scene.features().rotation, isolation.trajectory_path + ".tmp"),
-          options.trajectory = &*trajectory;
     options.progress = [fd](long done, long total) { send(fd, fmt::format("progress {} {}\n", done, total)); };
     // Its own time limit, at a step boundary, keeps the steps made; the parent's, a grace later,
     // ends a child stuck inside a step.
-    options.deadline = std::chrono::steady_clock::now() +
-                       std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                           std::chrono::duration<double>(std::min(isolation.timeout_s, 1e8)));
-    const Result r = run_engine(scene, entry, options);
-    if (trajectory) {
-      std::string why;
-      try {
-        why = trajectory->finish();
-      } catch (const InputError& e) {
-        why = e.what();
-      }
-      if (!why.empty()) send(fd, "trajectory_error " + one_line(why) + "\n");
-    }
+    std::string trajectory_error;
+    const Result r = run_limited(scene, entry, options, isolation, trajectory_error);
+    if (!trajectory_error.empty()) send(fd, "trajectory_error " + one_line(trajectory_error) + "\n");
     // Invalid UTF-8 in an engine's error text must not lose the result: replace it.
     message = "result " + to_json(r).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
   } catch (const InputError& e) {
@@ -360,6 +368,24 @@ std::string signal_description(int sig) {
 
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
                            const IsolationOptions& isolation) {
+  if (entry.info.own_process) {
+    // Isolated already: a crash there is the engine process's, which the run reports; a step stuck
+    // past the limits a child would be killed at ends that process. Its process serves the next run.
+    RunOptions bounded = options;
+    const double grace = stuck_grace_s(isolation.timeout_s);
+    if (isolation.timeout_s < 1e8)
+      bounded.stuck.wall_end = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                  std::chrono::duration<double>(isolation.timeout_s + grace)),
+      bounded.stuck.wall_what = fmt::format("the time limit of {} s and {:g} s more", isolation.timeout_s, grace);
+    if (options.cost_limit)
+      bounded.stuck.cpu_s = kStuckCostFactor * options.cost_limit->seconds + kStuckCostMargin_s,
+      bounded.stuck.cpu_what = fmt::format("over {:g} times its cost limit and {:g} s more ({})", kStuckCostFactor,
+                                           kStuckCostMargin_s, options.cost_limit->what);
+    std::string trajectory_error;
+    Result r = run_limited(scene, entry, bounded, isolation, trajectory_error);
+    if (isolation.trajectory_error) *isolation.trajectory_error = trajectory_error;
+    return r;
+  }
   Result r = result_header(scene, entry, options);
   int fds[2];
   if (::pipe(fds) != 0) {

@@ -23,8 +23,9 @@ struct IsolationOptions {
   std::string* trajectory_error = nullptr;
 };
 
-// run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits.
-// The same contract as run_engine: throws InputError for bad settings (found by the child), never
+// run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits;
+// for an engine in a process of its own (EngineInfo::own_process), in this process, its steps
+// bounded as the child would be (RunOptions::stuck). The same contract as run_engine: throws InputError for bad settings (found by the child), never
 // for what the engine does. `options.trajectory` must be null (use isolation.trajectory_path);
 // `options.progress` is called in this process, as the child reports progress.
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,

@@ -155,6 +155,23 @@ bool advance(RunContext& c, long k) {
                             r.steps_done, r.steps));
   try {
     c.engine->step(c.scene.dt);
+  } catch (const StepStuck& e) {
+    c.engine_s += seconds_since(t0);
+    const RunOptions::StuckBound& b = c.options.stuck;
+    const std::string after = fmt::format("after step {} of {}", r.steps_done, r.steps);
+    switch (e.by) {
+      case StepStuck::By::cpu:
+        return stop(c, RunStatus::over_cost, k,
+                    fmt::format("its process spent {:.3g} s of CPU inside a step {}, {}: killed", e.cpu_s, after,
+                                b.cpu_what));
+      case StepStuck::By::time_limit:
+        return stop(c, RunStatus::timed_out, k,
+                    fmt::format("no result within {} {} (stuck in a step): killed", b.wall_what, after));
+      case StepStuck::By::interrupt:
+        return stop(c, RunStatus::interrupted, k,
+                    fmt::format("interrupted by {} {}, its engine's process stuck in the step: killed",
+                                interrupt_name(), after));
+    }
   } catch (const std::exception& e) {
     c.engine_s += seconds_since(t0);
     return stop(c, RunStatus::failed, k, fmt::format("step {} threw: {}", k, e.what()));
@@ -237,6 +254,7 @@ bool set_up(RunContext& c) {
   }
   r.settings = c.engine->settings();
   c.engine->plan_steps(r.steps);
+  c.engine->bound_step(c.options.stuck.wall_end, c.options.stuck.cpu_s);
   if (entry.info.speed_cap) c.speed_cap = entry.info.speed_cap(c.scene.dt, r.settings);
   // An engine that provides a state only every `stride` steps is read at those steps alone: every
   // per-step metric (tunnelling, finiteness, leaving the box) is judged on those samples, and the

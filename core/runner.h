@@ -83,6 +83,15 @@ struct RunOptions {
   // measured (an isolated run's child sets it to its time limit; its parent kills a child stuck in
   // a step a grace later); none: no limit.
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  // For an engine in another process, run without a forked child (EngineInfo::own_process): a step
+  // stuck past `wall_end`, or whose process spends `cpu_s` of CPU on it, ends the run there
+  // (timed_out, over_cost) with that process killed (Engine::bound_step); `*_what` says the bound.
+  struct StuckBound {
+    std::optional<std::chrono::steady_clock::time_point> wall_end;
+    std::string wall_what;
+    std::optional<double> cpu_s;
+    std::string cpu_what;
+  } stuck;
   // Where the run's last good state is copied at its end (a run in this process only); null: nowhere.
   State* last_state = nullptr;
   // Called now and then with (steps done, steps total), for progress on long runs.

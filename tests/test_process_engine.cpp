@@ -317,6 +317,36 @@ TEST(ProcessEngine, SettingsErrorsAreTheUsersErrors) {
   EXPECT_THROW(run_engine(box(), e, o), InputError);
 }
 
+// An engine process isolates its runs already: a run of it "isolated" steps it from this process,
+// and its process serves run after run, one per thread that runs it (a process dies with the
+// thread that started it, so no thread is given another's).
+TEST(ProcessEngine, IsolatedRunsReuseTheThreadsEngineProcess) {
+  const std::string log = (std::filesystem::temp_directory_path() / ("bb_pids." + std::to_string(::getpid()))).string();
+  std::filesystem::remove(log);
+  const EngineEntry e = process_engine_entry(spec({"python3", kMisbehaving, "pid-log", log}));
+  ASSERT_TRUE(e.info.own_process);
+  const auto three_runs = [&] {
+    for (int k = 0; k < 3; ++k) {
+      const Result r = run_engine_isolated(box(), e, steps(10), {60, ""});
+      EXPECT_EQ(r.status, RunStatus::ok) << r.error;
+    }
+  };
+  const auto started = [&] {
+    std::ifstream in(log);
+    std::vector<long> pids;
+    for (long p; in >> p;) pids.push_back(p);
+    return pids;
+  };
+  three_runs();  // this thread's: the process of the handshake
+  EXPECT_EQ(started().size(), 1u);
+  std::thread a(three_runs), b(three_runs);
+  a.join(), b.join();
+  EXPECT_EQ(started().size(), 3u);  // one more for each thread
+  three_runs();  // theirs ended with them; this thread's still serves
+  EXPECT_EQ(started().size(), 3u);
+  std::filesystem::remove(log);
+}
+
 TEST(ProcessEngine, ABrokenEngineMarksItsRowAndTheOthersComplete) {
   const EngineEntry crash = misbehaving("crash"), hang = misbehaving("hang", 60);
   const std::vector<const EngineEntry*> engines{&find_engine("home"), &crash, &hang, &find_engine("home-seed")};

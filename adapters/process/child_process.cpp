@@ -10,14 +10,17 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #include <thread>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "engine.h"
 #include "engine_group.h"
 #include "interrupt.h"
 #include "isolated_run.h"
@@ -31,6 +34,11 @@ constexpr auto kExitGrace = std::chrono::milliseconds(500);  // for a child told
 // block is short, whatever the reply time limit, so an engine that stays alive after a short block
 // is named promptly. Far above a pipe's pause under load.
 constexpr auto kBlockPause = std::chrono::seconds(5);
+// How often a wait under a CPU bound, or asked to stop, looks again (ms).
+constexpr int kCpuCheckMs = 250;
+// Seconds a step asked to stop has to end before its process is killed (a forked run's child has
+// as long).
+constexpr int kInterruptGraceS = 10;
 
 int ms_until(ChildProcess::Clock::time_point deadline) {
   const auto left =
@@ -50,14 +58,34 @@ std::string join_argv(const std::vector<std::string>& argv) { return fmt::format
 // (isolated_run.cpp), without destructors: its engines' groups, helpers included, end with it.
 // Never destroyed: engines held by static objects (the registry's process pools) end at exit,
 // after any function-local static would be gone.
+// Threads start engines at once (a search's tries in parallel): the list is shared under a lock,
+// held across every fork so that a forked run's child never inherits it locked mid-change.
 std::vector<std::pair<pid_t, pid_t>>& live_groups() {
   static auto* groups = new std::vector<std::pair<pid_t, pid_t>>;  // (owner, group)
   return *groups;
 }
+std::mutex& live_groups_mutex() {
+  static auto* m = [] {
+    auto* made = new std::mutex;
+    ::pthread_atfork([] { live_groups_mutex().lock(); }, [] { live_groups_mutex().unlock(); },
+                     [] { live_groups_mutex().unlock(); });
+    return made;
+  }();
+  return *m;
+}
 
 void kill_live_groups() {
+  std::lock_guard lock(live_groups_mutex());
   for (const auto& [owner, group] : live_groups())
     if (owner == ::getpid()) kill_engine_group(group);
+}
+
+// A number for the calling thread that no other thread of this process gets (thread ids are
+// reused once a thread ends).
+unsigned long this_thread_number() {
+  static std::atomic<unsigned long> next{1};
+  thread_local const unsigned long number = next++;
+  return number;
 }
 
 // This process's environment for the child, with kEngineGroupVariable's entry last: its value, the
@@ -131,7 +159,7 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
     [[maybe_unused]] const ssize_t w = ::write(status[1], &e, sizeof e);
     ::_exit(127);
   }
-  pid_ = pid, owner_ = parent;
+  pid_ = pid, owner_ = parent, owner_thread_ = this_thread_number();
   ::close(in[0]), ::close(out[1]), ::close(err[1]), ::close(status[1]);
   in_ = in[1], out_ = out[0], err_ = err[0];
   // The status pipe closes at exec (end of file) or carries the errno of a failed chdir or exec.
@@ -157,7 +185,10 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   if (exit_fd_ >= 0) ::fcntl(exit_fd_, F_SETFD, FD_CLOEXEC);
   static const bool at_exit = std::at_quick_exit(kill_live_groups) == 0;
   (void)at_exit;
-  live_groups().emplace_back(owner_, pid_);
+  {
+    std::lock_guard lock(live_groups_mutex());
+    live_groups().emplace_back(owner_, pid_);
+  }
   note_engine_group(pid_, true);
 }
 
@@ -180,12 +211,63 @@ ChildProcess::~ChildProcess() {
   // What the engine started (a helper that kept its output open, in a session of its own or not)
   // ends with it.
   if (pid_ > 0) kill_engine_group(pid_);
-  std::erase(live_groups(), std::pair{owner_, pid_});
+  {
+    std::lock_guard lock(live_groups_mutex());
+    std::erase(live_groups(), std::pair{owner_, pid_});
+  }
   if (pid_ > 0) note_engine_group(pid_, false);
   close_fd(out_), close_fd(err_), close_fd(exit_fd_);
 }
 
 bool ChildProcess::usable() const { return owner_ == ::getpid() && !failed_ && !exited_; }
+
+bool ChildProcess::serves_this_thread() const { return usable() && owner_thread_ == this_thread_number(); }
+
+void ChildProcess::bound(std::optional<Clock::time_point> wall_end, std::optional<double> cpu_s) {
+  bounded_ = true, wall_end_ = wall_end;
+  cpu_bound_s_.reset();
+  if (cpu_s && ::clock_getcpuclockid(pid_, &cpu_clock_) == 0) cpu_bound_s_ = cpu_s, cpu_at_write_s_ = cpu_spent_s();
+}
+
+void ChildProcess::unbound() { bounded_ = false, wall_end_.reset(), cpu_bound_s_.reset(), interrupt_end_.reset(); }
+
+double ChildProcess::cpu_spent_s() const {
+  timespec ts{};
+  if (::clock_gettime(cpu_clock_, &ts) != 0) return 0;
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+int ChildProcess::check_bounds(int wait_ms) {
+  if (!bounded_) return wait_ms;
+  const auto stuck = [&](StepStuck::By by, const std::string& what, double cpu = 0) {
+    ::kill(pid_, SIGKILL);
+    kill_engine_group(pid_);
+    failed_ = true;
+    return StepStuck(fmt::format("{}: {}: killed", label_, what), by, cpu);
+  };
+  if (interrupt_signal()) {  // a grace to end the step, as a forked run's child has
+    const auto grace_end = Clock::now() + std::chrono::seconds(kInterruptGraceS);
+    if (interrupt_hurried()) throw stuck(StepStuck::By::interrupt, "asked again to stop, inside a step");
+    if (!interrupt_end_) interrupt_end_ = grace_end;
+    if (Clock::now() >= *interrupt_end_)
+      throw stuck(StepStuck::By::interrupt, fmt::format("asked to stop, and still in its step {} s later", kInterruptGraceS));
+    wait_ms = std::min(wait_ms, kCpuCheckMs);
+  }
+  if (cpu_bound_s_) {
+    if (const double spent = cpu_spent_s() - cpu_at_write_s_; spent > *cpu_bound_s_)
+      throw stuck(StepStuck::By::cpu, fmt::format("{:.3g} s of CPU on one request, past its bound of {:g} s", spent,
+                                                  *cpu_bound_s_),
+                  spent);
+    wait_ms = std::min(wait_ms, kCpuCheckMs);
+  }
+  if (wall_end_ && Clock::now() >= *wall_end_) throw stuck(StepStuck::By::time_limit, "no reply by the run's time limit");
+  return wall_end_ ? std::min(wait_ms, ms_until(*wall_end_)) : wait_ms;
+}
+
+bool ChildProcess::has_exited() {
+  if (!exited_ && owner_ == ::getpid() && pid_ > 0 && ::waitpid(pid_, &wait_status_, WNOHANG) == pid_) exited_ = true;
+  return exited_;
+}
 
 void ChildProcess::write(const std::string& bytes, Clock::time_point deadline) {
   // A child that exited raises SIGPIPE on the write, which would end the harness: it is blocked
@@ -194,6 +276,7 @@ void ChildProcess::write(const std::string& bytes, Clock::time_point deadline) {
   sigemptyset(&pipe_set);
   sigaddset(&pipe_set, SIGPIPE);
   pthread_sigmask(SIG_BLOCK, &pipe_set, &old);
+  if (cpu_bound_s_) cpu_at_write_s_ = cpu_spent_s();
   const char* p = bytes.data();
   size_t left = bytes.size();
   int error = 0;
@@ -234,8 +317,9 @@ void ChildProcess::pump(Clock::time_point deadline, const char* waiting_for, siz
                                                        : std::string("within the time limit")));
       throw failure(fmt::format("sent no {} within the time limit", waiting_for));
     }
+    const int wait_ms = check_bounds(ms_until(pause_end));
     pollfd fds[3] = {{out_, POLLIN, 0}, {err_, POLLIN, 0}, {exit_seen_ ? -1 : exit_fd_, POLLIN, 0}};
-    const int ready = ::poll(fds, 3, ms_until(pause_end));
+    const int ready = ::poll(fds, 3, wait_ms);
     if (ready < 0 && errno != EINTR) throw failure(fmt::format("cannot be read ({})", std::strerror(errno)));
     if (ready <= 0) continue;
     if (fds[1].revents) drain_stderr();

@@ -7,6 +7,8 @@
 
 #include <chrono>
 #include <cstddef>
+#include <ctime>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +49,19 @@ class ChildProcess {
 
   // True if this process started it (not a fork's inherited copy) and it has not failed.
   bool usable() const;
+  // True if usable and started by the calling thread, which it dies with (prctl): a process kept
+  // for the next run serves only the thread that started it, or another thread's end would kill
+  // it in the middle of a run.
+  bool serves_this_thread() const;
+  // True if the child has exited (asked of the OS without waiting): a process kept for another
+  // thread dies with that thread.
+  bool has_exited();
+  // Bounds on every wait of a run's steps (unbound(): none but each call's deadline): past
+  // `wall_end`, once the child has spent `cpu_s` of CPU since the last write, or asked to stop
+  // (interrupt.h: kInterruptGraceS more, none once hurried), the child is killed and the wait
+  // throws StepStuck (engine.h).
+  void bound(std::optional<Clock::time_point> wall_end, std::optional<double> cpu_s);
+  void unbound();
   // "`node adapters/node/rapier.js`": how errors name it.
   const std::string& label() const { return label_; }
   pid_t pid() const { return pid_; }
@@ -61,11 +76,15 @@ class ChildProcess {
   // an end or a silence says how many of them are missing.
   void pump(Clock::time_point deadline, const char* waiting_for, size_t block_bytes = 0, bool stop_on_interrupt = false);
   void drain_stderr();
+  // Throws StepStuck, the child killed, if a bound is passed; the wait until it could be (ms).
+  int check_bounds(int wait_ms);
+  double cpu_spent_s() const;  // the child's CPU time so far (s)
   std::string exit_description();
 
   std::string label_;
   pid_t pid_ = -1;
   pid_t owner_ = -1;  // the process that started it
+  unsigned long owner_thread_ = 0;  // the thread that started it (a number never reused in this process)
   int in_ = -1, out_ = -1, err_ = -1;
   int exit_fd_ = -1;    // a pidfd of the child: readable once it has exited (-1: none)
   bool exit_seen_ = false;  // exit_fd_ said it exited
@@ -73,6 +92,12 @@ class ChildProcess {
   int wait_status_ = 0;
   std::string inbox_;   // stdout read but not yet taken
   std::string stderr_;  // the last kStderrKeep bytes of stderr
+  bool bounded_ = false;
+  std::optional<Clock::time_point> wall_end_;
+  std::optional<double> cpu_bound_s_;
+  clockid_t cpu_clock_{};
+  double cpu_at_write_s_ = 0;
+  std::optional<Clock::time_point> interrupt_end_;  // asked to stop inside a step: killed then
 };
 
 }  // namespace ballbench

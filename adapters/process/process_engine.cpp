@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -19,23 +20,37 @@ double& handshake_limit_s() {
   return limit;
 }
 
-// The processes of one engine entry that finished a run and wait for the next scene.
+// The processes of one engine entry that finished a run and wait for the next scene. Threads
+// take and return them at once (a search's tries in parallel); each takes only one it started.
 struct ProcessPool {
   ProcessEngineSpec spec;
   std::vector<std::string> settings_keys;
-  std::vector<std::unique_ptr<ProtocolClient>> idle;
 
   std::unique_ptr<ProtocolClient> take() {
-    while (!idle.empty()) {
-      std::unique_ptr<ProtocolClient> c = std::move(idle.back());
-      idle.pop_back();
-      if (c->usable()) return c;  // a fork's inherited copy is not: that process belongs to the parent
+    {
+      std::lock_guard lock(mutex_);
+      // A fork's inherited copy, or one whose process failed or ended, serves nobody.
+      std::erase_if(idle_, [](const auto& c) { return !c->usable() || c->has_exited(); });
+      const auto mine = std::find_if(idle_.begin(), idle_.end(), [](const auto& c) { return c->serves_this_thread(); });
+      if (mine != idle_.end()) {
+        std::unique_ptr<ProtocolClient> c = std::move(*mine);
+        idle_.erase(mine);
+        return c;
+      }
     }
     auto c = std::make_unique<ProtocolClient>(spec.command, spec.cwd, spec.timeout_s);
     c->send_hello();
     c->hello_reply();
     return c;
   }
+  void give_back(std::unique_ptr<ProtocolClient> c) {
+    std::lock_guard lock(mutex_);
+    idle_.push_back(std::move(c));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<ProtocolClient>> idle_;
 };
 
 class ProcessEngine final : public Engine {
@@ -44,7 +59,8 @@ class ProcessEngine final : public Engine {
       : pool_(std::move(pool)), client_(std::move(client)), settings_(std::move(settings)) {}
 
   ~ProcessEngine() override {
-    if (!broken_ && !batch_.failure && client_->usable()) pool_->idle.push_back(std::move(client_));
+    client_->unbound();  // the next run sets its own
+    if (!broken_ && !batch_.failure && client_->usable()) pool_->give_back(std::move(client_));
   }
   ProcessEngine(const ProcessEngine&) = delete;
   ProcessEngine& operator=(const ProcessEngine&) = delete;
@@ -69,6 +85,9 @@ class ProcessEngine final : public Engine {
   }
 
   void plan_steps(long steps) override { planned_ = std::max(0L, steps); }
+  void bound_step(std::optional<std::chrono::steady_clock::time_point> wall_end, std::optional<double> cpu_s) override {
+    client_->bound(wall_end, cpu_s);
+  }
 
   void read(State& out) const override {
     if (!have_state_) {
@@ -171,9 +190,11 @@ EngineEntry working_entry(const ProcessEngineSpec& spec, Handshake h, std::uniqu
   auto pool = std::make_shared<ProcessPool>();
   pool->spec = spec;
   pool->settings_keys = h.settings_keys;
-  pool->idle.push_back(std::move(first));
+  first->set_reply_timeout(spec.timeout_s);  // its handshake's limit may have been a command's shorter one
+  pool->give_back(std::move(first));
   EngineEntry e;
   e.info = std::move(h.info);
+  e.info.own_process = true;
   if (!spec.name.empty()) e.info.name = spec.name;
   const std::string name = e.info.name;
   const std::vector<std::string> profiles = e.info.profiles;
@@ -189,7 +210,7 @@ EngineEntry working_entry(const ProcessEngineSpec& spec, Handshake h, std::uniqu
     try {
       effective = client->load_scene(scene, profile, settings);
     } catch (const SceneUnsupported&) {  // a refusal in order: the process serves the next scene
-      if (client->usable()) pool->idle.push_back(std::move(client));
+      if (client->usable()) pool->give_back(std::move(client));
       throw;
     }
     return std::unique_ptr<Engine>(std::make_unique<ProcessEngine>(pool, std::move(client), std::move(effective)));

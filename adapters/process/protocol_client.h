@@ -69,6 +69,14 @@ class ProtocolClient {
   size_t state_bytes() const { return size_t(n_) * (rotation_ ? 7 : 5) * sizeof(double); }
 
   bool usable() const { return child_.usable(); }
+  bool serves_this_thread() const { return child_.serves_this_thread(); }
+  bool has_exited() { return child_.has_exited(); }
+  // The longest wait for a reply from now on (s).
+  void set_reply_timeout(double seconds) { timeout_s_ = seconds; }
+  void bound(std::optional<ChildProcess::Clock::time_point> wall_end, std::optional<double> cpu_s) {
+    child_.bound(wall_end, cpu_s);
+  }
+  void unbound() { child_.unbound(); }
   int protocol() const { return protocol_; }
   // False where the OS does not say how long the process waited for a core: alone_s is own_s.
   bool measures_wait() const { return wait_.available(); }

@@ -15,7 +15,8 @@ step's true time. A mode prefixed "batched-" speaks protocol 3 and answers `step
 state, at step 3 doing what the rest of its name says: "error" (the batch stops there, with the
 error), "crash", "long-step-s", "wrong-t", "bad-ids", "short-count" (one step time too few, no
 error), "cumulative-step-s" (each step sleeps 1 ms and reports the time since the batch began, so
-their sum exceeds the round trip) or "none". Test-only: never in an engines file."""
+their sum exceeds the round trip) or "none". Mode "pid-log" behaves, and appends its pid to
+argv[2] as it starts (how many processes served the runs). Test-only: never in an engines file."""
 import array
 import json
 import struct
@@ -38,6 +39,10 @@ if mode in ("helper", "helper-hang", "helper-session", "helper-exit"):
     helper = subprocess.Popen(["sleep", "600"], start_new_session=(mode == "helper-session"))
     with open(sys.argv[2], "w") as f:
         f.write(str(helper.pid))
+if mode == "pid-log":
+    import os
+    with open(sys.argv[2], "a") as f:
+        f.write(f"{os.getpid()}\n")
 if mode == "no-hello":
     sys.stderr.write("misbehaving engine: refusing to start\n")
     sys.exit(4)
