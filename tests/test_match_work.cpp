@@ -96,10 +96,12 @@ TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
       EXPECT_LT(t.done, 1.0);
       EXPECT_DOUBLE_EQ(t.work, double(1 << t.halvings) * t.done);
     }
-  // A found configuration is timed alone over its window: one repeat, a positive cost.
+  // A found configuration is timed alone over its window: the repeat asked, more for a short
+  // window, a positive cost.
   for (const MatchOutcome& oc : one.outcomes)
     if (oc.reached) {
-      EXPECT_EQ(oc.cost_repeats.size(), 1u) << oc.engine;
+      EXPECT_GE(oc.cost_repeats.size(), 1u) << oc.engine;
+      EXPECT_LE(oc.cost_repeats.size(), 8u) << oc.engine;
       EXPECT_GT(oc.cost_ns, 0);
     }
 }

@@ -107,7 +107,8 @@ void add_match(CLI::App& app) {
       ->transform(kPositiveNumberOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
-                  "at its middle; the median is reported (default 3; 0: its own run's time)")
+                  "at its middle, more until they hold 0.25 s of its time (at most 8 times as many); the median is "
+                  "reported (default 3; 0: its own run's time)")
       ->check(whole_in_range(0, 100));
   cmd->add_option("--jobs", a->options.jobs,
                   "searches at once (default: the cores); the configurations found are timed alone afterwards")

@@ -435,7 +435,7 @@ class Search {
 };
 
 // The found configuration timed alone: its window, from the state its run saved there, `repeats`
-// times, each scaled by the window's share of that run's engine time (cost per ball per scene step
+// times or more, each scaled by the window's share of that run's engine time (cost per ball per scene step
 // of the whole run); the median is the cost. Where no window ran ok, its own run's cost stands.
 void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_key, const Search::Window* w,
                 const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
@@ -458,17 +458,26 @@ void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_k
     if (!f.knob.empty()) r.overrides = {{f.knob, f.value}};
     r.series_points = 0;
     const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / window_share, scene); };
-    for (int rep = 0; rep < o.repeats && !interrupt_signal(); ++rep) {
+    // A window of milliseconds is at the mercy of a cache miss or a frequency step, and the
+    // ceiling every other search stops at is a multiple of our cost: repeats go on past
+    // o.repeats until they hold kTimedSeconds of the engine's time, at most kRepeatsFactor times.
+    constexpr double kTimedSeconds = 0.25;
+    constexpr int kRepeatsFactor = 8;
+    double timed_s = 0;
+    for (int rep = 0; (rep < o.repeats || (timed_s < kTimedSeconds && rep < kRepeatsFactor * o.repeats)) &&
+                      !interrupt_signal();
+         ++rep) {
       const Result t = o.isolation.enabled ? run_engine_isolated(window, e, r, {o.isolation.timeout_s, ""})
                                            : run_engine(window, e, r);
       if (t.status != RunStatus::ok || t.steps_done < 1) break;
+      timed_s += t.cost_s();
       // CPU time, as while searching: another job on the cores barely changes it (an engine on several
       // threads is charged for each).
       oc.cost_repeats.push_back(whole(t.cost_s()));
       if (t.engine_process_s) pipe.push_back(whole(t.engine_s));
     }
   }
-  const bool timed = !oc.cost_repeats.empty() && int(oc.cost_repeats.size()) == o.repeats;
+  const bool timed = !oc.cost_repeats.empty() && int(oc.cost_repeats.size()) >= o.repeats;
   if (oc.cost_repeats.empty()) {
     oc.cost_repeats = {f.cost_ns};
     if (f.cost_pipe_ns) pipe.push_back(*f.cost_pipe_ns);
