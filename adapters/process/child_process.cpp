@@ -58,12 +58,12 @@ std::string join_argv(const std::vector<std::string>& argv) { return fmt::format
 // (isolated_run.cpp), without destructors: its engines' groups, helpers included, end with it.
 // Never destroyed: engines held by static objects (the registry's process pools) end at exit,
 // after any function-local static would be gone.
-// Threads start engines at once (a search's tries in parallel): the list is shared under a lock,
-// held across every fork so that a forked run's child never inherits it locked mid-change.
 std::vector<std::pair<pid_t, pid_t>>& live_groups() {
   static auto* groups = new std::vector<std::pair<pid_t, pid_t>>;  // (owner, group)
   return *groups;
 }
+// Threads start engines at once (a search's tries in parallel): the list is shared under a lock,
+// held across every fork so that a forked run's child never inherits it locked mid-change.
 std::mutex& live_groups_mutex() {
   static auto* m = [] {
     auto* made = new std::mutex;
@@ -246,9 +246,8 @@ int ChildProcess::check_bounds(int wait_ms) {
     return StepStuck(fmt::format("{}: {}: killed", label_, what), by, cpu);
   };
   if (interrupt_signal()) {  // a grace to end the step, as a forked run's child has
-    const auto grace_end = Clock::now() + std::chrono::seconds(kInterruptGraceS);
     if (interrupt_hurried()) throw stuck(StepStuck::By::interrupt, "asked again to stop, inside a step");
-    if (!interrupt_end_) interrupt_end_ = grace_end;
+    if (!interrupt_end_) interrupt_end_ = Clock::now() + std::chrono::seconds(kInterruptGraceS);
     if (Clock::now() >= *interrupt_end_)
       throw stuck(StepStuck::By::interrupt, fmt::format("asked to stop, and still in its step {} s later", kInterruptGraceS));
     wait_ms = std::min(wait_ms, kCpuCheckMs);

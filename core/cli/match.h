@@ -44,6 +44,13 @@ inline constexpr double kKnobCostMargin = 0.85;
 // steps grow costlier as it settles, and this margin keeps it from skipping what would pass.
 inline constexpr double kCeilingProjectionMargin = 1.5;
 
+// A found configuration's window is timed --repeats times, and more until the repeats hold this
+// much of its engine's time (s), at most kTimingRepeatsFactor times as many: a window of
+// milliseconds is at the mercy of a cache miss or a frequency step, and the ceiling every other
+// search stops at is a multiple of our cost.
+inline constexpr double kTimedSeconds = 0.25;
+inline constexpr int kTimingRepeatsFactor = 8;
+
 // The window a found configuration is timed over: this fraction of its run, from its middle, and at
 // least kMinWindowSteps of its steps (up to the run's second half): a window of a cheap engine at a
 // coarse step lasts milliseconds, too short to time.
