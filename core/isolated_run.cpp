@@ -368,7 +368,7 @@ std::string signal_description(int sig) {
 
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
                            const IsolationOptions& isolation) {
-  if (entry.info.own_process) {
+  if (entry.info.own_process && !isolation.fresh_process) {
     // Isolated already: a crash there is the engine process's, which the run reports; a step stuck
     // past the limits a child would be killed at ends that process. Its process serves the next run.
     RunOptions bounded = options;

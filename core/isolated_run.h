@@ -21,6 +21,10 @@ struct IsolationOptions {
   // Where the child's failure to write that file is said (why: "File too large"), if not null: the
   // run's result stands, its rows are lost.
   std::string* trajectory_error = nullptr;
+  // An engine in a process of its own runs in a forked child all the same, which starts a process
+  // of its own for it: a timing repeat in a fresh process. (A Node engine's speed differs from one
+  // process to the next: box2d3's pile window read 9 200 ns in one and 16 500 in another.)
+  bool fresh_process = false;
 };
 
 // run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits;

@@ -98,7 +98,7 @@ std::optional<double> front_error(const MatchTry& t, const AccuracySpec& spec) {
 const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& role) {
   const MatchOutcome* best = nullptr;
   for (const MatchOutcome& oc : m.outcomes)
-    if (oc.reached && !oc.cut_short() && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
+    if (oc.ranked() && oc.role == role && (!best || oc.cost_ns < best->cost_ns)) best = &oc;
   return best;
 }
 
@@ -106,7 +106,7 @@ std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutc
   std::vector<const MatchOutcome*> out;
   const auto [lo, hi] = cost_range(pick);
   for (const MatchOutcome& oc : m.outcomes) {
-    if (oc.engine == pick.engine || !oc.reached || oc.cut_short() || oc.role != pick.role) continue;
+    if (oc.engine == pick.engine || !oc.ranked() || oc.role != pick.role) continue;
     if (const auto [a, b] = cost_range(oc); a <= hi && b >= lo) out.push_back(&oc);
   }
   return out;
@@ -117,7 +117,7 @@ std::optional<double> ratio_at_least(const MatchResult& m, const MatchOutcome& o
   bool ceiling = false;
   for (const MatchOutcome& oc : m.outcomes) {
     if (oc.role != role_name(EngineRole::external)) continue;
-    if (oc.reached || oc.stop == SearchStop::budget || oc.stop == SearchStop::interrupt) return std::nullopt;
+    if (oc.ranked() || oc.stop == SearchStop::budget || oc.stop == SearchStop::interrupt) return std::nullopt;
     ceiling = ceiling || oc.stop == SearchStop::ceiling;
   }
   return ceiling ? std::optional(m.ceiling_ns / ours.cost_ns) : std::nullopt;
@@ -127,8 +127,9 @@ const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& r
   const MatchOutcome* nearest = nullptr;
   double nearest_miss = 0;
   for (const MatchOutcome& oc : m.outcomes) {
-    if (oc.reached || oc.role != role || oc.best < 0) continue;
-    const double d = miss(m.tries[oc.best], m.spec);
+    const int shown = oc.over_ceiling() ? oc.found : oc.best;
+    if ((oc.reached && !oc.over_ceiling()) || oc.role != role || shown < 0) continue;
+    const double d = miss(m.tries[shown], m.spec);
     if (std::isfinite(d) && (!nearest || d < nearest_miss)) nearest = &oc, nearest_miss = d;
   }
   return nearest;
@@ -158,6 +159,22 @@ MatchTry match_try_from_json(const nlohmann::json& q) {
   return t;
 }
 
+namespace {
+
+nlohmann::json also_met_json(const MatchOutcome& o) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const MatchAlternative& a : o.also_met) out.push_back({{"try", a.index}, {"cost_ns", a.cost_ns}});
+  return out;
+}
+
+}  // namespace
+
+void MatchOutcome::shift_tries(int offset) {
+  for (int* k : {&found, &best})
+    if (*k >= 0) *k += offset;
+  for (MatchAlternative& a : also_met) a.index += offset;
+}
+
 nlohmann::json to_json(const MatchResult& m) {
   nlohmann::json tries = nlohmann::json::array(), outcomes = nlohmann::json::array();
   for (const MatchTry& t : m.tries) tries.push_back(to_json(t));
@@ -167,7 +184,8 @@ nlohmann::json to_json(const MatchResult& m) {
                         {"finest_dt", o.finest_dt}, {"cost_repeats", o.cost_repeats}, {"cost_ns", o.cost_ns},
                         {"cost_pipe_ns", o.cost_pipe_ns ? nlohmann::json(*o.cost_pipe_ns) : nlohmann::json()},
                         {"work", o.work}, {"stored", o.stored}, {"timing_stored", o.timing_stored},
-                        {"stop", search_stop_text(o.stop)}, {"stopped", o.stopped}, {"command", o.command}});
+                        {"stop", search_stop_text(o.stop)}, {"stopped", o.stopped}, {"command", o.command},
+                        {"also_met", also_met_json(o)}});
   return {{"kind", "match"},         {"scene", m.scene},     {"scene_source", m.scene_source},
           {"scene_class", m.scene_class}, {"use_case", m.use_case}, {"scene_digest", m.scene_digest},
           {"searches", m.searches},  {"n", m.n},        {"dt", m.dt},
@@ -213,8 +231,13 @@ MatchResult match_from_json(const nlohmann::json& j) {
     o.stopped = q.at("stopped").get<std::string>(), o.command = q.at("command").get<std::string>();
     o.stop = search_stop_from_text(q.value("stop", ""));
     o.work = q.value("work", 0.0), o.stored = q.value("stored", 0), o.timing_stored = q.value("timing_stored", false);
+    for (const auto& a : q.value("also_met", nlohmann::json::array()))  // none in files written before
+      o.also_met.push_back({a.at("try").get<int>(), a.at("cost_ns").get<double>()});
     for (int k : {o.found, o.best})
       if (k >= int(m.tries.size())) throw InputError(fmt::format("outcomes: try {} is not in tries", k));
+    for (const MatchAlternative& a : o.also_met)
+      if (a.index < 0 || a.index >= int(m.tries.size()))
+        throw InputError(fmt::format("outcomes: also_met try {} is not in tries", a.index));
     m.outcomes.push_back(std::move(o));
   }
   return m;
@@ -283,8 +306,7 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
     const int offset = int(out.tries.size());
     out.tries.insert(out.tries.end(), s.tries.begin(), s.tries.end());
     for (MatchOutcome o : s.outcomes) {
-      if (o.found >= 0) o.found += offset;
-      if (o.best >= 0) o.best += offset;
+      o.shift_tries(offset);
       out.outcomes.push_back(std::move(o));
     }
   }

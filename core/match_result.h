@@ -39,14 +39,35 @@ struct MatchTry {
   nlohmann::json settings;       // the engine's effective settings
 };
 
-// Why a search ended without meeting the spec: it tried its finest step, it spent its budget, its
-// tries passed the match's ceiling (MatchResult::ceiling_ns), or the user interrupted it.
+// A try's CPU time while searching moves 10-25% with what else runs on the cores (this 2-core VM,
+// idle against beside two CPU-bound jobs). A cost this many times a limit is past it under any such
+// load: a try stops at this multiple of the match's ceiling (one under the ceiling never does, and
+// one between is reported over it whether it stopped or met), and a configuration that met at this
+// multiple of the cheapest one is not timed alone.
+inline constexpr double kClearlyCostlier = 1.5;
+
+// Of the configurations timed alone, a later one in search order (the profile as it is, then each
+// knob in the engine's order) is found instead of an earlier one only when it costs less than this
+// fraction of it: configurations of one cost (twice the substeps at twice the step) must not trade
+// places with the timing's noise.
+inline constexpr double kKnobCostMargin = 0.85;
+
+// Why a search ended without a ranked result: it tried its finest step, it spent its budget, its
+// tries (or the configuration it met, timed alone) passed the match's ceiling
+// (MatchResult::ceiling_ns), or the user interrupted it.
 enum class SearchStop { none, finest_step, budget, ceiling, interrupt };
 
 // Its word in results files ("finest step", "budget", ...); search_stop_from_text reads it back
 // and throws InputError for any other.
 const char* search_stop_text(SearchStop s);
 SearchStop search_stop_from_text(std::string_view text);
+
+// A configuration of the same engine and profile that met the spec and was timed alone beside the
+// one found (index into MatchResult::tries, and its cost as MatchOutcome::cost_ns).
+struct MatchAlternative {
+  int index = -1;
+  double cost_ns = 0;
+};
 
 // Each search's outcome: the cheapest configuration that met the spec, or the best one tried.
 struct MatchOutcome {
@@ -68,9 +89,20 @@ struct MatchOutcome {
   SearchStop stop = SearchStop::none;  // why the search ended without a result
   std::string stopped;   // the same, with its figures ("the budget (600 runs at dt, ...)"), or ""
   std::string command;   // the `ballbench run` that reproduces the found (or best) point
+  // The other configurations that met the spec and were timed beside the found one, their repeats
+  // interleaved with its: the found one is the first in search order whose cost is within the
+  // timing's noise of the cheapest of them (match.h), and these are what it was chosen over.
+  std::vector<MatchAlternative> also_met;
   // It met the spec, but stopped (the budget, an interrupt) before trying every configuration: a
   // cheaper one may exist, so its cost is an upper bound and it is never ranked.
   bool cut_short() const { return reached && (stop == SearchStop::budget || stop == SearchStop::interrupt); }
+  // It met the spec, but its cost timed alone is past the match's ceiling: reported beside the
+  // engines whose tries stopped there, not ranked.
+  bool over_ceiling() const { return reached && stop == SearchStop::ceiling; }
+  // Met, its search complete and its cost under any ceiling: ranked against the others.
+  bool ranked() const { return reached && stop == SearchStop::none; }
+  // Its try indices moved by `offset`: its tries placed after `offset` others in one list.
+  void shift_tries(int offset);
 };
 
 struct MatchResult {
@@ -130,8 +162,9 @@ const MatchOutcome* cheapest_reached(const MatchResult& m, const std::string& ro
 // equal engines (another profile of the pick's own engine is no other choice of engine).
 std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutcome& pick);
 
-// Of the outcomes of engines of `role` that did not meet the spec, the one whose nearest try came
-// closest (the smallest miss), or none: the engine to name where none met it.
+// Of the outcomes of engines of `role` that are not ranked (did not meet the spec, or met it past the
+// ceiling), the one whose nearest try came closest (the smallest miss; a configuration met past the
+// ceiling, its own), or none: the engine to name where none is ranked.
 const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role);
 
 // Where no external engine met the spec, at least one stopped at the match's ceiling and none ran

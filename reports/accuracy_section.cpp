@@ -37,7 +37,7 @@ std::vector<const MatchOutcome*> ranked_rows(const MatchResult& m) {
   std::vector<const MatchOutcome*> rows;
   for (const MatchOutcome& oc : m.outcomes) rows.push_back(&oc);
   std::stable_sort(rows.begin(), rows.end(), [](const MatchOutcome* a, const MatchOutcome* b) {
-    const bool ranked_a = a->reached && !a->cut_short(), ranked_b = b->reached && !b->cut_short();
+    const bool ranked_a = a->ranked(), ranked_b = b->ranked();
     if (ranked_a != ranked_b) return ranked_a;
     return ranked_a && a->cost_ns < b->cost_ns;
   });
@@ -61,6 +61,7 @@ void put_match_table(std::string& md, const ReportInputs& in, const MatchResult&
     md += fmt::format("| {} | {} | ", label,
                       v == MatchVerdict::met         ? "yes"
                       : v == MatchVerdict::cut_short ? markdown_cell("cut short: " + miss_text(m, *oc))
+                      : v == MatchVerdict::over_ceiling ? markdown_cell("yes, " + miss_text(m, *oc))
                                                      : markdown_cell("no: " + miss_text(m, *oc)));
     if (shown < 0) {
       md += "n/a | n/a |";
@@ -86,8 +87,9 @@ void put_match_method(std::string& md, const MatchResult& m) {
                       "a term that only grows passed its bound.",
                       m.budget_runs, m.budget_runs * double(m.run_ball_steps));
   if (m.ceiling_ns > 0)
-    md += fmt::format(" Ceiling: a try stopped once its CPU time passed {:g}x our solver's cost ({} ns), searched first.",
-                      m.ceiling, cost_text(m.ceiling_ns));
+    md += fmt::format(" Ceiling: {:g}x our solver's cost ({} ns), searched first; a try stopped once its CPU time passed "
+                      "{:g}x the ceiling, and a configuration met past the ceiling is over it.",
+                      m.ceiling, cost_text(m.ceiling_ns), kClearlyCostlier);
   md += fmt::format(" Measured {} by build {}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
                     json_string_field(m.context, "build", "(not recorded)"));
 }
@@ -137,6 +139,7 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
 
 MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
   if (oc.cut_short()) return MatchVerdict::cut_short;
+  if (oc.over_ceiling()) return MatchVerdict::over_ceiling;
   if (oc.reached) return MatchVerdict::met;
   bool any_ok = false, all_unsupported = true;
   for (const MatchTry& t : m.tries)
@@ -167,6 +170,8 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
       return fmt::format("its search stopped at {} before trying every configuration: its cost is an upper bound, "
                          "not ranked",
                          oc.stopped);
+    case MatchVerdict::over_ceiling:
+      return fmt::format("past the ceiling ({} ns): not ranked", cost_text(m.ceiling_ns));
     case MatchVerdict::unsupported: return "unsupported";
     case MatchVerdict::failed:
       return fmt::format("{} at every step down to {}{}", run_status_text(b.status),

@@ -56,7 +56,8 @@ std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const Mat
   const std::string why = near->stop == SearchStop::ceiling ? fmt::format("within {:g}x our cost", m.ceiling)
                           : near->stop == SearchStop::budget ? "within the budget"
                                                              : "at any step tried";
-  return {fmt::format("none {} (nearest: {})", why, run_label(near->engine, near->profile)), "n/a"};
+  const std::string met = near->over_ceiling() ? fmt::format(", met at {} ns", cost_text(near->cost_ns)) : "";
+  return {fmt::format("none {} (nearest: {}{})", why, run_label(near->engine, near->profile), met), "n/a"};
 }
 
 std::string ratio_cell(const MatchResult& m) {
@@ -85,8 +86,9 @@ std::string provenance(const ReportInputs& in) {
                     steps.size() == 1 ? *steps.begin() + " in each" : fmt::format("{}", fmt::join(steps, ", ")));
   if (budget > 0)
     md += fmt::format(" Each search could spend the work of {:g} runs of its scene at dt{}.", budget,
-                      ceiling > 0 ? fmt::format(", and stopped a try at {:g}x our cost (an engine past it cannot be "
-                                                "the cheapest)", ceiling)
+                      ceiling > 0 ? fmt::format("; an engine past {:g}x our cost is over the ceiling (it cannot be the "
+                                                "cheapest), its tries stopped at {:g}x",
+                                                ceiling, kClearlyCostlier * ceiling)
                                   : "");
   md += " Every word: [terms](pages/terms.md).";
   const std::string run_build = json_string_field(in.run, "build");

@@ -4,6 +4,7 @@
 
 #include "accuracy_spec.h"
 #include "markdown_buffer.h"
+#include "match_result.h"
 #include "metrics/catalog.h"
 #include "runner.h"
 
@@ -28,7 +29,9 @@ void put_cost_terms(MarkdownBuffer& put) {
       "is charged for each; an engine in another process times its own step call). A configuration at dt/8 makes 8 "
       "steps per scene step, so it costs 8 of them. The configuration found is timed alone after the searches, over a "
       "tenth of its run from the state it saved there, scaled to the whole run: the median of the repeats, with half "
-      "their range as its spread (`±2%`).\n"
+      "their range as its spread (`±2%`). Where several configurations of one engine met the spec at costs within "
+      "{:g}x of each other, they are timed in turn and the first in search order (the profile as it is, then each "
+      "knob) is the one found unless a later one costs less than {:g} of it; the others are named beside it.\n"
       "- **a tie**: two engines whose costs' ranges overlap: the timing cannot tell them apart, and either is the "
       "pick; the summary names both.\n"
       "- **dt, dt/2^k**: dt is the scene's own step (s); a configuration at dt/2^k steps 2^k times as often.\n"
@@ -37,13 +40,15 @@ void put_cost_terms(MarkdownBuffer& put) {
       "- **budget**: each search's work, in runs of the whole scene at dt (n balls x steps ball steps each); a try "
       "at dt/2^k costs 2^k of them, one that stopped early its share. Work, not seconds, so one build finds the "
       "same configurations on any machine.\n"
-      "- **ceiling**: a try stops once its CPU time passes this many times our solver's cost (searched first): an "
-      "engine past it cannot be the cheapest. Where every external engine stopped there, our ratio reads \"over "
-      "Nx\".\n"
+      "- **ceiling**: a multiple of our solver's cost (searched first); an engine past it cannot be the cheapest. A "
+      "try stops once its CPU time passes {:g} times the ceiling (so far past it that the machine's load cannot carry "
+      "a try under the ceiling over it), and a configuration that met at a cost past the ceiling is \"over the "
+      "ceiling\", not ranked. Where every external engine is over it, our ratio reads \"over Nx\".\n"
       "- **not reached**: no configuration tried met the spec; the nearest miss is named with its figure and step; "
       "\"out of budget\" and \"over the ceiling\" say why the search stopped.\n"
       "- **cut short**: a configuration met the spec, but the search stopped (its budget, an interrupt) before "
-      "trying every configuration, so a cheaper one may exist: its cost is an upper bound and it is not ranked.\n\n");
+      "trying every configuration, so a cheaper one may exist: its cost is an upper bound and it is not ranked.\n\n",
+      kClearlyCostlier, kKnobCostMargin, kClearlyCostlier);
 }
 
 void put_profiles(MarkdownBuffer& put) {

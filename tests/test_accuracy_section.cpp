@@ -127,6 +127,32 @@ TEST(AccuracySection, TheSectionRanksWhatMetByCostAndSaysWhatDidNot) {
       << md;
 }
 
+// A configuration met at a cost past the ceiling is over it: shown with its cost, not ranked, and
+// named as the nearest where no external engine is ranked; ours then reads "over" the ceiling.
+TEST(AccuracySection, AConfigurationMetPastTheCeilingIsOverItNotRanked) {
+  MatchResult m = pile();
+  m.ceiling = 40, m.ceiling_ns = 36000;  // chipmunk's 45 000 ns is past it
+  m.outcomes[1].stop = SearchStop::ceiling;
+  m.outcomes[2].stop = SearchStop::ceiling;  // box2d's tries stopped there
+  ASSERT_TRUE(m.outcomes[1].over_ceiling());
+  EXPECT_FALSE(m.outcomes[1].ranked());
+  EXPECT_EQ(cheapest_reached(m, "external"), nullptr);
+  EXPECT_EQ(nearest_unreached(m, "external"), &m.outcomes[1]);
+  ASSERT_TRUE(ratio_at_least(m, m.outcomes[0]));
+  EXPECT_DOUBLE_EQ(*ratio_at_least(m, m.outcomes[0]), 40);
+  EXPECT_EQ(verdict_of(m, m.outcomes[1]), MatchVerdict::over_ceiling);
+  const std::string md = accuracy_section(ReportInputs{}, m, {});
+  const auto chip = md.find("| chipmunk/stock | yes, past the ceiling (36000 ns): not ranked | dt/64 | 45000 |");
+  ASSERT_NE(chip, std::string::npos) << md;
+  EXPECT_LT(md.find("| home | yes | dt | 900 |"), chip);
+  ReportInputs in;
+  in.matches = {m};
+  const std::string summary = summary_section(in, {});
+  EXPECT_NE(summary.find("none within 40x our cost (nearest: chipmunk/stock, met at 45000 ns)"), std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("over 40x"), std::string::npos) << summary;
+}
+
 // The x of each point a front's data file holds (its blocks: the profile's line, the tries that met,
 // those that did not), in order.
 std::vector<double> front_xs(const std::filesystem::path& file) {

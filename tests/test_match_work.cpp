@@ -139,6 +139,45 @@ TEST(MatchWork, TheBudgetIsWorkAndStopsTheSameTries) {
                           [](const MatchTry& t) { return t.status == RunStatus::missed && t.done < 1; }));
 }
 
+// Every configuration that met is a candidate; those within kClearlyCostlier of the cheapest while
+// searching are timed alone in turn, and the first in search order within kKnobCostMargin of the
+// cheapest of them is found, the others named beside it. They read back from the results file, and
+// a merge moves their indices with the tries.
+TEST(MatchWork, ConfigurationsThatMetAreTimedInTurnAndTheFirstWithinTheNoiseIsFound) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o = small_search(scene);
+  o.isolation.enabled = false;
+  o.profile = "soft";
+  o.repeats = 3;
+  const MatchResult m = cli::run_match(scene, {&find_engine("home")}, o, {});
+  ASSERT_EQ(m.outcomes.size(), 1u);
+  const MatchOutcome& oc = m.outcomes[0];
+  ASSERT_TRUE(oc.reached);
+  ASSERT_FALSE(oc.also_met.empty()) << "the soft step's substeps meet the small pile too";
+  double least = oc.cost_ns;
+  for (const MatchAlternative& a : oc.also_met) least = std::min(least, a.cost_ns);
+  EXPECT_LE(oc.cost_ns * kKnobCostMargin, least);
+  for (const MatchAlternative& a : oc.also_met) {
+    const MatchTry& t = m.tries.at(a.index);
+    EXPECT_TRUE(t.met);
+    EXPECT_EQ(t.engine, "home");
+    EXPECT_NE(a.index, oc.found);
+    // One earlier in search order was passed over: it costs more than the cheapest over the margin.
+    if (a.index < oc.found) EXPECT_GT(a.cost_ns * kKnobCostMargin, least);
+  }
+  const auto json = std::filesystem::temp_directory_path() / "ballbench-also-met.json";
+  write_match_files(m, json.string(), json.string() + ".csv");
+  const MatchResult back = read_match_file(json.string());
+  std::filesystem::remove(json), std::filesystem::remove(json.string() + ".csv");
+  ASSERT_EQ(back.outcomes[0].also_met.size(), oc.also_met.size());
+  EXPECT_EQ(back.outcomes[0].also_met[0].index, oc.also_met[0].index);
+  EXPECT_DOUBLE_EQ(back.outcomes[0].also_met[0].cost_ns, oc.also_met[0].cost_ns);
+  MatchOutcome moved = oc;
+  moved.shift_tries(10);
+  EXPECT_EQ(moved.found, oc.found + 10);
+  EXPECT_EQ(moved.also_met[0].index, oc.also_met[0].index + 10);
+}
+
 // The ceiling: our solver's default profile searches first, and every other try stops once its CPU
 // time passes the ceiling's multiple of its cost. Far above every engine's cost it changes no try;
 // below them it stops each search there, says so, and the ratio reads as a lower bound.

@@ -99,11 +99,11 @@ void add_match(CLI::App& app) {
                   "machine, loaded or not (default 400)")
       ->check(kPositiveNumber);
   cmd->add_option("--ceiling", a->ceiling,
-                  fmt::format("stop every try once its CPU time passes this many times our solver's: home's default "
-                              "profile is searched first, and an engine that costs more is reported as over the "
-                              "ceiling instead of searched to its end (default {:g} when home is among --engine; none: "
-                              "every search to its end)",
-                              MatchOptions::kDefaultCeiling))
+                  fmt::format("a multiple of our solver's cost (home's default profile, searched first): an engine "
+                              "that costs more is reported as over the ceiling instead of searched to its end, every "
+                              "try stopping at {:g} times it (default {:g} when home is among --engine; none: every "
+                              "search to its end)",
+                              kClearlyCostlier, MatchOptions::kDefaultCeiling))
       ->transform(kPositiveNumberOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "

@@ -114,22 +114,24 @@ class Search {
       : scene_(scene), e_(e), profile_(std::move(profile)), configs_(std::move(configs)), o_(o) {}
 
   // First the profile as it is, coarse to fine until it meets the spec; then each knob setting from
-  // two halvings coarser than that, or than the configuration found where the profile never met (a
-  // knob may let a longer step meet it), down to where the profile met it (or to the finest step if
-  // it never did: a knob that makes steps cheaper, fewer substeps, may meet finer for less).
+  // two halvings coarser than that, or than the coarsest step a knob met at where the profile never
+  // met (a knob may let a longer step meet it), down to where the profile met it (or to the finest
+  // step if it never did: a knob that makes steps cheaper, fewer substeps, may meet finer for less).
+  // Each configuration's coarsest step that met is a candidate; the one found is chosen among them
+  // once they are timed alone (time_found). Until then oc.found is the cheapest while searching.
   MatchOutcome run() {
     MatchOutcome oc;
     oc.engine = e_.info.name, oc.profile = profile_, oc.role = role_name(e_.info.role);
     int met_at = -1;
     for (size_t c = 0; c < configs_.size() && oc.stop == SearchStop::none; ++c) {
       Ladder l;
-      const int from = met_at >= 0 ? met_at : oc.found >= 0 ? tries[oc.found].halvings : -1;
+      const int from = met_at >= 0 ? met_at : coarsest_met();
       l.first = c == 0 || from < 0 ? 0 : std::max(0, from - 2);
       l.last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
       const int found = climb(c, l, oc);
       if (found >= 0 && c == 0) met_at = tries[found].halvings;
     }
-    oc.reached = oc.found >= 0;
+    oc.reached = !candidates.empty();
     if (oc.reached) {
       if (!oc.cut_short()) oc.stop = SearchStop::none, oc.stopped.clear();
     } else if (oc.stop == SearchStop::none && hit_ceiling_) {
@@ -142,7 +144,8 @@ class Search {
     return oc;
   }
 
-  // Every try of this search stops once its CPU time passes this cost (ns per ball per scene step).
+  // The match's ceiling (ns per ball per scene step): every try of this search stops once its CPU
+  // time passes kClearlyCostlier times it.
   void set_ceiling(double ns) { ceiling_ns_ = ns; }
 
   const EngineEntry& entry() const { return e_; }
@@ -164,15 +167,24 @@ class Search {
     double share = 0;
   };
   std::map<int, Window> windows;  // by try index
+  // Each configuration's coarsest step that met the spec (try indices, in search order).
+  std::vector<int> candidates;
 
  private:
+  // The coarsest step any configuration met at so far (halvings), or -1.
+  int coarsest_met() const {
+    int k = -1;
+    for (int t : candidates) k = k < 0 ? tries[t].halvings : std::min(k, tries[t].halvings);
+    return k;
+  }
+
   // One configuration's steps: coarse to fine, jumping where the misses predict the step that
   // meets, then back coarser until a step does not meet. The coarsest step that met, or -1.
   int climb(size_t c, Ladder& l, MatchOutcome& oc) {
     int k = l.first, met = -1;
     while (k >= l.first && k <= l.last && oc.stop == SearchStop::none) {
-      // A step its coarser try's cost already puts well past the ceiling, or past what a knob must
-      // stay under to replace the configuration found, is not run.
+      // A step its coarser try's cost already puts well past where it would stop (the ceiling's, or
+      // clearly costlier than a configuration that met), is not run.
       if (const auto projected = projected_cost_ns(l, k); projected && limit_ns(configs_[c]) &&
                                                           *projected > kCeilingProjectionMargin * *limit_ns(configs_[c])) {
         l.tried[k] = int(tries.size());
@@ -213,15 +225,14 @@ class Search {
       }
       if (oc.best < 0 || miss(tr, o_.spec) < miss(tries[oc.best], o_.spec)) oc.best = t;
       if (met >= 0) break;  // coarser than one that met, and not met: that one is the step
-      // Finer will not do better: refused, hung, or already costlier than what was found.
+      // Finer will not do better: refused, hung, or already clearly costlier than what met.
       if (tr.status == RunStatus::unsupported || tr.status == RunStatus::timed_out || tr.status == RunStatus::over_cost)
         break;
       k = next_step(l, k);
     }
     if (met >= 0) {
-      // A configuration replaces the one found only when it is cheaper beyond timing noise.
-      if (!found_cost_ns_ || tries[met].cost_ns < *found_cost_ns_ * kKnobCostMargin) oc.found = met;
-      found_cost_ns_ = tries[oc.found].cost_ns;
+      candidates.push_back(met);
+      oc.found = cheapest_met();
     }
     return met;
   }
@@ -248,16 +259,15 @@ class Search {
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
     t.status = RunStatus::over_cost, t.done = 0, t.work = 0;
     t.why_not = t.error =
-        fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x {} ({} ns)", cost_text(projected_ns),
-                    kCeilingProjectionMargin,
-                    ceiling_binds(c) ? "the match's ceiling" : "the cost a knob must stay under to replace the one found",
-                    cost_text(*limit_ns(c)));
+        fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x where its run would stop ({} ns, {})",
+                    cost_text(projected_ns), kCeilingProjectionMargin, cost_text(*limit_ns(c)), limit_what(c));
     return t;
   }
 
   // The next step after a try at k that did not meet: k + 1, or where two completed tries of this
   // configuration predict the miss falls to 1 (its log against the step's, a straight line).
   int next_step(const Ladder& l, int k) const {
+    if (k >= l.last) return k + 1;  // the ladder's finest step: none after it
     const MatchTry& b = tries[l.tried.at(k)];
     const double mb = miss(b, o_.spec);
     for (auto it = l.tried.rbegin(); it != l.tried.rend(); ++it) {
@@ -298,29 +308,43 @@ class Search {
     return r;
   }
 
-  // A knob's run stops once it has cost what it must stay below to replace the configuration found
-  // (kKnobCostMargin of its whole run): the same comparison, made before the end. Any run stops at
+  // A knob's run stops once it costs as much as the cheapest configuration that met so far: a knob,
+  // later in search order, is found over it only below kKnobCostMargin of its cost, and CPU time's
+  // noise between two tries stays short of the 18% between. Any run stops at kClearlyCostlier times
   // the search's ceiling. Both are costs per ball per scene step, over the whole run here.
   std::optional<double> knob_limit_ns(const Config& c) const {
-    if (c.knob.empty() || !found_cost_ns_) return std::nullopt;
-    return kKnobCostMargin * *found_cost_ns_;
+    const int cheapest = cheapest_met();
+    if (c.knob.empty() || cheapest < 0) return std::nullopt;
+    return tries[cheapest].cost_ns;
+  }
+  std::optional<double> ceiling_limit_ns() const {
+    return ceiling_ns_ ? std::optional(kClearlyCostlier * *ceiling_ns_) : std::nullopt;
   }
   bool ceiling_binds(const Config& c) const {
     const auto knob = knob_limit_ns(c);
-    return ceiling_ns_ && (!knob || *ceiling_ns_ < *knob);
+    return ceiling_ns_ && (!knob || *ceiling_limit_ns() < *knob);
   }
-  // The cost a run of configuration c stops at (ns per ball per scene step), if any.
-  std::optional<double> limit_ns(const Config& c) const { return ceiling_binds(c) ? ceiling_ns_ : knob_limit_ns(c); }
+  // The cost a run of configuration c stops at (ns per ball per scene step), if any, and what it is.
+  std::optional<double> limit_ns(const Config& c) const {
+    return ceiling_binds(c) ? ceiling_limit_ns() : knob_limit_ns(c);
+  }
+  std::string limit_what(const Config& c) const {
+    return ceiling_binds(c) ? fmt::format("{:g}x the match's ceiling of {:g}x our solver's cost", kClearlyCostlier,
+                                          o_.ceiling)
+                            : "the cost of the cheapest configuration that met";
+  }
   std::optional<RunOptions::CostLimit> cost_limit(const Config& c) const {
-    const auto knob = knob_limit_ns(c);
-    if (!knob && !ceiling_ns_) return std::nullopt;
-    const bool ceiling = ceiling_binds(c);
-    const double ns = *limit_ns(c);
-    return RunOptions::CostLimit{
-        ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
-        ceiling ? fmt::format("the match's ceiling ({:g}x our solver's cost)", o_.ceiling)
-                : "the cost of a cheaper configuration",
-        pace_};
+    const auto ns = limit_ns(c);
+    if (!ns) return std::nullopt;
+    return RunOptions::CostLimit{*ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
+                                 limit_what(c), pace_};
+  }
+  // The candidate cheapest while searching (its CPU time beside the other searches), or -1.
+  int cheapest_met() const {
+    int best = -1;
+    for (int t : candidates)
+      if (best < 0 || tries[t].cost_ns < tries[best].cost_ns) best = t;
+    return best;
   }
 
   // What decides a try's outcome: its key in the results store.
@@ -426,7 +450,6 @@ class Search {
   std::vector<Config> configs_;
   const MatchOptions& o_;
   double used_ = 0;                              // work so far, in runs of the scene at dt
-  std::optional<double> found_cost_ns_;          // the cost of the configuration found so far
   std::optional<double> ceiling_ns_;             // MatchOptions::ceiling times our solver's cost
   std::optional<CostPace> pace_;                 // the engine's pace on the scene (cost_pace.h)
   bool hit_ceiling_ = false;                     // a try stopped at the ceiling
@@ -434,58 +457,87 @@ class Search {
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
 };
 
-// The found configuration timed alone: its window, from the state its run saved there, `repeats`
-// times or more, each scaled by the window's share of that run's engine time (cost per ball per scene step
-// of the whole run); the median is the cost. Where no window ran ok, its own run's cost stands.
-void time_alone(MatchOutcome& oc, const MatchTry& f, const nlohmann::json& try_key, const Search::Window* w,
-                const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
-  oc.cost_repeats.clear();
-  std::vector<double> pipe;
-  // Kept by the try it times, the repeats and the machine: a cost is a measurement of this machine.
-  const nlohmann::json key{{"kind", "timing"}, {"try", try_key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
-  if (const auto kept = o.store ? o.store->find(key) : std::nullopt) {
-    oc.cost_repeats = kept->at("cost_repeats").get<std::vector<double>>();
-    oc.cost_ns = median(oc.cost_repeats);
-    if (kept->contains("pipe")) oc.cost_pipe_ns = median(kept->at("pipe").get<std::vector<double>>());
-    oc.timing_stored = true;
-    return;
-  }
-  if (w && w->share > 0) {
-    const Scene window = load_scene_file(w->scene);
-    const double window_share = w->share;
+// A configuration to time alone: its try, its store key and the window its run saved; what the
+// timing measured.
+struct Timed {
+  int index = -1;  // the try's, in its search
+  const MatchTry* t = nullptr;
+  nlohmann::json key;
+  const Search::Window* w = nullptr;
+  std::vector<double> repeats, pipe;  // ns per ball per scene step; pipe-inclusive for an engine in another process
+  bool stored = false;
+};
+
+// Configurations of one engine timed alone: each window, from the state its run saved there, run
+// in turn (one repeat of each, then the next: a change in the machine's load falls on all alike),
+// `repeats` times or more, each scaled by its window's share of its run's engine time (cost per
+// ball per scene step of the whole run). A timing kept in the store (by the try it times, the
+// repeats and the machine: a cost is a measurement of this machine) is read, not run. Where no
+// window ran ok, the try's own cost stands.
+void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
+  const auto store_key = [&](const Timed& s) {
+    return nlohmann::json{{"kind", "timing"}, {"try", s.key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
+  };
+  struct Running {
+    Timed* s;
+    Scene window;
     RunOptions r;
-    r.profile = f.profile;
-    if (!f.knob.empty()) r.overrides = {{f.knob, f.value}};
+    double timed_s = 0;  // engine time so far
+    bool failed = false;
+  };
+  std::vector<Running> running;
+  for (Timed& s : subjects) {
+    if (const auto kept = o.store ? o.store->find(store_key(s)) : std::nullopt) {
+      s.repeats = kept->at("cost_repeats").get<std::vector<double>>();
+      if (kept->contains("pipe")) s.pipe = kept->at("pipe").get<std::vector<double>>();
+      s.stored = true;
+      continue;
+    }
+    if (!s.w || !(s.w->share > 0)) continue;
+    RunOptions r;
+    r.profile = s.t->profile;
+    if (!s.t->knob.empty()) r.overrides = {{s.t->knob, s.t->value}};
     r.series_points = 0;
-    const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / window_share, scene); };
-    const auto more = [&](int rep, double timed_s) {
-      return rep < o.repeats || (timed_s < kTimedSeconds && rep < kTimingRepeatsFactor * o.repeats);
-    };
-    double timed_s = 0;
-    for (int rep = 0; more(rep, timed_s) && !interrupt_signal(); ++rep) {
-      const Result t = o.isolation.enabled ? run_engine_isolated(window, e, r, {o.isolation.timeout_s, ""})
-                                           : run_engine(window, e, r);
-      if (t.status != RunStatus::ok || t.steps_done < 1) break;
-      timed_s += t.cost_s();
+    running.push_back({&s, load_scene_file(s.w->scene), r});
+  }
+  const auto more = [&](const Running& x) {
+    const int rep = int(x.s->repeats.size());
+    return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < kTimingRepeatsFactor * o.repeats));
+  };
+  for (bool any = true; any && !interrupt_signal();) {
+    any = false;
+    for (Running& x : running) {
+      if (!more(x) || interrupt_signal()) continue;
+      any = true;
+      // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
+      // process to the next, and the median is over processes.
+      IsolationOptions fresh{o.isolation.timeout_s, ""};
+      fresh.fresh_process = true;
+      const Result t = o.isolation.enabled ? run_engine_isolated(x.window, e, x.r, fresh) : run_engine(x.window, e, x.r);
+      if (t.status != RunStatus::ok || t.steps_done < 1) {
+        x.failed = true;
+        continue;
+      }
       // CPU time, as while searching: another job on the cores changes it less than the wall time
       // (10-25% on this 2-core VM, with what the other job runs), and an engine on several threads
       // is charged for each.
-      oc.cost_repeats.push_back(whole(t.cost_s()));
-      if (t.engine_process_s) pipe.push_back(whole(t.engine_s));
+      const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / x.s->w->share, scene); };
+      x.timed_s += t.cost_s();
+      x.s->repeats.push_back(whole(t.cost_s()));
+      if (t.engine_process_s) x.s->pipe.push_back(whole(t.engine_s));
     }
   }
-  const bool timed = !oc.cost_repeats.empty() && int(oc.cost_repeats.size()) >= o.repeats;
-  if (oc.cost_repeats.empty()) {
-    oc.cost_repeats = {f.cost_ns};
-    if (f.cost_pipe_ns) pipe.push_back(*f.cost_pipe_ns);
-  }
-  if (o.store && timed && !interrupt_signal()) {
-    nlohmann::json kept{{"cost_repeats", oc.cost_repeats}};
-    if (!pipe.empty()) kept["pipe"] = pipe;
-    o.store->keep(key, kept);
-  }
-  oc.cost_ns = median(oc.cost_repeats);
-  if (!pipe.empty()) oc.cost_pipe_ns = median(pipe);
+  for (const Running& x : running)
+    if (o.store && int(x.s->repeats.size()) >= o.repeats && !interrupt_signal()) {
+      nlohmann::json kept{{"cost_repeats", x.s->repeats}};
+      if (!x.s->pipe.empty()) kept["pipe"] = x.s->pipe;
+      o.store->keep(store_key(*x.s), kept);
+    }
+  for (Timed& s : subjects)
+    if (s.repeats.empty()) {
+      s.repeats = {s.t->cost_ns};
+      if (s.t->cost_pipe_ns) s.pipe = {*s.t->cost_pipe_ns};
+    }
 }
 
 // A folder of this match's own for the windows' scene files, removed with everything in it.
@@ -596,15 +648,34 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   for (auto& t : team) t.join();
 }
 
-// Search i's found configuration timed alone (time_alone: after an interrupt, its own run's cost),
-// once.
+// Search i's configuration found, once: of the configurations that met, those within
+// kClearlyCostlier of the cheapest while searching are timed alone (time_alone: after an
+// interrupt, their own runs' costs), and the first in search order that costs less than the
+// cheapest of them over kKnobCostMargin is found; the others are named beside it.
 void time_found(SearchPlan& plan, size_t i, const Scene& scene, const MatchOptions& o) {
   MatchOutcome& oc = *plan.outcomes[i];
   if (!oc.reached || plan.timed[i]) return;
   Search& s = *plan.searches[i];
-  const auto w = s.windows.find(oc.found);
-  time_alone(oc, s.tries[oc.found], s.key_of(oc.found), w == s.windows.end() ? nullptr : &w->second, scene,
-             s.entry(), o);
+  double cheapest = std::numeric_limits<double>::infinity();
+  for (int t : s.candidates) cheapest = std::min(cheapest, s.tries[t].cost_ns);
+  std::vector<Timed> subjects;
+  for (int t : s.candidates)
+    if (s.tries[t].cost_ns <= kClearlyCostlier * cheapest) {
+      const auto w = s.windows.find(t);
+      subjects.push_back({t, &s.tries[t], s.key_of(t), w == s.windows.end() ? nullptr : &w->second});
+    }
+  time_alone(subjects, scene, s.entry(), o);
+  double least = std::numeric_limits<double>::infinity();
+  for (const Timed& x : subjects) least = std::min(least, median(x.repeats));
+  const auto pick = std::find_if(subjects.begin(), subjects.end(),
+                                 [&](const Timed& x) { return median(x.repeats) * kKnobCostMargin <= least; });
+  oc.found = pick->index;
+  oc.cost_repeats = pick->repeats, oc.cost_ns = median(pick->repeats);
+  oc.cost_pipe_ns = pick->pipe.empty() ? std::nullopt : std::optional(median(pick->pipe));
+  oc.timing_stored = pick->stored;
+  oc.also_met.clear();
+  for (const Timed& x : subjects)
+    if (x.index != pick->index) oc.also_met.push_back({x.index, median(x.repeats)});
   plan.timed[i] = true;
 }
 
@@ -638,11 +709,14 @@ void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchRe
     }
     time_found(plan, i, scene, o);
     MatchOutcome oc = std::move(*plan.outcomes[i]);
-    const int offset = int(m.tries.size());
+    if (oc.reached && !oc.cut_short() && m.ceiling_ns > 0 && oc.cost_ns > m.ceiling_ns) {
+      oc.stop = SearchStop::ceiling;
+      oc.stopped = fmt::format("the ceiling ({:g}x our solver's cost: {} ns), met at {} ns", o.ceiling,
+                               cost_text(m.ceiling_ns), cost_text(oc.cost_ns));
+    }
     const int shown = oc.reached ? oc.found : oc.best;
     if (shown >= 0) oc.command = run_command(scene, s.entry(), s.tries[shown], o);
-    if (oc.found >= 0) oc.found += offset;
-    if (oc.best >= 0) oc.best += offset;
+    oc.shift_tries(int(m.tries.size()));
     m.tries.insert(m.tries.end(), s.tries.begin(), s.tries.end());
     m.outcomes.push_back(std::move(oc));
   }
@@ -692,17 +766,27 @@ void print_match_rows(const MatchResult& m) {
     }
     const MatchTry& t = m.tries[shown];
     fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label,
-               oc.cut_short() ? "cut short" : oc.reached ? "met" : "not reached",
+               oc.cut_short() ? "cut short" : oc.stop == SearchStop::ceiling ? "over ceiling" : oc.reached ? "met" : "not reached",
                (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_spread_text(oc) : "-",
                oc.reached && oc.cost_pipe_ns ? cost_text(*oc.cost_pipe_ns) : "-");
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
     fmt::print(" {:>5} {:>6}\n", oc.tries, oc.stored);
   }
-  for (const MatchOutcome& oc : m.outcomes)
+  for (const MatchOutcome& oc : m.outcomes) {
     if (oc.cut_short())
       fmt::print("{}: cut short: it met the spec, but its search stopped at {} before trying every "
                  "configuration; its cost is an upper bound, not ranked\n",
                  run_label(oc.engine, oc.profile), oc.stopped);
+    if (oc.over_ceiling())
+      fmt::print("{}: over the ceiling: it met the spec, but its cost timed alone is past {}; not ranked\n",
+                 run_label(oc.engine, oc.profile), oc.stopped);
+    if (!oc.also_met.empty()) {
+      std::vector<std::string> others;
+      for (const MatchAlternative& a : oc.also_met)
+        others.push_back(fmt::format("{} ({} ns)", configuration_text(m.tries[a.index]), cost_text(a.cost_ns)));
+      fmt::print("{}: also met, timed beside it: {}\n", run_label(oc.engine, oc.profile), fmt::join(others, "; "));
+    }
+  }
 }
 
 // Each of our profiles against the cheapest external engine that met the spec (and --target).

@@ -5,18 +5,23 @@
 // the spec; then each of the engine's own accuracy knobs (EngineInfo::sweep_knobs, one at a time on
 // top of the profile) from two halvings coarser than that down to it.
 //
-// What a search tries depends only on what its tries measured (met or not, how far they missed),
-// never on timings or the machine's load: its budget counts work (ball steps), a try stops where a
-// term that only grows is past its bound (RunOptions::stop_on_miss), and where two completed tries
-// show how the miss falls with the step, the search jumps to the step they predict and confirms the
-// one coarser. Searches run side by side (`jobs`); each found configuration is then timed alone,
-// over a window of its own run started from the state it saved there. Under a ceiling (a multiple
-// of our solver's cost) every try stops once it costs more: the question a comparison asks is
-// which engine is cheapest, and an engine at 100x the cheapest need not be searched to its end.
-// A try past a limit is known long before its time reaches it: the search's first try (the profile
-// as it is at the scene's own step) runs to its end, whatever it misses, and gives the engine's pace
-// on the scene; every later try stops once its time so far, grown as that pace grows from the same
-// point, projects past kPaceMargin times its limit (cost_pace.h).
+// What a search tries depends on what its tries measured (met or not, how far they missed), and
+// on timings only where a wrong call on them changes no finding: its budget
+// counts work (ball steps), a try stops where a term that only grows is past its bound
+// (RunOptions::stop_on_miss), and where two completed tries show how the miss falls with the step,
+// the search jumps to the step they predict and confirms the one coarser. Searches run side by side
+// (`jobs`); every configuration that met the spec within kClearlyCostlier of the cheapest is then
+// timed alone, their repeats interleaved, over a window of its own run started from the state it
+// saved there, and the first in search order within the timing's noise of the cheapest is the one
+// found; a knob's run stops once it costs as much as the cheapest that met (it could be found only
+// below kKnobCostMargin of it). Under a ceiling (a multiple of our solver's cost) a try stops once it
+// costs kClearlyCostlier times more, and a configuration met past the ceiling is reported over it,
+// as one stopped there is: the question a
+// comparison asks is which engine is cheapest, and an engine at 100x the cheapest need not be
+// searched to its end. A try past a limit is known long before its time reaches it: the search's
+// first try (the profile as it is at the scene's own step) runs to its end, whatever it misses, and
+// gives the engine's pace on the scene; every later try stops once its time so far, grown as that
+// pace grows from the same point, projects past kPaceMargin times its limit (cost_pace.h).
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,13 +39,8 @@
 
 namespace ballbench::cli {
 
-// A configuration replaces the one found (the profile as it is, or a knob met earlier) only when it
-// costs less than this fraction of it: configurations of one cost (twice the substeps at twice the
-// step) must not trade places with the CPU time's noise, some 5% under load.
-inline constexpr double kKnobCostMargin = 0.85;
-
 // A try is not run where its coarser try's cost, doubled per halving, projects a whole run past
-// this multiple of the ceiling (MatchOptions::ceiling): the projection errs low on a pile, whose
+// this multiple of where its run would stop (its cost limit): the projection errs low on a pile, whose
 // steps grow costlier as it settles, and this margin keeps it from skipping what would pass.
 inline constexpr double kCeilingProjectionMargin = 1.5;
 
@@ -65,15 +65,15 @@ struct MatchOptions {
   // Work for one engine and profile's search, in runs of the whole scene at its own step (n x steps
   // ball steps each): a try at dt / 2^k costs 2^k of them, a try that stopped early its share.
   double budget_runs = 400;
-  // Every try stops once its CPU time passes this many times the cost of the cheapest configuration
-  // found for our solver's default profile, searched first (0: no ceiling): an engine that costs
-  // more is reported as over the ceiling, not searched to its end.
+  // This many times the cost of the cheapest configuration found for our solver's default profile,
+  // searched first (0: no ceiling): every try stops once its CPU time passes kClearlyCostlier times
+  // it, and an engine whose configuration met past it is reported as over the ceiling, not ranked.
   double ceiling = 0;
   // `match`'s ceiling where our solver is among the engines and none is asked for (the full
-  // suite's): without one, a try at an engine's finest step on a pile of thousands of balls runs
+  // suite's; its tries stop at 90x): without one, a try at an engine's finest step on a pile of thousands of balls runs
   // for minutes (bullet tuned at dt/64 on a settled pile of 3000: over 8 min), and a search of
   // every engine for hours.
-  static constexpr double kDefaultCeiling = 100;
+  static constexpr double kDefaultCeiling = 60;
   int repeats = 3;              // timing runs alone of each found configuration's window
   int jobs = 1;                 // searches at once (tries in child processes; needs isolation)
   const TryStore* store = nullptr;  // tries and timings measured before (null: none)
