@@ -153,6 +153,16 @@ MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
 
 std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   const MatchVerdict v = verdict_of(m, oc);
+  // What met is said by its search's stop, not by a try that missed.
+  switch (v) {
+    case MatchVerdict::met: return "";
+    case MatchVerdict::cut_short:
+      return fmt::format("its search stopped at {} before trying every configuration: its cost is an upper bound, "
+                         "not ranked",
+                         oc.stopped);
+    case MatchVerdict::over_ceiling: return fmt::format("past the ceiling ({} ns): not ranked", cost_text(m.ceiling_ns));
+    default: break;
+  }
   if (oc.best < 0) return "no configuration ran";
   const MatchTry& b = m.tries[oc.best];
   const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
@@ -164,22 +174,11 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   const std::string when = b.status == RunStatus::missed && duration > 0
                                ? fmt::format(", past its bound by t = {:.3g} s", b.done * duration)
                                : "";
-  switch (v) {
-    case MatchVerdict::met: return "";
-    case MatchVerdict::cut_short:
-      return fmt::format("its search stopped at {} before trying every configuration: its cost is an upper bound, "
-                         "not ranked",
-                         oc.stopped);
-    case MatchVerdict::over_ceiling:
-      return fmt::format("past the ceiling ({} ns): not ranked", cost_text(m.ceiling_ns));
-    case MatchVerdict::unsupported: return "unsupported";
-    case MatchVerdict::failed:
-      return fmt::format("{} at every step down to {}{}", run_status_text(b.status),
-                         finest == "dt/1" ? "dt" : finest, stop);
-    case MatchVerdict::not_reached:
-      return fmt::format("{} at {}{}{}", worst_term_text(b, m.spec), step_text(b.halvings), when, stop);
-  }
-  return "";
+  if (v == MatchVerdict::unsupported) return "unsupported";
+  if (v == MatchVerdict::failed)
+    return fmt::format("{} at every step down to {}{}", run_status_text(b.status), finest == "dt/1" ? "dt" : finest,
+                       stop);
+  return fmt::format("{} at {}{}{}", worst_term_text(b, m.spec), step_text(b.halvings), when, stop);
 }
 
 

@@ -259,7 +259,8 @@ class Search {
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
     t.status = RunStatus::over_cost, t.done = 0, t.work = 0;
     t.why_not = t.error =
-        fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x where its run would stop ({} ns, {})",
+        fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x where its run would stop ({} ns, "
+                    "{})",
                     cost_text(projected_ns), kCeilingProjectionMargin, cost_text(*limit_ns(c)), limit_what(c));
     return t;
   }
@@ -661,8 +662,9 @@ void time_found(SearchPlan& plan, size_t i, const Scene& scene, const MatchOptio
   std::vector<Timed> subjects;
   for (int t : s.candidates)
     if (s.tries[t].cost_ns <= kClearlyCostlier * cheapest) {
-      const auto w = s.windows.find(t);
-      subjects.push_back({t, &s.tries[t], s.key_of(t), w == s.windows.end() ? nullptr : &w->second});
+      Timed& x = subjects.emplace_back();
+      x.index = t, x.t = &s.tries[t], x.key = s.key_of(t);
+      if (const auto w = s.windows.find(t); w != s.windows.end()) x.w = &w->second;
     }
   time_alone(subjects, scene, s.entry(), o);
   double least = std::numeric_limits<double>::infinity();
@@ -766,7 +768,10 @@ void print_match_rows(const MatchResult& m) {
     }
     const MatchTry& t = m.tries[shown];
     fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label,
-               oc.cut_short() ? "cut short" : oc.stop == SearchStop::ceiling ? "over ceiling" : oc.reached ? "met" : "not reached",
+               oc.cut_short()                    ? "cut short"
+               : oc.stop == SearchStop::ceiling ? "over ceiling"
+               : oc.reached                     ? "met"
+                                                : "not reached",
                (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_spread_text(oc) : "-",
                oc.reached && oc.cost_pipe_ns ? cost_text(*oc.cost_pipe_ns) : "-");
     for (const auto& k : terms) fmt::print(" {:>12}", figure_text(t.figures.value(k, nlohmann::json())));
