@@ -86,6 +86,11 @@ std::string run_command(const Scene& scene, const EngineEntry& e, const MatchTry
   return cmd;
 }
 
+// Where a search stopped at the ceiling: "the ceiling (50x our solver's cost: 36547 ns)".
+std::string ceiling_text(double ratio, double ns) {
+  return fmt::format("the ceiling ({:g}x our solver's cost: {} ns)", ratio, cost_text(ns));
+}
+
 std::string read_text(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
@@ -136,7 +141,7 @@ class Search {
       if (!oc.cut_short()) oc.stop = SearchStop::none, oc.stopped.clear();
     } else if (oc.stop == SearchStop::none && hit_ceiling_) {
       oc.stop = SearchStop::ceiling;
-      oc.stopped = fmt::format("the ceiling ({:g}x our solver's cost: {} ns)", o_.ceiling, cost_text(*ceiling_ns_));
+      oc.stopped = ceiling_text(o_.ceiling, *ceiling_ns_);
     } else if (oc.stop == SearchStop::none) {
       oc.stop = SearchStop::finest_step, oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
@@ -505,15 +510,15 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
     const int rep = int(x.s->repeats.size());
     return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < kTimingRepeatsFactor * o.repeats));
   };
+  // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
+  // process to the next, and the median is over processes.
+  IsolationOptions fresh{o.isolation.timeout_s, ""};
+  fresh.fresh_process = true;
   for (bool any = true; any && !interrupt_signal();) {
     any = false;
     for (Running& x : running) {
       if (!more(x) || interrupt_signal()) continue;
       any = true;
-      // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
-      // process to the next, and the median is over processes.
-      IsolationOptions fresh{o.isolation.timeout_s, ""};
-      fresh.fresh_process = true;
       const Result t = o.isolation.enabled ? run_engine_isolated(x.window, e, x.r, fresh) : run_engine(x.window, e, x.r);
       if (t.status != RunStatus::ok || t.steps_done < 1) {
         x.failed = true;
@@ -713,8 +718,7 @@ void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchRe
     MatchOutcome oc = std::move(*plan.outcomes[i]);
     if (oc.reached && !oc.cut_short() && m.ceiling_ns > 0 && oc.cost_ns > m.ceiling_ns) {
       oc.stop = SearchStop::ceiling;
-      oc.stopped = fmt::format("the ceiling ({:g}x our solver's cost: {} ns), met at {} ns", o.ceiling,
-                               cost_text(m.ceiling_ns), cost_text(oc.cost_ns));
+      oc.stopped = fmt::format("{}, met at {} ns", ceiling_text(o.ceiling, m.ceiling_ns), cost_text(oc.cost_ns));
     }
     const int shown = oc.reached ? oc.found : oc.best;
     if (shown >= 0) oc.command = run_command(scene, s.entry(), s.tries[shown], o);
