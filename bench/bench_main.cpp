@@ -53,6 +53,10 @@ int main(int argc, char** argv) {
   argv = args.data();
   benchmark::Initialize(&argc, argv);
   if (!ballbench::bench::read_budget(argc, argv)) return 1;
+  // In the JSON's context, for the report to state the budget its figures ran under.
+  char budget_text[32];
+  std::snprintf(budget_text, sizeof budget_text, "%g", ballbench::bench::budget_seconds());
+  benchmark::AddCustomContext("budget_s", budget_text);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   ballbench::bench::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();

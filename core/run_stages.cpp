@@ -110,18 +110,23 @@ double engine_cpu_seconds(const RunContext& c) {
 double engine_clock_s(const RunContext& c) { return c.engine->own_step_seconds().value_or(c.engine_s); }
 
 // Why the run is past its cost limit at step k: its engine time so far passed it, or, from
-// kPaceFrom of its steps on, projects a whole run past kPaceMargin times it at the limit's pace.
+// kPaceFrom of its steps on, projects a whole run past its margin over it (at the limit's pace, or
+// in proportion to its steps where it has none and a margin for that).
 std::optional<std::string> past_cost_limit(const RunContext& c, const RunOptions::CostLimit& limit, long k) {
   const double spent = engine_cpu_seconds(c);
   if (spent > limit.seconds)
     return fmt::format("its engine time passed {:.3g} s at step {} (t = {:g} s), {}", limit.seconds, k, c.state.t,
                        limit.what);
-  if (!limit.pace) return std::nullopt;
+  if (!limit.pace && !limit.linear_margin) return std::nullopt;
   const double share = double(k) / double(std::max(1L, c.r.steps));
-  if (const auto whole = whole_run_cost(spent, share, &*limit.pace); whole && *whole > kPaceMargin * limit.seconds)
-    return fmt::format("its engine time of {:.3g} s at step {} (t = {:g} s), grown as its engine's pace grows from "
-                       "there, projects {:.3g} s for the run, past {:g} times {:.3g} s, {}",
-                       spent, k, c.state.t, *whole, kPaceMargin, limit.seconds, limit.what);
+  const double margin = limit.pace ? kPaceMargin : *limit.linear_margin;
+  if (const auto whole = whole_run_cost(spent, share, limit.pace ? &*limit.pace : nullptr);
+      whole && *whole > margin * limit.seconds)
+    return fmt::format("its engine time of {:.3g} s at step {} (t = {:g} s), {}, projects {:.3g} s for the run, past "
+                       "{:g} times {:.3g} s, {}",
+                       spent, k, c.state.t,
+                       limit.pace ? "grown as its engine's pace grows from there" : "in proportion to its steps",
+                       *whole, margin, limit.seconds, limit.what);
   return std::nullopt;
 }
 

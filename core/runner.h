@@ -67,14 +67,16 @@ struct RunOptions {
     std::string checkpoint;
   } window;
   // Stop the run (RunStatus::over_cost) once the engine's CPU time (Result::engine_cpu_s, read
-  // every kCostCheckSteps steps or kCostCheckSeconds) passes `seconds`, or, with a `pace`, once
-  // that time projects a whole run past kPaceMargin times `seconds` (cost_pace.h); none: no limit.
-  // A search sets it to the whole-run time of the cheapest configuration it has found, which a
-  // costlier one cannot beat, or to its ceiling; `what` names that cost in the run's message.
+  // every kCostCheckSteps steps or kCostCheckSeconds) passes `seconds`, or once that time projects
+  // a whole run past kPaceMargin times `seconds` at its `pace` (cost_pace.h), or, with no pace, in
+  // proportion to its steps past `linear_margin` times it; none: no limit. A search sets it to the
+  // whole-run time of the cheapest configuration it has found, which a costlier one cannot beat, or
+  // to a margin over its ceiling; `what` names that cost in the run's message.
   struct CostLimit {
     double seconds = 0;
     std::string what;
     std::optional<CostPace> pace{};
+    std::optional<double> linear_margin{};  // none: no projection without a pace
   };
   std::optional<CostLimit> cost_limit;
   // Record the run's pace (Result::pace): its engine time at each 1/kPacePoints of its steps.

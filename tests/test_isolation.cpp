@@ -246,6 +246,23 @@ TEST(CostPace, AProjectionPastTheLimitStopsARunEarly) {
   EXPECT_EQ(whole.steps_done, 20);
 }
 
+// Without a pace, a limit with a margin for it projects in proportion to the steps: steps of 60 ms
+// project a whole run of 1.2 s, past 1.5 times a limit of 0.5 s, so it stops at once; under a limit
+// of 0.9 s (1.35 s with the margin) the projection never passes, and it runs until its time does.
+TEST(CostPace, WithoutAPaceALinearMarginProjectsInProportionToTheSteps) {
+  RunOptions o = steps(20);
+  o.cost_limit = RunOptions::CostLimit{0.5, "1.5x the match's ceiling", std::nullopt, 1.5};
+  const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  EXPECT_EQ(r.status, RunStatus::over_cost) << r.error;
+  EXPECT_LE(r.steps_done, 3) << r.error;
+  EXPECT_NE(r.error.find("in proportion to its steps"), std::string::npos) << r.error;
+  o.cost_limit->seconds = 0.9;
+  const Result late = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), o);
+  EXPECT_EQ(late.status, RunStatus::over_cost) << late.error;
+  EXPECT_GE(late.steps_done, 14) << late.error;
+  EXPECT_NE(late.error.find("its engine time passed"), std::string::npos) << late.error;
+}
+
 // A step that computes for ever under a cost limit is killed once the child's CPU time passes
 // twice the limit and 5 s, long before the time limit: over cost, inside a step, after the steps it
 // made.

@@ -342,8 +342,10 @@ class Search {
   std::optional<RunOptions::CostLimit> cost_limit(const Config& c) const {
     const auto ns = limit_ns(c);
     if (!ns) return std::nullopt;
-    return RunOptions::CostLimit{*ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
-                                 limit_what(c), pace_};
+    RunOptions::CostLimit l{*ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
+                            limit_what(c), pace_};
+    if (ceiling_binds(c)) l.linear_margin = kPaceRunLinearMargin;
+    return l;
   }
   // The candidate cheapest while searching (its CPU time beside the other searches), or -1.
   int cheapest_met() const {
@@ -506,9 +508,12 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
     r.series_points = 0;
     running.push_back({&s, load_scene_file(s.w->scene), r});
   }
+  // A repeat of an engine in a process of its own starts that process (Node's start and its
+  // compilations, half a second, for a window of milliseconds): --repeats of them.
+  const int most = e.info.own_process && o.isolation.enabled ? o.repeats : kTimingRepeatsFactor * o.repeats;
   const auto more = [&](const Running& x) {
     const int rep = int(x.s->repeats.size());
-    return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < kTimingRepeatsFactor * o.repeats));
+    return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < most));
   };
   // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
   // process to the next, and the median is over processes.

@@ -44,6 +44,13 @@ namespace ballbench::cli {
 // steps grow costlier as it settles, and this margin keeps it from skipping what would pass.
 inline constexpr double kCeilingProjectionMargin = 1.5;
 
+// The pace's own run (the profile as it is at the scene's own step) has no pace to project with:
+// under the ceiling it stops where its time so far, in proportion to its steps, projects past this
+// multiple of its limit. That projection errs low on a forming pile and high where bodies fall
+// asleep; an engine whose run at the scene's own step is already several times its limit (ODE's
+// tuned profile on the pile: 5x) stops in its first seconds, not at the limit.
+inline constexpr double kPaceRunLinearMargin = kClearlyCostlier;
+
 // A found configuration's window is timed --repeats times, and more until the repeats hold this
 // much of its engine's time (s), at most kTimingRepeatsFactor times as many: a window of
 // milliseconds is at the mercy of a cache miss or a frequency step, and the ceiling every other
