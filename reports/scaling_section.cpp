@@ -53,7 +53,11 @@ void put_pipe_cost(MarkdownBuffer& put, const BenchResults& bench) {
 // Balls from which a benchmark's memory per ball is the balls' (see put_scaling).
 constexpr long kMemoryBalls = 100000;
 
-void put_scaling_intro(MarkdownBuffer& put) {
+// The benchmark binary records the budget it ran under in its context (bench/bench_main.cpp).
+void put_scaling_intro(MarkdownBuffer& put, const nlohmann::json& context) {
+  const std::string budget = context.contains("budget_s") && context["budget_s"].is_string()
+                                 ? fmt::format(" ({} s here)", context["budget_s"].get<std::string>())
+                                 : "";
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
       "scenes. `gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; both at the seed's density in a box of "
       "side sqrt(5 n), timed after 5 warm-up steps from the start, so the bowl is timed early in its pour (from 10^5 "
@@ -65,11 +69,12 @@ void put_scaling_intro(MarkdownBuffer& put) {
       "0.25 sqrt(72 / n)), timed over its first 3 s (300 steps from the start: the pour and the settle). Profiles "
       "`soft` and `soft-sleep` are `home` with `resting = \"soft\"` (and `sleep_speed = 0.05`), `stock-sleep` Box2D's "
       "stock profile with its sleeping on; an engine whose every ball sleeps does next to nothing in a step, so "
-      "its figure is the cost of a pile at rest with sleeping, not of a solve. A benchmark that runs past its budget (10 s in the quick report, 60 s in the "
-      "full one) stops and is shown as failed, with how far it got and what a step cost below its table. Every engine "
+      "its figure is the cost of a pile at rest with sleeping, not of a solve. A benchmark that runs past its budget{} "
+      "stops and is shown as failed, with how far it got and what a step cost below its table. Every engine "
       "runs at the scene's own step, whatever accuracy that gives it (`home`'s default profile builds itself for the "
       "scene's spec, the others do not), so these tables show how each engine's cost grows with the count, not "
-      "which is cheaper: the equal-accuracy sections rank cost. Source: `results/bench.json`, Google Benchmark's own JSON.\n\n");
+      "which is cheaper: the equal-accuracy sections rank cost. Source: `results/bench.json`, Google Benchmark's own JSON.\n\n",
+      budget);
 }
 
 // One scene's ns per ball-step, an engine a row, a ball count a column.
@@ -161,7 +166,7 @@ void put_scaling_notes(MarkdownBuffer& put, const ReportInputs& in, const BenchR
 
 void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults& bench,
                  const std::vector<Figure>& figures) {
-  put_scaling_intro(put);
+  put_scaling_intro(put, bench.context);
   put_figures(put, figures, "scaling", "");
   std::vector<std::string> scenes, engines;
   std::vector<long> counts;
