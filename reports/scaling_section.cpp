@@ -55,9 +55,8 @@ constexpr long kMemoryBalls = 100000;
 
 // The benchmark binary records the budget it ran under in its context (bench/bench_main.cpp).
 void put_scaling_intro(MarkdownBuffer& put, const nlohmann::json& context) {
-  const std::string budget = context.contains("budget_s") && context["budget_s"].is_string()
-                                 ? fmt::format(" ({} s here)", context["budget_s"].get<std::string>())
-                                 : "";
+  const std::string budget_s = json_string_field(context, "budget_s");
+  const std::string budget = budget_s.empty() ? "" : fmt::format(" ({} s here)", budget_s);
   put("## Scaling\n\n`bench/ballbench_step_benchmark` (Google Benchmark): step cost per ball on the scaled "
       "scenes. `gas`: elastic, no gravity; `bowl`: gravity, restitution 0.99; both at the seed's density in a box of "
       "side sqrt(5 n), timed after 5 warm-up steps from the start, so the bowl is timed early in its pour (from 10^5 "

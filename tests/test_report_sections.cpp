@@ -211,6 +211,24 @@ TEST(ReportSections, ASleepingPileGetsNoRateAndTheScalingRanksNoEngine) {
   EXPECT_NE(md.find("`mine` at 1000 balls: 3.0 steps per second."), std::string::npos) << md;
 }
 
+// The budget a benchmark stops at is the one its binary ran under, read from its JSON's context
+// (bench/bench_main.cpp writes it); a file without it says no figure rather than a stale one.
+TEST(ReportSections, TheScalingStatesTheBudgetItsBenchmarksRanUnder) {
+  BenchResults b;
+  BenchRow r;
+  r.engine = "mine", r.profile = "default", r.scene = "gas", r.n = 100, r.ns_per_ball_step = 50;
+  b.rows = {r};
+  b.context = {{"budget_s", "5"}};
+  ReportInputs in = inputs({});
+  in.bench = b;
+  in.roles = {{"mine", EngineRole::ours}};
+  EXPECT_NE(all_pages(render_report(in)).find("past its budget (5 s here) stops"), std::string::npos);
+  in.bench->context = nlohmann::json::object();
+  const std::string md = all_pages(render_report(in));
+  EXPECT_NE(md.find("past its budget stops"), std::string::npos) << md;
+  EXPECT_EQ(md.find(" s here)"), std::string::npos) << md;
+}
+
 TEST(ReportSections, AMergedReportShowsEveryShardsMachineAndWhatWasLeftOut) {
   ReportInputs in = inputs({});
   in.run = nlohmann::json::parse(R"({
