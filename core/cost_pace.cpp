@@ -39,4 +39,13 @@ std::optional<double> whole_run_cost(double spent, double share, const CostPace*
   return pace ? pace->project(spent, share) : spent / std::min(1.0, share);
 }
 
+const CostPace* nearest_pace(const std::map<int, int>& own, const std::map<int, int>& as_is,
+                             const std::map<int, CostPace>& paces, int k, const CostPace* first) {
+  for (const auto* ladder : {&own, &as_is})
+    for (auto it = ladder->rbegin(); it != ladder->rend(); ++it)
+      if (const auto p = paces.find(it->second); (it->first < k || (ladder == &as_is && it->first == k)) && p != paces.end())
+        return &p->second;
+  return first;
+}
+
 }  // namespace ballbench

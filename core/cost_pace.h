@@ -1,12 +1,12 @@
 #pragma once
 // How a run's engine time accrues over the scene (its pace), and what a run stopped part way would
 // cost in whole. A pile's steps grow costlier as it forms, a gas's stay alike: time so far over
-// the share of steps done projects a pile low and stops its costly tries late. A search records the
-// pace of each engine and profile's first try (at the scene's own step: 1/2^k of a try at dt/2^k),
-// to its end or its cost limit, and projects every later try of that engine from the same point of
-// the scene.
+// the share of steps done projects a pile low and stops its costly tries late. A search records
+// each try's pace, to its end or to where it stopped, and projects a later try with the nearest
+// one in configuration and step (match.cpp, pace_for), from the same point of the scene.
 #include <algorithm>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -51,6 +51,16 @@ class CostPace {
 // of its steps: its time is mostly the engine's start then (a JIT's first compilations), which
 // would project far too high.
 std::optional<double> whole_run_cost(double spent, double share, const CostPace* pace);
+
+// The pace a search projects a try at dt / 2^k with, of the paces its tries recorded (`paces`, by
+// try index): its own configuration's at the nearest coarser step (`own`: halvings -> try index),
+// else the profile as it is at the nearest step no finer (`as_is`), else `first` (the profile's run
+// at the scene's step). A pile at dt may explode where it forms at dt / 16, its time accruing along
+// another curve; one halving apart, one configuration forms the same pile at twice the steps. A
+// pace that ended early (its try stopped where it missed) goes on at its last quarter's rate, which
+// errs low on a forming pile.
+const CostPace* nearest_pace(const std::map<int, int>& own, const std::map<int, int>& as_is,
+                             const std::map<int, CostPace>& paces, int k, const CostPace* first);
 
 // The points of a pace a run of `steps` steps has reached by step k: one per 1/kPacePoints.
 inline size_t pace_points_reached(long k, long steps) {

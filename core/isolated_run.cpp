@@ -22,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include "core_affinity.h"
 #include "engine_group.h"
 #include "input_error.h"
 #include "interrupt.h"
@@ -409,6 +410,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     if (::getppid() != parent) ::_exit(1);  // the parent died before the request took
     install_interrupt_handlers(false);
     ::close(fds[0]);
+    const CorePin pin(isolation.core);  // until the child exits
     child_main(fds[1], scene, entry, options, isolation);
   }
   ::close(fds[1]);

@@ -25,6 +25,9 @@ struct IsolationOptions {
   // of its own for it: a timing repeat in a fresh process. (A Node engine's speed differs from one
   // process to the next: box2d3's pile window read 9 200 ns in one and 16 500 in another.)
   bool fresh_process = false;
+  // The core the child runs on (core_affinity.h), and the process it starts for an engine of its
+  // own; -1: wherever the system puts it.
+  int core = -1;
 };
 
 // run_engine() in a forked child, which sends the Result back through a pipe (as JSON) and exits;

@@ -32,7 +32,8 @@ struct MatchTry {
   std::optional<double> cost_pipe_ns;
   double wall_s = 0;             // the run's wall time, harness included (s)
   // Its share of the search's budget, in runs of the scene at its own step: 2^halvings times the
-  // fraction of its steps it made (all of them for one that crashed or timed out).
+  // fraction of its steps it made (all of them for one that crashed or timed out; none for one a
+  // cost limit stopped, where the clock, not its states, decided).
   double work = 0;
   double done = 1;               // the fraction of the scene's duration it ran
   bool stored = false;           // read from the results store (core/try_store.h), not run again

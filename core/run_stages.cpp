@@ -93,21 +93,29 @@ void step_reference(RunContext& c, long k, bool read) {
   }
 }
 
-// The engine's step time so far as CPU time: engine_s times the share of the wall time since the
-// harness started that this process spent on a core (for an engine in another process, the step
-// time it measured itself less its wait for a core). The CPU clock is read now and then, not
-// around every step: a read is a system call, which would cost more than a small scene's step.
+// The engine's step time so far as CPU time: its long steps on the CPU clock (kBracketStep_s), the
+// others on the wall clock, times the share of the wall time since the harness started that this
+// process spent on a core where that is above 1 (an engine's own threads); for an engine in another
+// process, the step time it measured itself less its wait for a core. A short step is not timed on
+// the CPU clock (the read, a system call, would cost more than the step), and its wall time is its
+// CPU time unless a time slice ended inside it: at most a little high, where a share below 1 taken
+// over the whole run (the harness's work between steps swells most on a loaded core) read the steps
+// at half their time.
 double engine_cpu_seconds(const RunContext& c) {
   if (const auto alone = c.engine->own_step_cpu_seconds()) return *alone;
   if (const auto own = c.engine->own_step_seconds()) return *own;
   const double wall = seconds_since(c.harness_start);
-  return wall > 0 ? c.engine_s * (process_cpu_seconds() - c.harness_start_cpu) / wall : c.engine_s;
+  const double share = wall > 0 ? (process_cpu_seconds() - c.harness_start_cpu) / wall : 1.0;
+  return c.bracketed_cpu_s + (c.engine_s - c.bracketed_s) * std::max(1.0, share);
 }
 
 // The engine's time so far by its own clock where it has one (an engine in another process, which
 // may step ahead in batches: the harness's clock around a step would hold a whole batch), else by
 // the harness's around its steps. The pace and the window are read from it.
-double engine_clock_s(const RunContext& c) { return c.engine->own_step_seconds().value_or(c.engine_s); }
+double engine_clock_s(const RunContext& c) {
+  if (const auto own = c.engine->own_step_seconds()) return *own;
+  return engine_cpu_seconds(c);
+}
 
 // Why the run is past its cost limit at step k: its engine time so far passed it, or, from
 // kPaceFrom of its steps on, projects a whole run past its margin over it (at the limit's pace, or
@@ -153,6 +161,10 @@ bool advance(RunContext& c, long k) {
   if (interrupt_signal())  // SIGINT or SIGTERM: end at this step boundary, keeping what was measured
     return stop(c, RunStatus::interrupted, k,
                 fmt::format("interrupted by {} after step {}", interrupt_name(), r.steps_done));
+  // On the CPU clock too where the engine's steps are long (kBracketStep_s).
+  const bool bracket = r.steps_done > 0 && c.engine_s >= kBracketStep_s * double(r.steps_done) &&
+                       !c.engine->own_step_seconds();
+  const double cpu0 = bracket ? process_cpu_seconds() : 0.0;
   const auto t0 = Clock::now();
   if (c.options.deadline && t0 >= *c.options.deadline)
     return stop(c, RunStatus::timed_out, k,
@@ -181,7 +193,9 @@ bool advance(RunContext& c, long k) {
     c.engine_s += seconds_since(t0);
     return stop(c, RunStatus::failed, k, fmt::format("step {} threw: {}", k, e.what()));
   }
-  c.engine_s += seconds_since(t0);
+  const double stepped_s = seconds_since(t0);
+  c.engine_s += stepped_s;
+  if (bracket) c.bracketed_cpu_s += process_cpu_seconds() - cpu0, c.bracketed_s += stepped_s;
   if (k % c.stride != 0 && k != r.steps) {  // no state to read before the engine's next sample
     step_reference(c, k, false);
     return true;

@@ -79,6 +79,8 @@ struct RunContext {
   std::chrono::steady_clock::time_point harness_start;
   double harness_start_cpu = 0;
   double engine_s = 0;
+  // The steps timed on the CPU clock as well (a long step: kBracketStep_s), their CPU and wall time.
+  double bracketed_cpu_s = 0, bracketed_s = 0;
   double window_start_s = -1;  // engine_s where options.window began
 };
 

@@ -34,6 +34,13 @@ inline constexpr int kConvergedSubsteps = 64;
 inline constexpr long kCostCheckSteps = 64;
 inline constexpr double kCostCheckSeconds = 0.05;
 
+// A step this long (s, the engine's mean step so far) is timed on the process's CPU clock as well
+// as the wall clock: a read is a system call (1.3 us on this VM, so 2.6% of such a step), and on a
+// loaded core the wall time of the harness's work between steps (allocations, kernel entries, where
+// a time slice ends) swells far more than the steps', so one share of CPU over wall for the whole
+// run reads the steps low (a 0.08 s run of our solver as 0.04 - 0.06 s beside four CPU-bound jobs).
+inline constexpr double kBracketStep_s = 100e-6;
+
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
   std::string profile;           // settings profile; "" = the engine's first

@@ -6,6 +6,7 @@
 
 #include <time.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 
 #include <fmt/format.h>
 
+#include "core_affinity.h"
 #include "input_error.h"
 #include "interrupt.h"
 #include "isolated_run.h"
@@ -159,7 +161,8 @@ TEST(CostLimit, IsCheckedAfterASlowStep) {
   EXPECT_LE(r.steps_done, 4) << r.error;  // 0.1 s passed by the second step, a third for the CPU clock's share
 }
 
-// A run records its pace: its engine's step time at each 1/32 of its steps, rising to the whole run's.
+// A run records its pace: its engine's step time (CPU time, as its cost) at each 1/32 of its steps,
+// rising to the whole run's.
 TEST(CostPace, ARunRecordsItsEngineTimeAlongItsSteps) {
   RunOptions o = steps(20);
   o.record_pace = true;
@@ -167,13 +170,37 @@ TEST(CostPace, ARunRecordsItsEngineTimeAlongItsSteps) {
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
   ASSERT_EQ(r.pace.size(), size_t(kPacePoints));
   EXPECT_TRUE(std::is_sorted(r.pace.begin(), r.pace.end()));
-  EXPECT_DOUBLE_EQ(r.pace.back(), r.engine_s);
+  ASSERT_TRUE(r.engine_cpu_s);
+  EXPECT_NEAR(r.pace.back(), *r.engine_cpu_s, 1e-3 * *r.engine_cpu_s);
   const double half = r.pace[kPacePoints / 2 - 1] / r.pace.back();  // steps of equal work: about half
   EXPECT_GT(half, 0.3);
   EXPECT_LT(half, 0.7);
   const auto pace = CostPace::from_points(r.pace);
   ASSERT_TRUE(pace);
   EXPECT_NEAR(pace->project(1.0, 0.5), 1.0 / half, 1e-9);
+}
+
+// A run's cost is the CPU its engine spent, on a loaded core as on an idle one: each step of the busy
+// engine spends 0.06 s of CPU, and beside a job busy on the same core the run's wall time doubles
+// while its CPU time stays. (One share of CPU over wall for the whole run read such steps low: the
+// harness's work between them is where a loaded core's time slices end.)
+TEST(CostPace, ARunOnALoadedCoreCostsTheCPUItsStepsSpent) {
+  const std::vector<int> cores = allowed_cores();
+  ASSERT_FALSE(cores.empty());
+  const CorePin pin(cores.front());
+  const pid_t busy = ::fork();
+  ASSERT_GE(busy, 0);
+  if (busy == 0) {  // the other job, on the same core (the affinity is inherited), until killed
+    for (volatile unsigned long spin = 0;; spin = spin + 1) {
+    }
+  }
+  const Result r = run_engine(box(), test_engine("busy", Misbehaviour::Busy, 1), steps(16));
+  ::kill(busy, SIGKILL);
+  ::waitpid(busy, nullptr, 0);
+  ASSERT_EQ(r.status, RunStatus::ok) << r.error;
+  ASSERT_TRUE(r.engine_cpu_s);
+  if (r.engine_s < 1.5 * 16 * 0.06) GTEST_SKIP() << "the other job did not share the core (wall " << r.engine_s << " s)";
+  EXPECT_NEAR(*r.engine_cpu_s, 16 * 0.06, 0.1 * 16 * 0.06) << "wall " << r.engine_s << " s";
 }
 
 // A pace projects a run from a point of its steps as its pace run grew from there: in proportion
@@ -210,6 +237,25 @@ TEST(CostPace, APaceStoppedPartWayGoesOnAtItsLastRate) {
   EXPECT_DOUBLE_EQ(growing->project(1.0, 0.5), (256.0 + 28 * 16) / 256.0);
   // A growing pace's true whole (32^2 = 1024) is above the projection: it errs low.
   EXPECT_LT(growing->project(1.0, 0.5), 1024.0 / 256.0);
+}
+
+// A try is projected with the pace nearest it: its configuration's one step coarser, else the
+// profile as it is at its step or the nearest coarser, else the engine's first run's; a try that
+// recorded no pace (stopped before kPaceFrom) is passed over.
+TEST(CostPace, ATryIsProjectedWithTheNearestPace) {
+  const auto pace = [](double last) { return *CostPace::from_points(std::vector<double>(kPacePoints, last)); };
+  const CostPace first = pace(1);
+  const std::map<int, CostPace> paces{{0, pace(2)}, {1, pace(3)}, {3, pace(5)}, {4, pace(6)}};
+  const std::map<int, int> as_is{{0, 0}, {2, 1}, {4, 2}};  // halvings -> try index; try 2 has none
+  const std::map<int, int> own{{1, 3}, {2, 4}, {3, 5}};    // try 5 has none
+  const auto last = [](const CostPace* p) { return p ? p->points().back() : -1.0; };
+  EXPECT_EQ(last(nearest_pace(own, as_is, paces, 3, &first)), 6);  // its own at dt/4
+  EXPECT_EQ(last(nearest_pace(own, as_is, paces, 4, &first)), 6);  // dt/8 recorded none: dt/4
+  EXPECT_EQ(last(nearest_pace(own, as_is, paces, 1, &first)), 2);  // none coarser of its own: as is at dt
+  EXPECT_EQ(last(nearest_pace({}, as_is, paces, 2, &first)), 3);   // as is at its own step
+  EXPECT_EQ(last(nearest_pace({}, as_is, paces, 5, &first)), 3);   // as is at dt/16 recorded none
+  EXPECT_EQ(last(nearest_pace({}, {}, paces, 2, &first)), 1);
+  EXPECT_EQ(nearest_pace({}, {}, paces, 2, nullptr), nullptr);
 }
 
 // A try's whole run from what it ran: at the pace, or in proportion without one; never from less

@@ -97,12 +97,13 @@ TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
       EXPECT_DOUBLE_EQ(t.work, double(1 << t.halvings) * t.done);
     }
   // A found configuration is timed alone over its window: the repeat asked, more for a short
-  // window, a positive cost.
+  // window, a positive cost, its fastest repeat.
   for (const MatchOutcome& oc : one.outcomes)
     if (oc.reached) {
       EXPECT_GE(oc.cost_repeats.size(), 1u) << oc.engine;
       EXPECT_LE(oc.cost_repeats.size(), size_t(cli::kTimingRepeatsFactor * o.repeats)) << oc.engine;
       EXPECT_GT(oc.cost_ns, 0);
+      EXPECT_EQ(oc.cost_ns, *std::min_element(oc.cost_repeats.begin(), oc.cost_repeats.end())) << oc.engine;
     }
 }
 
@@ -213,6 +214,7 @@ TEST(MatchWork, TheCeilingStopsTriesPastAMultipleOfOurCost) {
       over = true;
       EXPECT_NE(t.why_not.find("ceiling"), std::string::npos) << t.why_not;
       EXPECT_LE(std::lround(t.done * double(scene.steps() << t.halvings)), kCostCheckSteps);
+      EXPECT_EQ(t.work, 0) << "where the clock stopped it is no work the budget counts";
     }
   }
   EXPECT_TRUE(over);

@@ -95,7 +95,8 @@ void add_match(CLI::App& app) {
       ->check(whole_in_range(0, 20));
   cmd->add_option("--budget", a->options.budget_runs,
                   "work for each engine and profile's search, in runs of the whole scene at its own step dt (n x steps "
-                  "ball steps each; a try at dt/2^k costs 2^k, one stopped early its share): the same tries on any "
+                  "ball steps each; a try at dt/2^k costs 2^k, one stopped where it missed its share, one stopped at a "
+                  "cost limit nothing): the same tries on any "
                   "machine, loaded or not (default 400)")
       ->check(kPositiveNumber);
   cmd->add_option("--ceiling", a->ceiling,
@@ -107,8 +108,8 @@ void add_match(CLI::App& app) {
       ->transform(kPositiveNumberOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run from the state it saved "
-                  "at its middle, more until they hold 0.25 s of its time (at most 8 times as many); the median is "
-                  "reported (default 3; 0: its own run's time)")
+                  "at its middle, more until they hold 0.25 s of its time (at most 8 times as many), each round on "
+                  "the next core; the fastest is reported (default 3; 0: its own run's time)")
       ->check(whole_in_range(0, 100));
   cmd->add_option("--jobs", a->options.jobs,
                   "searches at once (default: the cores); the configurations found are timed alone afterwards")

@@ -19,6 +19,7 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include "core_affinity.h"
 #include "cost_pace.h"
 #include "data_file.h"
 #include "input_error.h"
@@ -134,6 +135,7 @@ class Search {
       l.first = c == 0 || from < 0 ? 0 : std::max(0, from - 2);
       l.last = c == 0 || met_at < 0 ? o_.max_halvings : met_at;
       const int found = climb(c, l, oc);
+      if (c == 0) as_is_ = l;
       if (found >= 0 && c == 0) met_at = tries[found].halvings;
     }
     oc.reached = !candidates.empty();
@@ -204,7 +206,7 @@ class Search {
                                  o_.budget_runs * double(scene_.n()) * double(scene_.steps()));
         break;
       }
-      const int t = try_config(configs_[c], k);
+      const int t = try_config(configs_[c], l, k);
       l.tried[k] = t;
       const MatchTry& tr = tries[t];
       ++oc.tries;
@@ -250,7 +252,7 @@ class Search {
       if (it->first >= k) continue;
       const MatchTry& t = tries[it->second];
       if ((t.status != RunStatus::ok && t.status != RunStatus::missed) || !(t.cost_ns > 0)) return std::nullopt;
-      const auto whole = whole_run_cost(t.cost_ns, t.done, pace_ ? &*pace_ : nullptr);
+      const auto whole = whole_run_cost(t.cost_ns, t.done, pace_for(l, it->first));
       if (!whole) return std::nullopt;
       return *whole * double(1L << (k - it->first));
     }
@@ -290,7 +292,12 @@ class Search {
     return k + 1;
   }
 
-  RunOptions options(const Config& c, int k, int index) const {
+  // The pace a try of ladder l at dt / 2^k is projected with (nearest_pace).
+  const CostPace* pace_for(const Ladder& l, int k) const {
+    return nearest_pace(l.tried, as_is_.tried, paces_, k, pace_ ? &*pace_ : nullptr);
+  }
+
+  RunOptions options(const Config& c, const Ladder& l, int k, int index) const {
     RunOptions r;
     r.profile = profile_;
     r.overrides = c.overrides;
@@ -302,8 +309,8 @@ class Search {
     // (cost_pace.h).
     const bool pace_run = c.knob.empty() && k == 0;
     r.stop_on_miss = pace_run ? nullptr : &o_.spec;
-    r.record_pace = pace_run;
-    r.cost_limit = cost_limit(c);
+    r.record_pace = true;  // every try's, for the tries after it (pace_for)
+    r.cost_limit = cost_limit(c, pace_run ? nullptr : pace_for(l, k));
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
     // The window a found configuration is timed over: from the middle of its run, at a scene step.
     const long steps = scene_.steps() << k;
@@ -339,11 +346,11 @@ class Search {
                                           o_.ceiling)
                             : "the cost of the cheapest configuration that met";
   }
-  std::optional<RunOptions::CostLimit> cost_limit(const Config& c) const {
+  std::optional<RunOptions::CostLimit> cost_limit(const Config& c, const CostPace* pace) const {
     const auto ns = limit_ns(c);
     if (!ns) return std::nullopt;
     RunOptions::CostLimit l{*ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
-                            limit_what(c), pace_};
+                            limit_what(c), pace ? std::optional(*pace) : std::nullopt};
     if (ceiling_binds(c)) l.linear_margin = kPaceRunLinearMargin;
     return l;
   }
@@ -366,9 +373,9 @@ class Search {
 
   // A try of configuration c at dt / 2^k: read from the store where an earlier search measured it
   // (an over-cost stop only under a limit no higher than the one it stopped at), else run.
-  int try_config(const Config& c, int k) {
+  int try_config(const Config& c, const Ladder& l, int k) {
     const int index = int(tries.size());
-    const RunOptions r = options(c, k, index);
+    const RunOptions r = options(c, l, k, index);
     const nlohmann::json key = store_key(c, k);
     const auto kept = o_.store ? o_.store->find(key) : std::nullopt;
     const bool reusable =
@@ -381,12 +388,12 @@ class Search {
       // Measured under a higher limit or none: what this limit would have done to it.
       const double run_s = t.cost_ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps()));
       if (r.cost_limit && t.status == RunStatus::ok && run_s > r.cost_limit->seconds) {
-        t.status = RunStatus::over_cost, t.met = false;
+        t.status = RunStatus::over_cost, t.met = false, t.work = 0;
         t.why_not = t.error = fmt::format("over cost: its engine time of {:.3g} s passes {:.3g} s, {}", run_s,
                                           r.cost_limit->seconds, r.cost_limit->what);
       }
       last_trajectory_ = kept->value("trajectory", "");
-      if (kept->contains("pace")) take_pace(kept->at("pace").get<std::vector<double>>());
+      if (kept->contains("pace")) take_pace(index, kept->at("pace").get<std::vector<double>>(), c.knob.empty() && k == 0);
       if (kept->contains("window")) {
         write_file_atomically(r.window.checkpoint, kept->at("window").at("scene").get<std::string>(),
                               "the window's scene");
@@ -415,19 +422,23 @@ class Search {
     if (res.engine_process_s) t.cost_pipe_ns = cost_per_scene_step(res.engine_s, scene_);
     t.wall_s = std::chrono::duration<double>(Clock::now() - t0).count();
     t.done = res.steps > 0 ? double(res.steps_done) / double(res.steps) : 1.0;
-    // The budget is charged the ball steps the engine took: a run to its end, or to where it missed,
-    // diverged or passed its cost limit (the engine's CPU time, which load moves less than the wall time). A run the
-    // wall clock ended (hung, timed out) or the user interrupted is charged in full.
+    // The budget is charged the ball steps the engine took to a run's end, or to where it missed or
+    // diverged: what its states decided. A run a cost limit stopped is charged nothing: where the
+    // clock stopped it depends on the machine's load (on a settled pile, a knob's run stopped at 6%
+    // beside another job and at 89% alone), and the tries a budget leaves room for must not; its
+    // limit bounds it. A run the wall clock ended (hung, timed out) or the user interrupted is charged
+    // in full.
     const bool decided_by_states = res.status == RunStatus::ok || res.status == RunStatus::missed ||
                                    res.status == RunStatus::diverged || res.status == RunStatus::failed ||
                                    res.status == RunStatus::unsupported;
-    const bool charged_as_done = decided_by_states || res.status == RunStatus::over_cost;
-    t.work = double(1L << k) * (charged_as_done ? t.done : 1.0);
+    t.work = res.status == RunStatus::over_cost ? 0.0 : double(1L << k) * (decided_by_states ? t.done : 1.0);
     last_trajectory_ = res.checksum_trajectory;
     nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
-    if (r.record_pace && take_pace(res.pace)) kept["pace"] = res.pace;
+    if (take_pace(index, res.pace, c.knob.empty() && k == 0)) kept["pace"] = res.pace;
     std::error_code ec;
-    if (const double whole = res.engine_process_s.value_or(res.engine_s); t.met && res.window_engine_s && whole > 0) {
+    // The window's share of the run, each on the window's clock (the engine's own, else CPU time).
+    if (const double whole = res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s));
+        t.met && res.window_engine_s && whole > 0) {
       windows[index] = {r.window.checkpoint, *res.window_engine_s / whole};
       kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"share", windows[index].share}};
     } else {
@@ -440,12 +451,14 @@ class Search {
     return t;
   }
 
-  // The pace of the profile's run at the scene's step, as far as it ran. False: that run gave none
-  // (it stopped before kPaceFrom of its steps).
-  bool take_pace(const std::vector<double>& seconds) {
+  // Try `index`'s pace, as far as it ran, and the engine's where it is the profile's run at the
+  // scene's step. False: the try gave none (it stopped before kPaceFrom of its steps).
+  bool take_pace(int index, const std::vector<double>& seconds, bool pace_run) {
     const auto p = CostPace::from_points(seconds);
-    if (p) pace_ = *p;
-    return p.has_value();
+    if (!p) return false;
+    paces_[index] = *p;
+    if (pace_run) pace_ = *p;
+    return true;
   }
 
   std::string checkpoint_path(int index) const {
@@ -460,10 +473,20 @@ class Search {
   double used_ = 0;                              // work so far, in runs of the scene at dt
   std::optional<double> ceiling_ns_;             // MatchOptions::ceiling times our solver's cost
   std::optional<CostPace> pace_;                 // the engine's pace on the scene (cost_pace.h)
+  std::map<int, CostPace> paces_;                // each try's, by try index
+  Ladder as_is_;                                 // the profile as it is: its tries
   bool hit_ceiling_ = false;                     // a try stopped at the ceiling
   std::string last_trajectory_;                  // the last try's trajectory checksum
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
 };
+
+// A configuration's cost from its timing's repeats: the fastest. What else runs on the machine (a job
+// beside it, the host's other guests on a core) only ever adds time, and the cores of a shared host
+// differ by a quarter: the median of three repeats reads whichever core two of them landed on, the
+// fastest of them spread over the cores reads the same on an idle or a loaded machine.
+double fastest_repeat(const std::vector<double>& repeats) {
+  return repeats.empty() ? std::numeric_limits<double>::quiet_NaN() : *std::min_element(repeats.begin(), repeats.end());
+}
 
 // A configuration to time alone: its try, its store key and the window its run saved; what the
 // timing measured.
@@ -479,7 +502,8 @@ struct Timed {
 // Configurations of one engine timed alone: each window, from the state its run saved there, run
 // in turn (one repeat of each, then the next: a change in the machine's load falls on all alike),
 // `repeats` times or more, each scaled by its window's share of its run's engine time (cost per
-// ball per scene step of the whole run). A timing kept in the store (by the try it times, the
+// ball per scene step of the whole run). Each round runs on the next core (core_affinity.h), and a
+// configuration's cost is its fastest repeat (fastest_repeat). A timing kept in the store (by the try it times, the
 // repeats and the machine: a cost is a measurement of this machine) is read, not run. Where no
 // window ran ok, the try's own cost stands.
 void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
@@ -516,15 +540,21 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
     return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < most));
   };
   // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
-  // process to the next, and the median is over processes.
+  // process to the next, and the fastest is over processes.
   IsolationOptions fresh{o.isolation.timeout_s, ""};
   fresh.fresh_process = true;
-  for (bool any = true; any && !interrupt_signal();) {
+  const std::vector<int> cores = allowed_cores();
+  bool any = true;
+  for (size_t round = 0; any && !interrupt_signal(); ++round) {
     any = false;
+    fresh.core = cores.empty() ? -1 : cores[round % cores.size()];
     for (Running& x : running) {
       if (!more(x) || interrupt_signal()) continue;
       any = true;
-      const Result t = o.isolation.enabled ? run_engine_isolated(x.window, e, x.r, fresh) : run_engine(x.window, e, x.r);
+      const Result t = o.isolation.enabled ? run_engine_isolated(x.window, e, x.r, fresh) : [&] {
+        const CorePin pin(fresh.core);
+        return run_engine(x.window, e, x.r);
+      }();
       if (t.status != RunStatus::ok || t.steps_done < 1) {
         x.failed = true;
         continue;
@@ -678,16 +708,16 @@ void time_found(SearchPlan& plan, size_t i, const Scene& scene, const MatchOptio
     }
   time_alone(subjects, scene, s.entry(), o);
   double least = std::numeric_limits<double>::infinity();
-  for (const Timed& x : subjects) least = std::min(least, median(x.repeats));
+  for (const Timed& x : subjects) least = std::min(least, fastest_repeat(x.repeats));
   const auto pick = std::find_if(subjects.begin(), subjects.end(),
-                                 [&](const Timed& x) { return median(x.repeats) * kKnobCostMargin <= least; });
+                                 [&](const Timed& x) { return fastest_repeat(x.repeats) * kKnobCostMargin <= least; });
   oc.found = pick->index;
-  oc.cost_repeats = pick->repeats, oc.cost_ns = median(pick->repeats);
-  oc.cost_pipe_ns = pick->pipe.empty() ? std::nullopt : std::optional(median(pick->pipe));
+  oc.cost_repeats = pick->repeats, oc.cost_ns = fastest_repeat(pick->repeats);
+  oc.cost_pipe_ns = pick->pipe.empty() ? std::nullopt : std::optional(fastest_repeat(pick->pipe));
   oc.timing_stored = pick->stored;
   oc.also_met.clear();
   for (const Timed& x : subjects)
-    if (x.index != pick->index) oc.also_met.push_back({x.index, median(x.repeats)});
+    if (x.index != pick->index) oc.also_met.push_back({x.index, fastest_repeat(x.repeats)});
   plan.timed[i] = true;
 }
 
@@ -842,7 +872,7 @@ void print_match(const MatchResult& m, std::optional<double> target) {
   fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
   fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, the found configuration "
              "timed after the searches over a tenth of its run from the state it saved there, scaled to the whole run, "
-             "median of the repeats; engines in another process time their own steps (pipe-inclusive beside it)\n",
+             "the fastest of the repeats, run on each core in turn; engines in another process time their own steps (pipe-inclusive beside it)\n",
              m.dt);
   fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
              "grows is past its bound\n",

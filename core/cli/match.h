@@ -20,8 +20,9 @@
 // comparison asks is which engine is cheapest, and an engine at 100x the cheapest need not be
 // searched to its end. A try past a limit is known long before its time reaches it: the search's
 // first try (the profile as it is at the scene's own step) runs to its end, whatever it misses, and
-// gives the engine's pace on the scene; every later try stops once its time so far, grown as that
-// pace grows from the same point, projects past kPaceMargin times its limit (cost_pace.h).
+// every try records its engine time along the scene (its pace); every later try stops once its time
+// so far, grown as the nearest try's pace grows from the same point (its configuration one step
+// coarser, else the profile as it is), projects past kPaceMargin times its limit (cost_pace.h).
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,7 +71,8 @@ struct MatchOptions {
   std::vector<std::string> spec_texts;  // the --spec terms over the scene's own, for the reproducing commands
   int max_halvings = 6;         // dt / 2^k for k = 0 .. this
   // Work for one engine and profile's search, in runs of the whole scene at its own step (n x steps
-  // ball steps each): a try at dt / 2^k costs 2^k of them, a try that stopped early its share.
+  // ball steps each): a try at dt / 2^k costs 2^k of them, a try that stopped where it missed its
+  // share, one a cost limit stopped nothing (run_try).
   double budget_runs = 400;
   // This many times the cost of the cheapest configuration found for our solver's default profile,
   // searched first (0: no ceiling): every try stops once its CPU time passes kClearlyCostlier times
