@@ -58,10 +58,10 @@ struct Result {
   // and "ns_per_ball_step_pipe" (engine_s per ball-step), present only for such engines.
   std::optional<double> engine_process_s;
   // The engine's step time as CPU time (s): a long step's on the process's CPU clock, a short one's
-  // wall time (times the share of the run's wall time the process spent on a core where that is more
-  // than 1: an engine's own threads), so that a run sharing the cores with other work is costed
-  // nearly as one alone (core/runner.h, kBracketStep_s); for an engine in another process, its own
-  // step time less its wait for a core. JSON "engine_cpu_s"; runs that time it.
+  // wall time times the share of the run's wall time the process spent on a core (more than 1 for an
+  // engine's own threads), so that a run sharing the cores with other work is costed nearly as one
+  // alone (core/runner.h, kBracketStep_s); for an engine in another process, its own step time less
+  // its wait for a core. JSON "engine_cpu_s"; runs that time it.
   std::optional<double> engine_cpu_s;
   // What a search costs the engine by: its CPU time where the run timed it, else its own step
   // clock's, else the harness's (s). Load barely changes it.

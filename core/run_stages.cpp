@@ -94,27 +94,28 @@ void step_reference(RunContext& c, long k, bool read) {
 }
 
 // The engine's step time so far as CPU time: its long steps on the CPU clock (kBracketStep_s), the
-// others on the wall clock, times the share of the wall time since the harness started that this
-// process spent on a core where that is above 1 (an engine's own threads); for an engine in another
-// process, the step time it measured itself less its wait for a core. A short step is not timed on
-// the CPU clock (the read, a system call, would cost more than the step), and its wall time is its
-// CPU time unless a time slice ended inside it: at most a little high, where a share below 1 taken
-// over the whole run (the harness's work between steps swells most on a loaded core) read the steps
-// at half their time.
+// others' wall time times the share of the wall time since the harness started that this process
+// spent on a core (more than 1 for an engine's own threads); for an engine in another process, the
+// step time it measured itself less its wait for a core. A short step is not timed on the CPU
+// clock: the read, a system call, would cost more than the step. On a loaded core that share reads
+// short steps low (the harness's work between them is where time slices end), their wall time
+// high (a slice that ends inside a step of microseconds adds milliseconds).
 double engine_cpu_seconds(const RunContext& c) {
   if (const auto alone = c.engine->own_step_cpu_seconds()) return *alone;
   if (const auto own = c.engine->own_step_seconds()) return *own;
   const double wall = seconds_since(c.harness_start);
   const double share = wall > 0 ? (process_cpu_seconds() - c.harness_start_cpu) / wall : 1.0;
-  return c.bracketed_cpu_s + (c.engine_s - c.bracketed_s) * std::max(1.0, share);
+  return c.bracketed_cpu_s + (c.engine_s - c.bracketed_s) * share;
 }
 
 // The engine's time so far by its own clock where it has one (an engine in another process, which
 // may step ahead in batches: the harness's clock around a step would hold a whole batch), else by
 // the harness's around its steps. The pace and the window are read from it.
+// Long steps on the CPU clock, short ones on the wall clock: it never runs backwards, which the
+// share of CPU over wall in engine_cpu_seconds may, as a run's share falls.
 double engine_clock_s(const RunContext& c) {
   if (const auto own = c.engine->own_step_seconds()) return *own;
-  return engine_cpu_seconds(c);
+  return c.bracketed_cpu_s + (c.engine_s - c.bracketed_s);
 }
 
 // Why the run is past its cost limit at step k: its engine time so far passed it, or, from
