@@ -109,10 +109,9 @@ double engine_cpu_seconds(const RunContext& c) {
 }
 
 // The engine's time so far by its own clock where it has one (an engine in another process, which
-// may step ahead in batches: the harness's clock around a step would hold a whole batch), else by
-// the harness's around its steps. The pace and the window are read from it.
-// Long steps on the CPU clock, short ones on the wall clock: it never runs backwards, which the
-// share of CPU over wall in engine_cpu_seconds may, as a run's share falls.
+// may step ahead in batches: the harness's clock around a step would hold a whole batch), else its
+// long steps on the CPU clock and its short ones on the wall clock. The pace and the window are
+// read from it: it never runs backwards, which engine_cpu_seconds may as a run's share falls.
 double engine_clock_s(const RunContext& c) {
   if (const auto own = c.engine->own_step_seconds()) return *own;
   return c.bracketed_cpu_s + (c.engine_s - c.bracketed_s);
