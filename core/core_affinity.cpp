@@ -2,6 +2,9 @@
 
 #include <sched.h>
 
+#include <algorithm>
+#include <thread>
+
 namespace ballbench {
 namespace {
 
@@ -23,6 +26,11 @@ std::vector<int> allowed_cores() {
   for (int c = 0; c < CPU_SETSIZE; ++c)
     if (CPU_ISSET(c, &set)) out.push_back(c);
   return out;
+}
+
+int core_count() {
+  const size_t allowed = allowed_cores().size();
+  return allowed > 0 ? int(allowed) : std::max(1, int(std::thread::hardware_concurrency()));
 }
 
 CorePin::CorePin(int core) {

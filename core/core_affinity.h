@@ -10,6 +10,9 @@ namespace ballbench {
 // The cores this process may run on (its affinity mask), in order; empty where it cannot be read.
 std::vector<int> allowed_cores();
 
+// How many runs go side by side by default: the cores this process may run on, at least one.
+int core_count();
+
 // Runs the calling thread on `core` only until this is destroyed, then as before (core < 0: no
 // change). Where the system refuses, the thread runs where it did.
 class CorePin {

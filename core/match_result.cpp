@@ -12,6 +12,7 @@
 #include "engine.h"
 #include "input_error.h"
 #include "json_value.h"
+#include "runner.h"
 #include "shard_roll.h"
 
 namespace ballbench {
@@ -315,6 +316,15 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
   for (const MatchOutcome& o : out.outcomes) searched.push_back(o.engine + "/" + o.profile);
   check_plan_covered(first.searches, searched, "search");
   return out;
+}
+
+std::string timing_method_text() {
+  return fmt::format(
+      "the found configuration timed alone after the searches over a tenth of its run from the state it saved "
+      "there, run again in one process until a pass is under {:g}% faster than the one before and the passes hold "
+      "{:g} s of the engine's time (the engine warm: a JIT's compiled code, caches), scaled to the whole run; the "
+      "fastest of the repeats, each round on the next core",
+      100 * kWarmGain, kWarmSeconds);
 }
 
 }  // namespace ballbench

@@ -40,6 +40,10 @@ struct MatchTry {
   nlohmann::json settings;       // the engine's effective settings
 };
 
+// How a found configuration's cost is measured (core/cli/match.cpp, time_alone), as the match's
+// output, its report section and the report's terms say it.
+std::string timing_method_text();
+
 // A try's CPU time while searching moves 10-25% with what else runs on the cores (this 2-core VM,
 // idle against beside two CPU-bound jobs). A cost this many times a limit is past it under any such
 // load: a try stops at this multiple of the match's ceiling (one under the ceiling never does, and

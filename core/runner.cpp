@@ -64,13 +64,11 @@ void stop_if_asked() {
   if (interrupt_signal()) throw Interrupted{"setting up a run"};
 }
 
-}  // namespace
-
 // The run's stages (run_stages.h), in order. A stage that ends the run early (a refusal, a
 // world that cannot be built or read) leaves the result as far as it got. Building and measuring
 // the worlds of millions of balls takes seconds: an interrupt is looked for between the stages, and
 // within them by our solvers' set-up loops and the initial state's meters (throwing Interrupted).
-Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+Result run_pass(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   RunContext c(scene, entry, options);
   try {
     if (!set_up(c)) return std::move(c.r);
@@ -91,6 +89,21 @@ Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions
   final_metrics(c);
   timing(c);
   return std::move(c.r);
+}
+
+}  // namespace
+
+Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
+  Result last = run_pass(scene, entry, options);
+  double spent = last.cost_s();
+  for (int pass = 1; pass < options.passes && last.status == RunStatus::ok && !interrupt_signal(); ++pass) {
+    Result r = run_pass(scene, entry, options);
+    const bool warming = r.status == RunStatus::ok && r.cost_s() < (1 - kWarmGain) * last.cost_s();
+    spent += r.cost_s();
+    last = std::move(r);
+    if (!warming && spent >= kWarmSeconds) break;
+  }
+  return last;
 }
 
 }  // namespace ballbench

@@ -41,6 +41,14 @@ inline constexpr double kCostCheckSeconds = 0.05;
 // run reads the steps low (a 0.08 s run of our solver as 0.04 - 0.06 s beside four CPU-bound jobs).
 inline constexpr double kBracketStep_s = 100e-6;
 
+// Timing passes (RunOptions::passes) end with one that is not kWarmGain faster than the one before,
+// once the passes have spent kWarmSeconds of the engine's time. A JIT compiles its hot code as it
+// runs, between pauses of its collector: box2d3's 500-step seed-box window took 41, 20, 10, 10, 11,
+// 29, 16, 17, 9 and 18 ms in ten passes in one process. Stopped at the first pass that gained
+// nothing, its cost there read 967 - 1 755 ns; after the passes of 0.25 s (eight), 849 - 912.
+inline constexpr double kWarmGain = 0.1;
+inline constexpr double kWarmSeconds = 0.25;
+
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
   std::string profile;           // settings profile; "" = the engine's first
@@ -88,6 +96,12 @@ struct RunOptions {
   std::optional<CostLimit> cost_limit;
   // Record the run's pace (Result::pace): its engine time at each 1/kPacePoints of its steps.
   bool record_pace = false;
+  // Timing: the run made up to this many times in this process, each pass on a world built afresh
+  // from the scene (an engine in a process of its own keeps that process), until the engine is warm
+  // (kWarmGain, kWarmSeconds); the result is the last pass's (one figure per run, as without passes:
+  // the fastest of many would pick the noise). The passes warm the engine as a game's minutes of
+  // play would: a JIT's compiled code, caches, the allocator's pages. 1: one run.
+  int passes = 1;
   // The run ends at the first step boundary past this time (RunStatus::timed_out), keeping what it
   // measured (an isolated run's child sets it to its time limit; its parent kills a child stuck in
   // a step a grace later); none: no limit.

@@ -78,10 +78,11 @@ void put_match_table(std::string& md, const ReportInputs& in, const MatchResult&
 
 // How the cost was measured and how the searches were bounded, when and by which build.
 void put_match_method(std::string& md, const MatchResult& m) {
-  md += "\nCost: the engine's step time per ball per scene step in CPU time (a step of dt/8 costs 8 of its steps), "
-        "the found configuration timed after the searches over a tenth of its run from the state it saved there, "
-        "scaled to the whole run, the fastest of the repeats, run on each core in turn (± half their range); figures as the harness measured them from the states at the scene's step times. "
-        "\"n/a\": not measured.";
+  md += fmt::format(
+      "\nCost: the engine's step time per ball per scene step in CPU time (a step of dt/8 costs 8 of its steps), "
+      "{} (± half their range); figures as the harness measured them from the states at the scene's step times. "
+      "\"n/a\": not measured.",
+      timing_method_text());
   if (m.budget_runs > 0)
     md += fmt::format(" Each search's budget: {:g} runs of the scene at dt ({:.3g} ball steps); a try stopped where "
                       "a term that only grows passed its bound.",

@@ -27,10 +27,8 @@ void put_cost_terms(MarkdownBuffer& put) {
   put("## Cost, step and search\n\n"
       "- **cost** (ns): the engine's own step time per ball per scene step, in CPU time (an engine on several threads "
       "is charged for each; an engine in another process times its own step call). A configuration at dt/8 makes 8 "
-      "steps per scene step, so it costs 8 of them. The configuration found is timed alone after the searches, over a "
-      "tenth of its run from the state it saved there, scaled to the whole run: the fastest of the repeats, each round "
-      "on the next core (a host's cores can differ by a quarter, and a job beside the timing only adds time), with "
-      "half their range as its spread (`±2%`). Where several configurations of one engine met the spec at costs within "
+      "steps per scene step, so it costs 8 of them. The cost is that of {} (a host's cores can differ by a quarter, "
+      "and a job beside the timing only adds time), with half their range as its spread (`±2%`). Where several configurations of one engine met the spec at costs within "
       "{:g}x of each other, they are timed in turn and the first in search order (the profile as it is, then each "
       "knob) is the one found unless a later one costs less than {:g} of it; the others are named beside it.\n"
       "- **a tie**: two engines whose costs' ranges overlap: the timing cannot tell them apart, and either is the "
@@ -50,7 +48,7 @@ void put_cost_terms(MarkdownBuffer& put) {
       "\"out of budget\" and \"over the ceiling\" say why the search stopped.\n"
       "- **cut short**: a configuration met the spec, but the search stopped (its budget, an interrupt) before "
       "trying every configuration, so a cheaper one may exist: its cost is an upper bound and it is not ranked.\n\n",
-      kClearlyCostlier, kKnobCostMargin, kClearlyCostlier);
+      timing_method_text(), kClearlyCostlier, kKnobCostMargin, kClearlyCostlier);
 }
 
 void put_profiles(MarkdownBuffer& put) {

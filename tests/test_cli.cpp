@@ -117,6 +117,16 @@ TEST(Cli, TheSchemaExampleRunsUnchanged) {
   EXPECT_NE(o.out.find("\nhome "), std::string::npos) << o.out;
 }
 
+// A run says whether each row meets the spec its scene asks for (here with --spec over it), as
+// `match` judges a try: the line match prints for a configuration it found shows it met.
+TEST(Cli, ARunSaysWhetherEachRowMeetsTheScenesSpec) {
+  const Outcome o = cli("run --scene pile --engine home-seed,home --steps 100 --no-reference --spec overlap=0.01,rest_speed=none --quiet");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("spec: overlap <= 0.01, tunnelling <= 0\n"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\n  home: met (overlap "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("\n  home-seed: not met: overlap "), std::string::npos) << o.out;
+}
+
 // The audit's additions (issue 7): files that cannot be read as scenes, names that do not exist,
 // flags that contradict each other.
 

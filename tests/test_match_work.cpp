@@ -164,7 +164,9 @@ TEST(MatchWork, ConfigurationsThatMetAreTimedInTurnAndTheFirstWithinTheNoiseIsFo
     EXPECT_EQ(t.engine, "home");
     EXPECT_NE(a.index, oc.found);
     // One earlier in search order was passed over: it costs more than the cheapest over the margin.
-    if (a.index < oc.found) EXPECT_GT(a.cost_ns * kKnobCostMargin, least);
+    if (a.index < oc.found) {
+      EXPECT_GT(a.cost_ns * kKnobCostMargin, least);
+    }
   }
   const auto json = std::filesystem::temp_directory_path() / "ballbench-also-met.json";
   write_match_files(m, json.string(), json.string() + ".csv");

@@ -4,10 +4,10 @@
 #include <algorithm>
 #include <memory>
 #include <optional>
-#include <thread>
 
 #include <fmt/format.h>
 
+#include "core_affinity.h"
 #include "commands.h"
 #include "data_file.h"
 #include "input_error.h"
@@ -28,7 +28,7 @@ namespace ballbench::cli {
 namespace {
 
 struct MatchArgs {
-  MatchArgs() { options.jobs = std::max(1, int(std::thread::hardware_concurrency())); }
+  MatchArgs() { options.jobs = core_count(); }
   std::string scene, engines, json, csv, shard;
   std::vector<std::string> spec;
   bool no_knobs = false, fresh = false;

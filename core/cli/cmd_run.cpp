@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.h"
 #include "data_file.h"
@@ -20,6 +21,8 @@
 #include "try_store.h"
 #include "scene_loader.h"
 #include "spec_option.h"
+#include "spec_verdict.h"
+#include "match_result.h"
 #include "validators.h"
 
 namespace ballbench::cli {
@@ -155,13 +158,28 @@ RunOptions run_options(const Scene& scene, const std::vector<const EngineEntry*>
   return options;
 }
 
+// Each row against the spec the scene asks for (its class's, its [accuracy] table, --spec over
+// them), judged as `match` judges a try: a configuration match found meets it here with the line it
+// printed.
+void print_spec_verdicts(const AccuracySpec& spec, const std::vector<Result>& results) {
+  fmt::print("spec: {}\n", spec.text());
+  for (const Result& r : results) {
+    const SpecVerdict v = judge(spec, r);
+    std::vector<std::string> figures;
+    for (const SpecTermDef& d : spec_terms())
+      if (spec[d.term]) figures.push_back(fmt::format("{} {}", d.key, figure_text(v.figures.value(d.key, nlohmann::json()))));
+    fmt::print("  {}: {}\n", run_label(r),
+               v.met ? fmt::format("met ({})", fmt::join(figures, ", ")) : "not met: " + v.why_not);
+  }
+}
+
 void run(const RunArgs& a) {
   install_interrupt_handlers();
   Progress::quiet = a.quiet;
   Scene scene = load_scene(a.scene);
   limit_handshake_seconds(a.isolation.timeout_s);  // --timeout bounds the engines' handshakes too
   const auto engines = parse_engine_list(a.engines);
-  ask_scene_for(scene, a.spec);
+  const AccuracySpec spec = ask_scene_for(scene, a.spec);
   if (a.dt) scene.dt = *a.dt;
   if (a.duration) scene.duration = *a.duration;
   if (scene.duration / scene.dt > 1e9) throw InputError("--dt/--duration: more than 1e9 steps");
@@ -184,7 +202,7 @@ void run(const RunArgs& a) {
   for (const Result& r : results)
     if (ours.empty() && find_engine(r.engine).info.role == EngineRole::ours) ours = run_label(r);
   if (a.seeds > 1) print_ensemble(results, a.seeds, ours);
-  else print_table(results);
+  else print_table(results), print_spec_verdicts(spec, results);
   print_claim_checks(TryStore(TryStore::default_dir(), false), engines, a.profile);
   if (!a.json.empty()) write_results_file(a.json, results);
   // The table and the JSON stand; the trajectory that could not be written is said in one line.

@@ -499,27 +499,27 @@ struct Timed {
   bool stored = false;
 };
 
-// Configurations of one engine timed alone: each window, from the state its run saved there, run
-// in turn (one repeat of each, then the next: a change in the machine's load falls on all alike),
-// `repeats` times or more, each scaled by its window's share of its run's engine time (cost per
-// ball per scene step of the whole run). Each round runs on the next core (core_affinity.h), and a
-// configuration's cost is its fastest repeat (fastest_repeat). A timing kept in the store (by the try it times, the
-// repeats and the machine: a cost is a measurement of this machine) is read, not run. Where no
-// window ran ok, the try's own cost stands.
-void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
-  const auto store_key = [&](const Timed& s) {
-    return nlohmann::json{{"kind", "timing"}, {"try", s.key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
-  };
-  struct Running {
-    Timed* s;
-    Scene window;
-    RunOptions r;
-    double timed_s = 0;  // engine time so far
-    bool failed = false;
-  };
+// A timing's key in the results store: the try it times, the repeats and the machine (a cost is a
+// measurement of this machine).
+nlohmann::json timing_key(const Timed& s, const MatchOptions& o) {
+  return {{"kind", "timing"}, {"try", s.key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
+}
+
+// A configuration being timed: its window's scene and run options, and its repeats so far.
+struct Running {
+  Timed* s;
+  Scene window;
+  RunOptions r;
+  double timed_s = 0;  // engine time so far
+  bool failed = false;
+};
+
+// The subjects whose timing is not in the store and whose window ran: each to be timed, warm
+// (RunOptions::passes).
+std::vector<Running> to_time(std::vector<Timed>& subjects, const MatchOptions& o) {
   std::vector<Running> running;
   for (Timed& s : subjects) {
-    if (const auto kept = o.store ? o.store->find(store_key(s)) : std::nullopt) {
+    if (const auto kept = o.store ? o.store->find(timing_key(s, o)) : std::nullopt) {
       s.repeats = kept->at("cost_repeats").get<std::vector<double>>();
       if (kept->contains("pipe")) s.pipe = kept->at("pipe").get<std::vector<double>>();
       s.stored = true;
@@ -530,8 +530,20 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
     r.profile = s.t->profile;
     if (!s.t->knob.empty()) r.overrides = {{s.t->knob, s.t->value}};
     r.series_points = 0;
-    running.push_back({&s, load_scene_file(s.w->scene), r});
+    r.passes = kTimingPasses;
+    Scene window = load_scene_file(s.w->scene);
+    // The sampled metrics at the window's end only: a timing judges nothing, and the harness's work
+    // beside each step would fill the caches the engine's next step finds.
+    r.metrics.sample_every = int(std::clamp<long>(window.steps(), 1, std::numeric_limits<int>::max()));
+    running.push_back({&s, std::move(window), r});
   }
+  return running;
+}
+
+// Rounds of one repeat of each window in turn, each round on the next core, until each has its
+// repeats (an engine in a process of its own: a fresh process each, its speed differing from one
+// process to the next; any other: more while its repeats hold under kTimedSeconds).
+void time_rounds(std::vector<Running>& running, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
   // A repeat of an engine in a process of its own starts that process (Node's start and its
   // compilations, half a second, for a window of milliseconds): --repeats of them.
   const int most = e.info.own_process && o.isolation.enabled ? o.repeats : kTimingRepeatsFactor * o.repeats;
@@ -539,8 +551,6 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
     const int rep = int(x.s->repeats.size());
     return !x.failed && (rep < o.repeats || (x.timed_s < kTimedSeconds && rep < most));
   };
-  // An engine in a process of its own, in a fresh one each repeat: its speed differs from one
-  // process to the next, and the fastest is over processes.
   IsolationOptions fresh{o.isolation.timeout_s, ""};
   fresh.fresh_process = true;
   const std::vector<int> cores = allowed_cores();
@@ -568,11 +578,22 @@ void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEn
       if (t.engine_process_s) x.s->pipe.push_back(whole(t.engine_s));
     }
   }
+}
+
+// Configurations of one engine timed alone: each window, from the state its run saved there, run
+// warm in turn (one repeat of each, then the next: a change in the machine's load falls on all
+// alike), `repeats` times or more, each scaled by its window's share of its run's engine time (cost
+// per ball per scene step of the whole run). Each round runs on the next core (core_affinity.h),
+// and a configuration's cost is its fastest repeat (fastest_repeat). A timing kept in the store is
+// read, not run. Where no window ran ok, the try's own cost stands.
+void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
+  std::vector<Running> running = to_time(subjects, o);
+  time_rounds(running, scene, e, o);
   for (const Running& x : running)
     if (o.store && int(x.s->repeats.size()) >= o.repeats && !interrupt_signal()) {
       nlohmann::json kept{{"cost_repeats", x.s->repeats}};
       if (!x.s->pipe.empty()) kept["pipe"] = x.s->pipe;
-      o.store->keep(store_key(*x.s), kept);
+      o.store->keep(timing_key(*x.s, o), kept);
     }
   for (Timed& s : subjects)
     if (s.repeats.empty()) {
@@ -870,10 +891,9 @@ void print_our_ratios(const MatchResult& m, std::optional<double> target) {
 
 void print_match(const MatchResult& m, std::optional<double> target) {
   fmt::print("Equal accuracy on {} ({} balls, class {}): {}\n", m.scene, m.n, m.scene_class, m.spec.text());
-  fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, the found configuration "
-             "timed after the searches over a tenth of its run from the state it saved there, scaled to the whole run, "
-             "the fastest of the repeats, run on each core in turn; engines in another process time their own steps (pipe-inclusive beside it)\n",
-             m.dt);
+  fmt::print("cost: the engine's step time per ball per scene step (dt = {:g} s) in CPU time, {}; engines in another "
+             "process time their own steps (pipe-inclusive beside it)\n",
+             m.dt, timing_method_text());
   fmt::print("budget: {:g} runs of the scene at dt per search ({:.3g} ball steps); a try stops where a term that only "
              "grows is past its bound\n",
              m.budget_runs, m.budget_runs * double(m.run_ball_steps));

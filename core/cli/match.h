@@ -58,6 +58,9 @@ inline constexpr double kPaceRunLinearMargin = kClearlyCostlier;
 // search stops at is a multiple of our cost.
 inline constexpr double kTimedSeconds = 0.25;
 inline constexpr int kTimingRepeatsFactor = 8;
+// A timing repeat's passes at most (RunOptions::passes): box2d3's seed-box window of 500 steps is
+// compiled by its fourth.
+inline constexpr int kTimingPasses = 8;
 
 // The window a found configuration is timed over: this fraction of its run, from its middle, and at
 // least kMinWindowSteps of its steps (up to the run's second half): a window of a cheap engine at a

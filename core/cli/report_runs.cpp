@@ -10,10 +10,10 @@
 #include <functional>
 #include <optional>
 #include <stdexcept>
-#include <thread>
 
 #include <fmt/format.h>
 
+#include "core_affinity.h"
 #include "bench_results.h"
 #include "conform_run.h"
 #include "data_file.h"
@@ -203,11 +203,14 @@ void run_table(const ReportRun& run, const ReportPart& part) {
   if (!contains(run.suite.unreferenced, part.scene)) use_reference(options);
   // A scene marked `animated` (the thesis's): in the viewer and a GIF, as many frames as a page of every run holds.
   if (scene.animated) options.frames = viewer_frames(scene, static_cast<int>(run_count(run.engines, "all")));
-  std::vector<Result> runs = run_all(scene, run.engines, "all", options, run.quiet, run.isolation);
+  // A run on each core at once: the table's costs are each engine's CPU time.
+  Isolation isolation = run.isolation;
+  isolation.jobs = core_count();
+  std::vector<Result> runs = run_all(scene, run.engines, "all", options, run.quiet, isolation);
   // Further placements, for the ensemble table: without frames (the animation and the viewer are of offset 0).
   options.frames = 0;
   run_further_placements(runs, scene, seeds, [&](int k) { return load_scene(part.scene, k); }, run.engines, "all",
-                         options, run.quiet, run.isolation);
+                         options, run.quiet, isolation);
   write_results_file(path_of(run, part), runs);
 }
 
@@ -219,7 +222,7 @@ void run_match_part(const ReportRun& run, const ReportPart& part) {
   o.ceiling = run.suite.match_ceiling;
   o.max_halvings = run.suite.match_max_halvings;
   o.store = run.store;
-  o.jobs = std::max(1, int(std::thread::hardware_concurrency()));
+  o.jobs = core_count();
   o.isolation = run.isolation;
   o.reference = reference_engine();
   o.converged_reference = converged_reference_engine();

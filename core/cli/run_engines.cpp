@@ -1,10 +1,13 @@
 #include "run_engines.h"
 
 #include <algorithm>
+#include <atomic>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <optional>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -18,6 +21,7 @@
 #include "metrics/catalog.h"
 #include "progress.h"
 #include "recorded_reference.h"
+#include "run_status.h"
 #include "trajectory_csv.h"
 
 namespace ballbench::cli {
@@ -325,6 +329,66 @@ Result run_one(const Scene& scene, const EngineEntry& e, RunOptions options, con
   return r;
 }
 
+// Every engine and profile, `isolation.jobs` at a time, each run in its own child; the rows in
+// engine order, as one at a time.
+std::vector<Result> run_side_by_side(const Scene& scene, const std::vector<const EngineEntry*>& engines,
+                                     const std::string& profile, const RunOptions& base, bool quiet,
+                                     const Isolation& isolation) {
+  std::vector<std::pair<const EngineEntry*, std::string>> runs;
+  for (const EngineEntry* e : engines)
+    for (const std::string& p : profiles_for(*e, profile)) runs.emplace_back(e, p);
+  const auto options_for = [&](size_t i) {
+    RunOptions options = base;
+    options.profile = runs[i].second;
+    options.overrides = base.overrides.value(runs[i].first->info.name, nlohmann::json::object());
+    return options;
+  };
+  // An engine in a process of its own runs in this thread: its process dies with the thread that
+  // started it (PR_SET_PDEATHSIG), and this one's serves the next table; the others fork a child.
+  std::vector<size_t> own, forked;
+  for (size_t i = 0; i < runs.size(); ++i) (runs[i].first->info.own_process ? own : forked).push_back(i);
+  std::vector<std::optional<Result>> made(runs.size());
+  std::atomic<size_t> next_own{0}, next_forked{0};
+  std::mutex shown;
+  size_t done = 0;
+  Progress progress(fmt::format("{}: {} runs, {} at once", scene.name, runs.size(), isolation.jobs));
+  const auto take = [&](bool this_thread) -> std::optional<size_t> {
+    if (this_thread)
+      if (const size_t k = next_own++; k < own.size()) return own[k];
+    if (const size_t k = next_forked++; k < forked.size()) return forked[k];
+    return std::nullopt;
+  };
+  const auto worker = [&](bool this_thread) {
+    TrajectorySink none(scene, isolation, "", false);
+    for (std::optional<size_t> i; !interrupt_signal() && (i = take(this_thread));) {
+      made[*i] = run_one(scene, *runs[*i].first, options_for(*i), isolation, none);
+      std::lock_guard lock(shown);
+      if (!quiet)
+        progress.count(++done, runs.size(),
+                       fmt::format("{} ({}): {}", runs[*i].first->info.name, runs[*i].second, run_status_text(made[*i]->status)));
+    }
+  };
+  std::vector<std::thread> threads;
+  for (int j = 1; j < std::min<int>(isolation.jobs, int(runs.size())); ++j) threads.emplace_back(worker, false);
+  worker(true);
+  for (std::thread& t : threads) t.join();
+  // Interrupted, the rows made in full first, in engine order, then those the signal cut (one a
+  // thread), or else a row for the first run not begun: the last row says the table is incomplete,
+  // as one at a time.
+  std::vector<Result> results, cut;
+  std::optional<size_t> first_missing;
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (!made[i]) {
+      if (!first_missing) first_missing = i;
+      continue;
+    }
+    (made[i]->status == RunStatus::interrupted ? cut : results).push_back(std::move(*made[i]));
+  }
+  results.insert(results.end(), cut.begin(), cut.end());
+  if (cut.empty() && first_missing) results.push_back(not_started(scene, *runs[*first_missing].first, options_for(*first_missing)));
+  return results;
+}
+
 }  // namespace
 
 std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEntry*>& engines,
@@ -337,6 +401,11 @@ std::vector<Result> run_all(const Scene& scene, const std::vector<const EngineEn
   std::shared_ptr<const RecordedReference> recorded = base.recorded_reference;
   if (!recorded && base.reference && run_count(engines, profile) > 1)
     recorded = record_reference(scene, base, isolation.timeout_s);
+  if (isolation.enabled && isolation.jobs > 1 && trajectory_path.empty()) {
+    RunOptions shared = base;
+    shared.recorded_reference = recorded;
+    return run_side_by_side(scene, engines, profile, shared, quiet, isolation);
+  }
   for (const EngineEntry* e : engines)
     for (const std::string& p : profiles_for(*e, profile)) {
       RunOptions options = base;

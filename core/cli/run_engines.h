@@ -33,6 +33,9 @@ void check_profile(const std::vector<const EngineEntry*>& engines, const std::st
 struct Isolation {
   bool enabled = true;
   double timeout_s = 600;  // per run (s)
+  // Runs at once (run_all without a trajectory), each in its own child: an engine's CPU time, its
+  // cost, barely moves with a run beside it on the other core (core/runner.h).
+  int jobs = 1;
 };
 
 // Every engine x profile on `scene`; `base.overrides` holds settings per engine name. If
