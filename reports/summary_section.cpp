@@ -81,8 +81,8 @@ std::string provenance(const ReportInputs& in) {
     if (const auto d = json_string_field(m.context, "date"); !d.empty()) dates.insert(d.substr(0, 10));
   }
   std::string md = "Cost: the engine's CPU time per ball per scene step (ns), the configuration found timed alone "
-                   "(the fastest of at least three windows of its run, more for a short window, run on each core in turn; "
-                   "± half their range).";
+                   "(the fastest of at least three windows of its run, more for a short window, run on each core in turn, "
+                   "each run again until the engine is warm; ± half their range).";
   md += fmt::format(" dt: the scene's own step ({}); a step of dt/64 makes 64 steps per scene step.",
                     steps.size() == 1 ? *steps.begin() + " in each" : fmt::format("{}", fmt::join(steps, ", ")));
   if (budget > 0)
