@@ -368,10 +368,11 @@ std::vector<Result> run_side_by_side(const Scene& scene, const std::vector<const
                        fmt::format("{} ({}): {}", runs[*i].first->info.name, runs[*i].second, run_status_text(made[*i]->status)));
     }
   };
-  std::vector<std::thread> threads;
-  for (int j = 1; j < std::min<int>(isolation.jobs, int(runs.size())); ++j) threads.emplace_back(worker, false);
-  worker(true);
-  for (std::thread& t : threads) t.join();
+  {
+    std::vector<std::jthread> threads;  // joined on the way out, whatever this thread's worker throws
+    for (int j = 1; j < std::min<int>(isolation.jobs, int(runs.size())); ++j) threads.emplace_back(worker, false);
+    worker(true);
+  }
   // Interrupted, the rows made in full first, in engine order, then those the signal cut (one a
   // thread), or else a row for the first run not begun: the last row says the table is incomplete,
   // as one at a time.
