@@ -14,6 +14,7 @@
 #include "input_error.h"
 #include "process/process_engine.h"
 #include "interrupt.h"
+#include "match_result.h"
 #include "progress.h"
 #include "registry.h"
 #include "conform_run.h"
@@ -22,7 +23,6 @@
 #include "scene_loader.h"
 #include "spec_option.h"
 #include "spec_verdict.h"
-#include "match_result.h"
 #include "validators.h"
 
 namespace ballbench::cli {

@@ -58,8 +58,8 @@ inline constexpr double kPaceRunLinearMargin = kClearlyCostlier;
 // search stops at is a multiple of our cost.
 inline constexpr double kTimedSeconds = 0.25;
 inline constexpr int kTimingRepeatsFactor = 8;
-// A timing repeat's passes at most (RunOptions::passes): box2d3's seed-box window of 500 steps is
-// compiled by its fourth.
+// A timing repeat's passes at most (RunOptions::passes): box2d3's seed-box window of 500 steps runs
+// near its compiled speed from its third pass (core/runner.h, kWarmSeconds).
 inline constexpr int kTimingPasses = 8;
 
 // The window a found configuration is timed over: this fraction of its run, from its middle, and at

@@ -13,9 +13,9 @@
 
 #include <fmt/format.h>
 
-#include "core_affinity.h"
 #include "bench_results.h"
 #include "conform_run.h"
+#include "core_affinity.h"
 #include "data_file.h"
 #include "input_error.h"
 #include "interrupt.h"
