@@ -99,6 +99,8 @@ nlohmann::json to_json(const Result& r) {
   }
   if (r.engine_cpu_s) j["engine_cpu_s"] = measurement(r, *r.engine_cpu_s);
   if (r.window_engine_s) j["window_engine_s"] = measurement(r, *r.window_engine_s);
+  if (!r.window_pace.empty() && r.measured()) j["window_pace"] = r.window_pace;
+  if (r.warm) j["warm"] = {{"count", r.warm->count}, {"cost_s", r.warm->cost_s}, {"engine_s", r.warm->engine_s}};
   if (!r.pace.empty() && r.measured()) j["pace"] = r.pace;
   j["out_of_plane_max"] = measurement(r, r.out_of_plane_max);
   if (r.scene_features) {
@@ -175,6 +177,11 @@ Result result_from_json(const nlohmann::json& j) {
   if (j.contains("engine_process_s")) r.engine_process_s = measurement_from(j, "engine_process_s");
   if (j.contains("engine_cpu_s")) r.engine_cpu_s = measurement_from(j, "engine_cpu_s");
   if (j.contains("window_engine_s")) r.window_engine_s = measurement_from(j, "window_engine_s");
+  if (j.contains("window_pace")) r.window_pace = j.at("window_pace").get<std::vector<double>>();
+  if (j.contains("warm")) {
+    const nlohmann::json& w = j.at("warm");
+    r.warm = Result::WarmPasses{w.at("count").get<int>(), w.at("cost_s").get<double>(), w.at("engine_s").get<double>()};
+  }
   if (j.contains("pace")) r.pace = j.at("pace").get<std::vector<double>>();
   r.out_of_plane_max = measurement_from(j, "out_of_plane_max", false);
   if (j.contains("scene_features")) {
@@ -247,7 +254,8 @@ nlohmann::json result_shape() {
   r.steps_done = 1;                 // a run that made steps writes every figure it measured
   r.engine_process_s = 0;
   r.engine_cpu_s = r.window_engine_s = 0;
-  r.pace = {0.0};
+  r.pace = r.window_pace = {0.0};
+  r.warm = Result::WarmPasses{1, 0, 0};
   r.events.emplace_back();
   r.events.back().j = 1;  // a pair's
   r.reference.available = true;

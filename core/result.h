@@ -66,10 +66,23 @@ struct Result {
   // What a search costs the engine by: its CPU time where the run timed it, else its own step
   // clock's, else the harness's (s). Load barely changes it.
   double cost_s() const { return engine_cpu_s.value_or(engine_process_s.value_or(engine_s)); }
+  // A timing's warm passes (RunOptions::passes): each from the first that was not kWarmGain faster
+  // than the one before, their count and their mean cost_s() and engine_s (s). A timing reads this
+  // mean over a quarter of a second of passes where one pass of a window of milliseconds would read
+  // a cache miss. JSON "warm"; none for a run of one pass, or one whose passes all grew faster.
+  struct WarmPasses {
+    int count = 0;
+    double cost_s = 0, engine_s = 0;
+  };
+  std::optional<WarmPasses> warm;
   // The engine's step time over RunOptions::window (s), by its own clock where it has one
   // (engine_process_s's, else engine_cpu_s's): how that window's cost relates to the whole run's. JSON
   // "window_engine_s"; none for a run without a window or one that stopped in it.
   std::optional<double> window_engine_s;
+  // The engine's time (the same clock) from the window's start to each of its points
+  // (window_prefix_steps), as far as the run went: a prefix of the window holding enough time to
+  // time is timed instead of the whole. JSON "window_pace".
+  std::vector<double> window_pace;
   // The run's pace where RunOptions::record_pace asked for it: the engine's time (by the window's
   // clock) at each 1/kPacePoints of its steps, as far as it went (a shape: a projection takes its
   // ratios, to CPU time). JSON "pace"; absent when not recorded.

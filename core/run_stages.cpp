@@ -151,7 +151,12 @@ void window(RunContext& c, long k) {
                             "the window's scene");
     }
   }
-  if (k == w.start + w.steps && c.window_start_s >= 0) c.r.window_engine_s = engine_clock_s(c) - c.window_start_s;
+  if (c.window_start_s < 0) return;
+  // A window of fewer steps than points has points that share a step: each gets its time.
+  while (int(c.r.window_pace.size()) < kWindowPoints &&
+         k == w.start + window_prefix_steps(w.steps, int(c.r.window_pace.size())))
+    c.r.window_pace.push_back(engine_clock_s(c) - c.window_start_s);
+  if (k == w.start + w.steps) c.r.window_engine_s = engine_clock_s(c) - c.window_start_s;
 }
 
 // Step k of the loop: the engine's step (timed), then, where the engine provides a state, its

@@ -96,12 +96,19 @@ Result run_pass(const Scene& scene, const EngineEntry& entry, const RunOptions& 
 Result run_engine(const Scene& scene, const EngineEntry& entry, const RunOptions& options) {
   Result last = run_pass(scene, entry, options);
   double spent = last.cost_s();
+  Result::WarmPasses warm;
   for (int pass = 1; pass < options.passes && last.status == RunStatus::ok && !interrupt_signal(); ++pass) {
     Result r = run_pass(scene, entry, options);
-    const bool warming = r.status == RunStatus::ok && r.cost_s() < (1 - kWarmGain) * last.cost_s();
+    if (r.status != RunStatus::ok) return r;
+    const bool warming = r.cost_s() < (1 - kWarmGain) * last.cost_s();
     spent += r.cost_s();
+    if (!warming || warm.count > 0) ++warm.count, warm.cost_s += r.cost_s(), warm.engine_s += r.engine_s;
     last = std::move(r);
     if (!warming && spent >= kWarmSeconds) break;
+  }
+  if (warm.count > 0) {
+    warm.cost_s /= warm.count, warm.engine_s /= warm.count;
+    last.warm = warm;
   }
   return last;
 }

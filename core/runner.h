@@ -1,7 +1,8 @@
 #pragma once
 // Runs one engine on one scene: builds it, steps it, times the steps, samples states into metrics.
-#include <cstdint>
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -47,6 +48,14 @@ inline constexpr double kBracketStep_s = 100e-6;
 // 29, 16, 17, 9 and 18 ms in ten passes in one process. Stopped at the first pass that gained
 // nothing, its cost there read 967 - 1 755 ns; after the passes of 0.25 s (eight), 849 - 912.
 inline constexpr double kWarmGain = 0.1;
+// The points of a window's pace (Result::window_pace): the engine time at the end of each
+// 1/kWindowPoints of its steps.
+inline constexpr int kWindowPoints = 16;
+// The steps of a window of `steps` steps up to its pace's point i (0 .. kWindowPoints - 1).
+inline long window_prefix_steps(long steps, int i) { return std::max(1L, steps * (i + 1) / kWindowPoints); }
+// A timing runs the first prefix of a window that held this much of the engine's time (s) in its
+// try, or the whole window: its passes and repeats then hold about a second of the engine's time.
+inline constexpr double kTimedWindowSeconds = 0.2;
 inline constexpr double kWarmSeconds = 0.25;
 
 struct RunOptions {
@@ -74,8 +83,9 @@ struct RunOptions {
   // only grows (SpecTermDef::grows) is past its bound: the run can no longer meet it. Null: run on.
   const AccuracySpec* stop_on_miss = nullptr;
   // A window of steps [start, start + steps): the engine's time over it goes to
-  // Result::window_engine_s and, where `checkpoint` names a file, the state at its start is written
-  // there as a scene running the window (core/scene_writer.h), to time the window again from it.
+  // Result::window_engine_s, and over each of its first window_prefix_steps(steps, i) steps to
+  // Result::window_pace; where `checkpoint` names a file, the state at its start is written there
+  // as a scene running the window (core/scene_writer.h), to time the window, or a prefix of it, again.
   struct Window {
     long start = -1;  // < 0: none
     long steps = 0;
@@ -98,9 +108,9 @@ struct RunOptions {
   bool record_pace = false;
   // Timing: the run made up to this many times in this process, each pass on a world built afresh
   // from the scene (an engine in a process of its own keeps that process), until the engine is warm
-  // (kWarmGain, kWarmSeconds); the result is the last pass's (one figure per run, as without passes:
-  // the fastest of many would pick the noise). The passes warm the engine as a game's minutes of
-  // play would: a JIT's compiled code, caches, the allocator's pages. 1: one run.
+  // (kWarmGain, kWarmSeconds); the result is the last pass's, with the mean of the warm passes
+  // (Result::warm). The passes warm the engine as a game's minutes of play would: a JIT's compiled
+  // code, caches, the allocator's pages. 1: one run.
   int passes = 1;
   // The run ends at the first step boundary past this time (RunStatus::timed_out), keeping what it
   // measured (an isolated run's child sets it to its time limit; its parent kills a child stuck in

@@ -229,8 +229,10 @@ TEST(Match, FindsAPointThatReproducesAndSaysNotReachedWithTheBestTried) {
   const MatchTry& found = m.tries[home.found];
   EXPECT_TRUE(found.met);
   EXPECT_EQ(found.halvings, 0);
-  // Its window, timed alone: milliseconds, so repeated past the one asked, as far as allowed.
-  EXPECT_EQ(home.cost_repeats.size(), size_t(cli::kTimingRepeatsFactor * o.repeats));
+  // Its window, timed alone: milliseconds, so repeated past the one asked (until the repeats' warm
+  // passes hold kTimedSeconds), within what is allowed.
+  EXPECT_GT(home.cost_repeats.size(), size_t(o.repeats));
+  EXPECT_LE(home.cost_repeats.size(), size_t(cli::kTimingRepeatsFactor * o.repeats));
   EXPECT_NE(home.command.find("--profile default --dt 0.01 --no-reference"), std::string::npos) << home.command;
   Scene again = scene;
   again.dt = found.dt;

@@ -16,6 +16,7 @@
 #include <thread>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.h"
@@ -405,17 +406,19 @@ TEST(Cli, SweepStressAndReportKeepWhatTheyFinishedWhenInterrupted) {
   const std::string d = dir.string();
   struct Case {
     std::string args, written;
+    int after_s;  // the signal's
   };
-  // home's event path on the pile takes minutes a run, so the signal lands in a run.
+  // home's event path on the pile takes minutes a run, so the signal lands in a run; the report's
+  // first table takes 5 s idle, so its signal lands in that table.
   const std::vector<Case> cases = {
-      {"sweep --quiet --scene pile --engine home --no-knobs --horizon 4 --repeats 1 --json " + d + "/s.json", d + "/s.json"},
-      {"stress --quiet --scene pile --engine home --knobs dt --json " + d + "/f.json", d + "/f.json"},
-      {"report --no-bench --out " + d + "/report", d + "/report/results"},
+      {"sweep --quiet --scene pile --engine home --no-knobs --horizon 4 --repeats 1 --json " + d + "/s.json", d + "/s.json", 6},
+      {"stress --quiet --scene pile --engine home --knobs dt --json " + d + "/f.json", d + "/f.json", 6},
+      {"report --no-bench --out " + d + "/report", d + "/report/results", 2},
   };
   for (const Case& c : cases) {
     const std::string err = d + "/err";
-    const std::string cmd = std::string("timeout --preserve-status -s INT 6 ") + BALLBENCH_CLI + " " + c.args +
-                            " >/dev/null 2>" + err;
+    const std::string cmd = fmt::format("timeout --preserve-status -s INT {} ", c.after_s) + BALLBENCH_CLI + " " +
+                            c.args + " >/dev/null 2>" + err;
     const int rc = std::system(cmd.c_str());
     ASSERT_TRUE(WIFEXITED(rc)) << c.args;
     EXPECT_EQ(WEXITSTATUS(rc), 130) << c.args << ": " << slurp(err);

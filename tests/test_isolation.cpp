@@ -222,8 +222,9 @@ TEST(CostPace, ARunOnALoadedCoreCostsTheCPUItsStepsSpent) {
 
 // A timing's passes run the scene again on new worlds in one process until the engine is warm: an
 // engine whose passes of 50 steps cost 10, 5, then 1 (as box2d3's seed-box window took 41, 20, 10 and
-// 10 ms in one process) is timed at its warm cost; one pass times it cold.
-TEST(RunPasses, ATimingRunsUntilTheEngineIsWarmAndKeepsTheLastPass) {
+// 10 ms in one process) is timed at its warm cost, the last pass's and the mean of the warm passes
+// (those from the first that gained nothing: none of the cold ones); one pass times it cold.
+TEST(RunPasses, ATimingRunsUntilTheEngineIsWarmAndReadsItsWarmPasses) {
   const EngineEntry cold = test_engine("cold", Misbehaviour::Cold, 100);
   RunOptions o = steps(50);
   o.passes = 8;
@@ -234,9 +235,36 @@ TEST(RunPasses, ATimingRunsUntilTheEngineIsWarmAndKeepsTheLastPass) {
   EXPECT_LE(TestEngine::cold_worlds(), 8);
   // Half the warm cost either way: the cold passes cost 5 and 10 times it, so any of them kept fails.
   EXPECT_NEAR(warm.cost_s(), 50 * 2e-4, 0.5 * 50 * 2e-4);
+  ASSERT_TRUE(warm.warm);
+  EXPECT_EQ(warm.warm->count, TestEngine::cold_worlds() - 3);
+  EXPECT_NEAR(warm.warm->cost_s, 50 * 2e-4, 0.5 * 50 * 2e-4);
+  EXPECT_GE(warm.warm->engine_s, 0.5 * warm.warm->cost_s);
   TestEngine::cold_steps() = 0;
   const Result first = run_engine(box(), cold, steps(50));
   EXPECT_GT(first.cost_s(), 5 * warm.cost_s());
+  EXPECT_FALSE(first.warm);
+}
+
+// A window's pace is the engine's time from the window's start to each sixteenth of it, growing to
+// the window's whole time; a window of fewer steps than points gives the points that share a step
+// one time.
+TEST(RunWindow, RecordsTheEnginesTimeAtEachSixteenthOfTheWindow) {
+  for (const long window_steps : {32L, 5L}) {
+    RunOptions o = steps(50);
+    o.window.start = 10, o.window.steps = window_steps;
+    const Result r = run_engine(box(), find_engine("home"), o);
+    ASSERT_EQ(r.status, RunStatus::ok) << r.error;
+    ASSERT_TRUE(r.window_engine_s);
+    ASSERT_EQ(r.window_pace.size(), size_t(kWindowPoints)) << window_steps;
+    EXPECT_TRUE(std::is_sorted(r.window_pace.begin(), r.window_pace.end()));
+    EXPECT_GT(r.window_pace.front(), 0);
+    EXPECT_DOUBLE_EQ(r.window_pace.back(), *r.window_engine_s);
+    for (int i = 1; i < kWindowPoints; ++i) {
+      if (window_prefix_steps(window_steps, i) == window_prefix_steps(window_steps, i - 1)) {
+        EXPECT_EQ(r.window_pace[size_t(i)], r.window_pace[size_t(i - 1)]) << i;
+      }
+    }
+  }
 }
 
 // A pace projects a run from a point of its steps as its pace run grew from there: in proportion

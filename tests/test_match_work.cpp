@@ -107,6 +107,22 @@ TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
     }
 }
 
+// A timing runs the first part of a window that held kTimedWindowSeconds of the engine's time in
+// its try, scaled by that part's share of the run; a window that held less, whole.
+TEST(MatchWork, ALongWindowIsTimedOverItsFirstPartThatHeldAFifthOfASecond) {
+  cli::WindowShares w;
+  w.steps = 1600, w.share = 0.16;
+  for (int i = 0; i < kWindowPoints; ++i) w.pace.push_back(0.01 * (i + 1));
+  // A run of 10 s: the window's points hold 0.1, 0.2, ... s; the second is the first of 0.2 s.
+  ASSERT_DOUBLE_EQ(kTimedWindowSeconds, 0.2);
+  const auto [steps, share] = cli::timed_prefix(w, 10.0);
+  EXPECT_EQ(steps, window_prefix_steps(1600, 1));
+  EXPECT_EQ(steps, 200);
+  EXPECT_DOUBLE_EQ(share, 0.02);
+  // A run of 1 s: the whole window holds 0.16 s.
+  EXPECT_EQ(cli::timed_prefix(w, 1.0), std::make_pair(1600L, 0.16));
+}
+
 // The budget counts work: a search that cannot afford its next try stops there, naming it, and a
 // larger budget goes on from the same tries.
 TEST(MatchWork, TheBudgetIsWorkAndStopsTheSameTries) {

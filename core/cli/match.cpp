@@ -37,6 +37,20 @@
 #include "sweep_result.h"
 
 namespace ballbench::cli {
+std::optional<WindowShares> window_shares(const Result& res, long steps) {
+  const double whole = res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s));
+  if (!res.window_engine_s || !(whole > 0)) return std::nullopt;
+  WindowShares w{steps, {}, *res.window_engine_s / whole};
+  for (const double s : res.window_pace) w.pace.push_back(s / whole);
+  return w;
+}
+
+std::pair<long, double> timed_prefix(const WindowShares& w, double run_s) {
+  for (int i = 0; i < int(w.pace.size()); ++i)
+    if (w.pace[size_t(i)] * run_s >= kTimedWindowSeconds) return {window_prefix_steps(w.steps, i), w.pace[size_t(i)]};
+  return {w.steps, w.share};
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -167,11 +181,12 @@ class Search {
     return store_key({t.knob, t.value, {}}, t.halvings);
   }
   std::vector<MatchTry> tries;
-  // A try that met: the scene file its window starts from, and the window's share of its run's
-  // engine time.
+  // A try that met: the scene file its window starts from, the steps of it a timing runs (the
+  // window, or its first prefix holding kTimedWindowSeconds: window_timed) and their share of the
+  // run's engine time.
   struct Window {
     std::string scene;
-    double share = 0;
+    WindowShares shares;
   };
   std::map<int, Window> windows;  // by try index
   // Each configuration's coarsest step that met the spec (try indices, in search order).
@@ -395,9 +410,9 @@ class Search {
       last_trajectory_ = kept->value("trajectory", "");
       if (kept->contains("pace")) take_pace(index, kept->at("pace").get<std::vector<double>>(), c.knob.empty() && k == 0);
       if (kept->contains("window")) {
-        write_file_atomically(r.window.checkpoint, kept->at("window").at("scene").get<std::string>(),
-                              "the window's scene");
-        windows[index] = {r.window.checkpoint, kept->at("window").at("share").get<double>()};
+        const nlohmann::json& w = kept->at("window");
+        write_file_atomically(r.window.checkpoint, w.at("scene").get<std::string>(), "the window's scene");
+        windows[index] = {r.window.checkpoint, {r.window.steps, w.at("pace").get<std::vector<double>>(), w.at("share").get<double>()}};
       }
     } else {
       t = run_try(c, k, r, index);
@@ -436,11 +451,9 @@ class Search {
     nlohmann::json kept{{"try", to_json(t)}, {"trajectory", last_trajectory_}};
     if (take_pace(index, res.pace, c.knob.empty() && k == 0)) kept["pace"] = res.pace;
     std::error_code ec;
-    // The window's share of the run, each on the window's clock (the engine's own, else CPU time).
-    if (const double whole = res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s));
-        t.met && res.window_engine_s && whole > 0) {
-      windows[index] = {r.window.checkpoint, *res.window_engine_s / whole};
-      kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"share", windows[index].share}};
+    if (const auto w = window_shares(res, r.window.steps); t.met && w) {
+      windows[index] = {r.window.checkpoint, *w};
+      kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"pace", w->pace}, {"share", w->share}};
     } else {
       std::filesystem::remove(r.window.checkpoint, ec);
     }
@@ -505,18 +518,20 @@ nlohmann::json timing_key(const Timed& s, const MatchOptions& o) {
   return {{"kind", "timing"}, {"try", s.key}, {"repeats", o.repeats}, {"cpu", machine_info().cpu}};
 }
 
-// A configuration being timed: its window's scene and run options, and its repeats so far.
+// A configuration being timed: its window's scene, run options and share of the run, and its
+// repeats so far.
 struct Running {
   Timed* s;
   Scene window;
   RunOptions r;
+  double share = 0;
   double timed_s = 0;  // engine time so far
   bool failed = false;
 };
 
 // The subjects whose timing is not in the store and whose window ran: each to be timed, warm
 // (RunOptions::passes).
-std::vector<Running> to_time(std::vector<Timed>& subjects, const MatchOptions& o) {
+std::vector<Running> to_time(std::vector<Timed>& subjects, const Scene& scene, const MatchOptions& o) {
   std::vector<Running> running;
   for (Timed& s : subjects) {
     if (const auto kept = o.store ? o.store->find(timing_key(s, o)) : std::nullopt) {
@@ -525,17 +540,18 @@ std::vector<Running> to_time(std::vector<Timed>& subjects, const MatchOptions& o
       s.stored = true;
       continue;
     }
-    if (!s.w || !(s.w->share > 0)) continue;
+    if (!s.w || !(s.w->shares.share > 0)) continue;
     RunOptions r;
     r.profile = s.t->profile;
     if (!s.t->knob.empty()) r.overrides = {{s.t->knob, s.t->value}};
     r.series_points = 0;
     r.passes = kTimingPasses;
-    Scene window = load_scene_file(s.w->scene);
+    const auto [steps, share] = timed_prefix(s.w->shares, s.t->cost_ns * 1e-9 * double(scene.n()) * double(scene.steps()));
+    r.steps = steps;
     // The sampled metrics at the window's end only: a timing judges nothing, and the harness's work
     // beside each step would fill the caches the engine's next step finds.
-    r.metrics.sample_every = int(std::clamp<long>(window.steps(), 1, std::numeric_limits<int>::max()));
-    running.push_back({&s, std::move(window), r});
+    r.metrics.sample_every = int(std::clamp<long>(steps, 1, std::numeric_limits<int>::max()));
+    running.push_back({&s, load_scene_file(s.w->scene), r, share});
   }
   return running;
 }
@@ -572,10 +588,11 @@ void time_rounds(std::vector<Running>& running, const Scene& scene, const Engine
       // CPU time, as while searching: another job on the cores changes it less than the wall time
       // (10-25% on this 2-core VM, with what the other job runs), and an engine on several threads
       // is charged for each.
-      const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / x.s->w->share, scene); };
-      x.timed_s += t.cost_s();
-      x.s->repeats.push_back(whole(t.cost_s()));
-      if (t.engine_process_s) x.s->pipe.push_back(whole(t.engine_s));
+      const auto whole = [&](double window_s) { return cost_per_scene_step(window_s / x.share, scene); };
+      // A repeat's figure: the mean of its warm passes (Result::warm), else its one pass.
+      x.timed_s += t.warm ? t.warm->count * t.warm->cost_s : t.cost_s();
+      x.s->repeats.push_back(whole(t.warm ? t.warm->cost_s : t.cost_s()));
+      if (t.engine_process_s) x.s->pipe.push_back(whole(t.warm ? t.warm->engine_s : t.engine_s));
     }
   }
 }
@@ -587,7 +604,7 @@ void time_rounds(std::vector<Running>& running, const Scene& scene, const Engine
 // and a configuration's cost is its fastest repeat (fastest_repeat). A timing kept in the store is
 // read, not run. Where no window ran ok, the try's own cost stands.
 void time_alone(std::vector<Timed>& subjects, const Scene& scene, const EngineEntry& e, const MatchOptions& o) {
-  std::vector<Running> running = to_time(subjects, o);
+  std::vector<Running> running = to_time(subjects, scene, o);
   time_rounds(running, scene, e, o);
   for (const Running& x : running)
     if (o.store && int(x.s->repeats.size()) >= o.repeats && !interrupt_signal()) {

@@ -25,6 +25,7 @@
 // coarser, else the profile as it is), projects past kPaceMargin times its limit (cost_pace.h).
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -52,8 +53,8 @@ inline constexpr double kCeilingProjectionMargin = 1.5;
 // tuned profile on the pile: 5x) stops in its first seconds, not at the limit.
 inline constexpr double kPaceRunLinearMargin = kClearlyCostlier;
 
-// A found configuration's window is timed --repeats times, and more until the repeats hold this
-// much of its engine's time (s), at most kTimingRepeatsFactor times as many: a window of
+// A found configuration's window is timed --repeats times, and more until the repeats' warm passes
+// hold this much of its engine's time (s), at most kTimingRepeatsFactor times as many: a window of
 // milliseconds is at the mercy of a cache miss or a frequency step, and the ceiling every other
 // search stops at is a multiple of our cost.
 inline constexpr double kTimedSeconds = 0.25;
@@ -67,6 +68,22 @@ inline constexpr int kTimingPasses = 8;
 // coarse step lasts milliseconds, too short to time.
 inline constexpr double kWindowFraction = 0.1;
 inline constexpr long kMinWindowSteps = 500;
+
+// A try's window as a timing sees it: the window's steps and its pace (Result::window_pace) as
+// shares of the run's engine time, each on the window's clock (the engine's own, else CPU time).
+struct WindowShares {
+  long steps = 0;
+  std::vector<double> pace;  // at each window_prefix_steps(steps, i)
+  double share = 0;          // the whole window's
+};
+// None where the run did not cover its window.
+std::optional<WindowShares> window_shares(const Result& res, long steps);
+
+// The steps of a window a timing runs and their share of the run: the first prefix that held
+// kTimedWindowSeconds of the engine's time in its try of `run_s` seconds, else the whole window. A
+// window of seconds is timed over a fifth of a second as well as over all of it, at a tenth of
+// the cost (on a pile at dt/64: within 5% of the whole window's cost, run after run).
+std::pair<long, double> timed_prefix(const WindowShares& w, double run_s);
 
 struct MatchOptions {
   std::string profile = "all";  // as for `run --profile`
