@@ -37,6 +37,7 @@
 #include "sweep_result.h"
 
 namespace ballbench::cli {
+
 std::optional<WindowShares> window_shares(const Result& res, long steps) {
   const double whole = res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s));
   if (!res.window_engine_s || !(whole > 0)) return std::nullopt;
@@ -181,9 +182,8 @@ class Search {
     return store_key({t.knob, t.value, {}}, t.halvings);
   }
   std::vector<MatchTry> tries;
-  // A try that met: the scene file its window starts from, the steps of it a timing runs (the
-  // window, or its first prefix holding kTimedWindowSeconds: window_timed) and their share of the
-  // run's engine time.
+  // A try that met: the scene file its window starts from, and the window's shares of the run's
+  // engine time (a timing runs its timed_prefix).
   struct Window {
     std::string scene;
     WindowShares shares;
@@ -412,7 +412,8 @@ class Search {
       if (kept->contains("window")) {
         const nlohmann::json& w = kept->at("window");
         write_file_atomically(r.window.checkpoint, w.at("scene").get<std::string>(), "the window's scene");
-        windows[index] = {r.window.checkpoint, {r.window.steps, w.at("pace").get<std::vector<double>>(), w.at("share").get<double>()}};
+        windows[index] = {r.window.checkpoint,
+                          {r.window.steps, w.at("pace").get<std::vector<double>>(), w.at("share").get<double>()}};
       }
     } else {
       t = run_try(c, k, r, index);
@@ -546,7 +547,8 @@ std::vector<Running> to_time(std::vector<Timed>& subjects, const Scene& scene, c
     if (!s.t->knob.empty()) r.overrides = {{s.t->knob, s.t->value}};
     r.series_points = 0;
     r.passes = kTimingPasses;
-    const auto [steps, share] = timed_prefix(s.w->shares, s.t->cost_ns * 1e-9 * double(scene.n()) * double(scene.steps()));
+    const double run_s = s.t->cost_ns * 1e-9 * double(scene.n()) * double(scene.steps());
+    const auto [steps, share] = timed_prefix(s.w->shares, run_s);
     r.steps = steps;
     // The sampled metrics at the window's end only: a timing judges nothing, and the harness's work
     // beside each step would fill the caches the engine's next step finds.
