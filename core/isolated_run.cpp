@@ -409,7 +409,12 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(1);  // the parent died before the request took
     install_interrupt_handlers(false);
-    ::close(fds[0]);
+    // Nothing else of this process's is kept: a run forked beside this one from another thread has
+    // its pipe open until its fork returns, and its parent reads that pipe to its end, which a copy
+    // of its write end here would hold off until this child exits (a run of 40 steps beside a hung
+    // one read as hung; a try of a second beside one of a minute, as a minute).
+    ::close_range(3, unsigned(fds[1]) - 1, 0);
+    ::close_range(unsigned(fds[1]) + 1, ~0U, 0);
     const CorePin pin(isolation.core);  // until the child exits
     child_main(fds[1], scene, entry, options, isolation);
   }

@@ -147,7 +147,10 @@ std::shared_ptr<const RecordedReference> record_reference(const Scene& scene, co
   auto* states = reinterpret_cast<double*>(static_cast<char*>(block) + sizeof(Header));
   std::shared_ptr<RecordedReference> rec;
   const pid_t pid = ::fork();
-  if (pid == 0) record_in_child(scene, choice, steps, header, states, doubles);
+  if (pid == 0) {
+    ::close_range(3, ~0U, 0);  // a run's pipe forked beside it from another thread (isolated_run.cpp)
+    record_in_child(scene, choice, steps, header, states, doubles);
+  }
   if (pid > 0 && wait_for(pid, timeout_s) && !header->reshaped) {
     rec = std::make_shared<RecordedReference>();
     rec->engine = choice.entry->info.name;

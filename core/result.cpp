@@ -99,6 +99,7 @@ nlohmann::json to_json(const Result& r) {
   }
   if (r.engine_cpu_s) j["engine_cpu_s"] = measurement(r, *r.engine_cpu_s);
   if (r.window_engine_s) j["window_engine_s"] = measurement(r, *r.window_engine_s);
+  if (r.window_clock_s) j["window_clock_s"] = measurement(r, *r.window_clock_s);
   if (!r.window_pace.empty() && r.measured()) j["window_pace"] = r.window_pace;
   if (r.warm) j["warm"] = {{"count", r.warm->count}, {"cost_s", r.warm->cost_s}, {"engine_s", r.warm->engine_s}};
   if (!r.pace.empty() && r.measured()) j["pace"] = r.pace;
@@ -177,6 +178,7 @@ Result result_from_json(const nlohmann::json& j) {
   if (j.contains("engine_process_s")) r.engine_process_s = measurement_from(j, "engine_process_s");
   if (j.contains("engine_cpu_s")) r.engine_cpu_s = measurement_from(j, "engine_cpu_s");
   if (j.contains("window_engine_s")) r.window_engine_s = measurement_from(j, "window_engine_s");
+  if (j.contains("window_clock_s")) r.window_clock_s = measurement_from(j, "window_clock_s");
   if (j.contains("window_pace")) r.window_pace = j.at("window_pace").get<std::vector<double>>();
   if (j.contains("warm")) {
     const nlohmann::json& w = j.at("warm");
@@ -253,7 +255,7 @@ nlohmann::json result_shape() {
   r.status = RunStatus::diverged;  // with its step
   r.steps_done = 1;                 // a run that made steps writes every figure it measured
   r.engine_process_s = 0;
-  r.engine_cpu_s = r.window_engine_s = 0;
+  r.engine_cpu_s = r.window_engine_s = r.window_clock_s = 0;
   r.pace = r.window_pace = {0.0};
   r.warm = Result::WarmPasses{1, 0, 0};
   r.events.emplace_back();

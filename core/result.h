@@ -76,9 +76,16 @@ struct Result {
   };
   std::optional<WarmPasses> warm;
   // The engine's step time over RunOptions::window (s), by its own clock where it has one
-  // (engine_process_s's, else engine_cpu_s's): how that window's cost relates to the whole run's. JSON
-  // "window_engine_s"; none for a run without a window or one that stopped in it.
+  // (engine_process_s's), else its long steps' CPU time and its short steps' wall time (the window's
+  // clock): how that window's cost relates to the whole run's. JSON "window_engine_s"; none for a run
+  // without a window or one that stopped in it.
   std::optional<double> window_engine_s;
+  // The engine's time over the whole run on the window's clock (s), where the run measured its
+  // window: the window's share of the run is window_engine_s over this, both on one clock. Over
+  // engine_cpu_s, whose short steps are their wall time scaled by the run's CPU share, the share of
+  // a run that waited for a core reads high (its wall time over its CPU time: 2.2 times for home on
+  // rolling-balls beside another search), and its timing alone low by as much. JSON "window_clock_s".
+  std::optional<double> window_clock_s;
   // The engine's time (the same clock) from the window's start to each of its points
   // (window_prefix_steps), as far as the run went: a prefix of the window holding enough time to
   // time is timed instead of the whole. JSON "window_pace".

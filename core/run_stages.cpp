@@ -410,6 +410,7 @@ void timing(RunContext& c) {
   r.engine_s = c.engine_s;
   r.engine_cpu_s = engine_cpu_seconds(c);
   r.engine_process_s = c.engine->own_step_seconds();
+  if (r.window_engine_s) r.window_clock_s = engine_clock_s(c);
   r.harness_s = std::max(0.0, seconds_since(c.harness_start) - c.engine_s);
   const long stepped = std::max(1L, r.steps_done);
   // The headline is the engine's own step time: an engine in another process times its step calls

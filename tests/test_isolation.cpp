@@ -246,8 +246,8 @@ TEST(RunPasses, ATimingRunsUntilTheEngineIsWarmAndReadsItsWarmPasses) {
 }
 
 // A window's pace is the engine's time from the window's start to each sixteenth of it, growing to
-// the window's whole time; a window of fewer steps than points gives the points that share a step
-// one time.
+// the window's whole time, beside the whole run's on the same clock; a window of fewer steps than
+// points gives the points that share a step one time.
 TEST(RunWindow, RecordsTheEnginesTimeAtEachSixteenthOfTheWindow) {
   for (const long window_steps : {32L, 5L}) {
     RunOptions o = steps(50);
@@ -259,6 +259,9 @@ TEST(RunWindow, RecordsTheEnginesTimeAtEachSixteenthOfTheWindow) {
     EXPECT_TRUE(std::is_sorted(r.window_pace.begin(), r.window_pace.end()));
     EXPECT_GT(r.window_pace.front(), 0);
     EXPECT_DOUBLE_EQ(r.window_pace.back(), *r.window_engine_s);
+    // The run's whole time on the window's clock: the window is a part of it.
+    ASSERT_TRUE(r.window_clock_s);
+    EXPECT_GT(*r.window_clock_s, *r.window_engine_s);
     for (int i = 1; i < kWindowPoints; ++i) {
       if (window_prefix_steps(window_steps, i) == window_prefix_steps(window_steps, i - 1)) {
         EXPECT_EQ(r.window_pace[size_t(i)], r.window_pace[size_t(i - 1)]) << i;

@@ -39,8 +39,8 @@
 namespace ballbench::cli {
 
 std::optional<WindowShares> window_shares(const Result& res, long steps) {
-  const double whole = res.engine_process_s.value_or(res.engine_cpu_s.value_or(res.engine_s));
-  if (!res.window_engine_s || !(whole > 0)) return std::nullopt;
+  if (!res.window_engine_s || !res.window_clock_s || !(*res.window_clock_s > 0)) return std::nullopt;
+  const double whole = *res.window_clock_s;
   WindowShares w{steps, {}, *res.window_engine_s / whole};
   for (const double s : res.window_pace) w.pace.push_back(s / whole);
   return w;

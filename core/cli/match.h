@@ -70,7 +70,7 @@ inline constexpr double kWindowFraction = 0.1;
 inline constexpr long kMinWindowSteps = 500;
 
 // A try's window as a timing sees it: the window's steps and its pace (Result::window_pace) as
-// shares of the run's engine time, each on the window's clock (the engine's own, else CPU time).
+// shares of the run's engine time, each on the window's clock (Result::window_clock_s).
 struct WindowShares {
   long steps = 0;
   std::vector<double> pace;  // at each window_prefix_steps(steps, i)
