@@ -48,6 +48,8 @@ inline constexpr double kBracketStep_s = 100e-6;
 // 29, 16, 17, 9 and 18 ms in ten passes in one process. Stopped at the first pass that gained
 // nothing, its cost there read 967 - 1 755 ns; after the passes of 0.25 s (eight), 849 - 912.
 inline constexpr double kWarmGain = 0.1;
+inline constexpr double kWarmSeconds = 0.25;
+
 // The points of a window's pace (Result::window_pace): the engine time at the end of each
 // 1/kWindowPoints of its steps.
 inline constexpr int kWindowPoints = 16;
@@ -56,7 +58,6 @@ inline long window_prefix_steps(long steps, int i) { return std::max(1L, steps *
 // A timing runs the first prefix of a window that held this much of the engine's time (s) in its
 // try, or the whole window: its passes and repeats then hold about a second of the engine's time.
 inline constexpr double kTimedWindowSeconds = 0.2;
-inline constexpr double kWarmSeconds = 0.25;
 
 struct RunOptions {
   long steps = -1;               // < 0: the scene's duration / dt
