@@ -36,7 +36,7 @@ HomeMethod choose_home_method(const Scene& scene, double dt, double overlap) {
   m.soft = true;
   const double load = settled_layers(scene) * scene.gravity.norm();  // per unit mass (m/s^2)
   const double sag = overlap * scene.radius.minCoeff();               // (m)
-  const double omega = std::sqrt(kSagSafety * load / sag);
+  const double omega = std::max(std::sqrt(kSagSafety * load / sag), kLandingRate / overlap);
   m.contact_hertz = omega / (2 * std::numbers::pi);
   m.substeps = std::max(kMinSubsteps, int(std::ceil(4 * m.contact_hertz * dt - 1e-9)));
   return m;
