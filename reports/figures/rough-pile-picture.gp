@@ -7,7 +7,7 @@ set ylabel 'y (m)' offset 1,0
 set key below font ',8' samplen 2
 set size ratio -1
 set xrange [-10.80089259792393:10.816911646661326]
-set yrange [-0.8259034261493458:3.8006594164661207]
+set yrange [-0.8258926662649193:3.8006594164661207]
 unset object
 set object 1 rect from -10,0 to 10,3 fs empty border rgb '#c03030' lw 2 front
 set title 'home at t = 4 s'
