@@ -20,11 +20,11 @@ struct HomeMethod {
 // - The weight of the balls above: a spring of frequency f under the weight of L balls sinks by
 //   about L g / (2 pi f)^2 (per unit mass, both balls of a pair giving way). A settling pile squeezes
 //   its rows sideways as well, and the factor kSagSafety covers that (measured on `pile-10k`, 100
-//   balls deep: 0.64 - 0.73 of the overlap asked at 2% and 5%).
+//   balls deep: 0.64 - 0.75 of the overlap asked at 5%, 2% and 1%).
 // - The landing of balls on the pile: the heavily damped push-out stops a landing ball within
 //   about a period of the spring, so the overlap it leaves shrinks as 1 / f, not 1 / f^2: about
 //   kLandingRate / (2 pi f) of the radius (measured on `pile`, `rough-pile`, `smooth-pile` and
-//   `seed-bowl` at 68 - 700 Hz: 8 - 19 /s). On shallow piles and at tight overlaps this term binds.
+//   `seed-bowl` at 68 - 950 Hz: 5 - 24 /s). On shallow piles and at tight overlaps this term binds.
 //
 // The substeps are then the fewest that carry the stiffness (the push-out uses at most a quarter of
 // the substep rate). core/solver/PERFORMANCE.md, "Choosing the stiffness", has the figures.

@@ -15,8 +15,9 @@ step's true time. A mode prefixed "batched-" speaks protocol 3 and answers `step
 state, at step 3 doing what the rest of its name says: "error" (the batch stops there, with the
 error), "crash", "long-step-s", "wrong-t", "bad-ids", "short-count" (one step time too few, no
 error), "cumulative-step-s" (each step sleeps 5 ms and reports the whole batch's time, so the
-second step of a batch takes their sum past the round trip: at step 3, in the batch of steps 2 and 3) or "none". Mode "pid-log" behaves, and appends its pid to
-argv[2] as it starts (how many processes served the runs). Test-only: never in an engines file."""
+second step of a batch takes their sum past the round trip: step 3, in the batch of steps 2 and 3)
+or "none". Mode "pid-log" behaves, and appends its pid to argv[2] as it starts (how many processes
+served the runs). Test-only: never in an engines file."""
 import array
 import json
 import struct
@@ -104,8 +105,8 @@ for line in sys.stdin.buffer:
             blocks.append(block.tobytes())
         if mode == "batched-short-count" and steps >= 3:
             times.pop()
-        if mode == "batched-cumulative-step-s":  # each step the whole batch's time: each inside the round trip,
-            times = [time.perf_counter() - began] * len(times)  # two of them past it
+        if mode == "batched-cumulative-step-s":  # each inside the round trip, two of them past it
+            times = [time.perf_counter() - began] * len(times)
         fields = ["id", "x", "y", "vx", "vy"] + (["w", "angle"] if rotation else [])
         reply.update(step_s=times, state={"n": n, "t": ts, "fields": fields})
         send(reply, b"".join(blocks))
