@@ -1,5 +1,6 @@
 #include "isolated_run.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/prctl.h>
@@ -367,6 +368,15 @@ std::string signal_description(int sig) {
   return fmt::format("{} ({})", name, what);
 }
 
+void close_inherited_files(int keep) {
+  if (keep < 3) {
+    ::close_range(3, ~0U, 0);
+    return;
+  }
+  if (keep > 3) ::close_range(3, unsigned(keep) - 1, 0);
+  ::close_range(unsigned(keep) + 1, ~0U, 0);
+}
+
 Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const RunOptions& options,
                            const IsolationOptions& isolation) {
   if (entry.info.own_process && !isolation.fresh_process) {
@@ -389,7 +399,8 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
   }
   Result r = result_header(scene, entry, options);
   int fds[2];
-  if (::pipe(fds) != 0) {
+  // Close-on-exec: an engine process started beside this run from another thread never holds it.
+  if (::pipe2(fds, O_CLOEXEC) != 0) {
     r.status = RunStatus::failed;
     r.error = fmt::format("cannot isolate the run: pipe: {}", std::strerror(errno));
     return r;
@@ -409,12 +420,7 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(1);  // the parent died before the request took
     install_interrupt_handlers(false);
-    // Nothing else of this process's is kept: a run forked beside this one from another thread has
-    // its pipe open until its fork returns, and its parent reads that pipe to its end, which a copy
-    // of its write end here would hold off until this child exits (a run of 40 steps beside a hung
-    // one read as hung; a try of a second beside one of a minute, as a minute).
-    ::close_range(3, unsigned(fds[1]) - 1, 0);
-    ::close_range(unsigned(fds[1]) + 1, ~0U, 0);
+    close_inherited_files(fds[1]);
     const CorePin pin(isolation.core);  // until the child exits
     child_main(fds[1], scene, entry, options, isolation);
   }

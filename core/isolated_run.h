@@ -44,6 +44,13 @@ Result run_engine_isolated(const Scene& scene, const EngineEntry& entry, const R
 // child (PR_SET_PDEATHSIG), a helper in its group would not. Elsewhere it does nothing.
 void note_engine_group(int group, bool live);
 
+// In a process just forked (and not exec'd): closes every file it inherited but stdin, stdout, stderr
+// and `keep` (-1: none). A run forked beside it from another thread has its pipe open until its fork
+// returns, and that run's parent reads the pipe to its end, which a copy of its write end here would
+// hold off until this process exits (a run of 40 steps beside a hung one read as hung; a try of a
+// second beside one of a minute, as a minute).
+void close_inherited_files(int keep);
+
 // "SIGSEGV (segmentation fault)": the signal's name and what it means.
 std::string signal_description(int sig);
 

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "interrupt.h"
+#include "isolated_run.h"
 #include "scene_digest.h"
 
 namespace ballbench {
@@ -148,7 +149,7 @@ std::shared_ptr<const RecordedReference> record_reference(const Scene& scene, co
   std::shared_ptr<RecordedReference> rec;
   const pid_t pid = ::fork();
   if (pid == 0) {
-    ::close_range(3, ~0U, 0);  // a run's pipe forked beside it from another thread (isolated_run.cpp)
+    close_inherited_files(-1);
     record_in_child(scene, choice, steps, header, states, doubles);
   }
   if (pid > 0 && wait_for(pid, timeout_s) && !header->reshaped) {
