@@ -45,7 +45,18 @@ const char* inertia_name(Inertia inertia);  // "disk", "sphere"
 struct RequestedMetrics {
   bool rolling = false;          // balls on the floor: their final speeds against their closed forms (metrics/rolling.h)
   bool angle_of_repose = false;  // a heap on the floor: the slope of its flanks (metrics/angle_of_repose.h)
+  bool runout = false;           // a heap on the floor: the length of its deposit (metrics/runout.h)
 };
+
+// The [metrics] keys, each a flag of RequestedMetrics; every one measures against a floor (a box
+// container, gravity straight down onto it).
+struct RequestedMetricKey {
+  const char* key;
+  bool RequestedMetrics::*flag;
+};
+inline constexpr RequestedMetricKey kRequestedMetricKeys[] = {{"rolling", &RequestedMetrics::rolling},
+                                                              {"angle_of_repose", &RequestedMetrics::angle_of_repose},
+                                                              {"runout", &RequestedMetrics::runout}};
 
 struct Scene {
   std::string name;

@@ -354,18 +354,18 @@ void read_requested_metrics(const toml::node& node, const std::string& source, S
     throw InputError(fmt::format("{}:{}: metrics: expected a table [metrics], got {}", source, node.source().begin.line,
                                  node_type_name(node)));
   TableReader r(*node.as_table(), source, "metrics");
-  r.check_keys({"rolling", "angle_of_repose"});
-  s.metrics.rolling = r.boolean("rolling", false);
-  s.metrics.angle_of_repose = r.boolean("angle_of_repose", false);
-  // Both measure against a floor: the box's bottom wall, with gravity straight down onto it.
+  std::vector<const char*> keys;
+  for (const RequestedMetricKey& m : kRequestedMetricKeys) keys.push_back(m.key);
+  r.check_keys(keys);
+  // Each measures against a floor: the box's bottom wall, with gravity straight down onto it.
   const bool floor = s.container.kind == ContainerKind::Box && s.gravity.x() == 0 && s.gravity.y() < 0;
-  if (s.metrics.rolling) {
-    if (!floor) r.fail(r.node("rolling"), "rolling", "needs a floor: a box container and gravity straight down [0, -g]");
-    if (!(s.friction > 0)) r.fail(r.node("rolling"), "rolling", "needs friction above 0 (a frictionless ball never rolls)");
+  for (const RequestedMetricKey& m : kRequestedMetricKeys) {
+    s.metrics.*m.flag = r.boolean(m.key, false);
+    if (s.metrics.*m.flag && !floor)
+      r.fail(r.node(m.key), m.key, "needs a floor: a box container and gravity straight down [0, -g]");
   }
-  if (s.metrics.angle_of_repose && !floor)
-    r.fail(r.node("angle_of_repose"), "angle_of_repose",
-           "needs a floor: a box container and gravity straight down [0, -g]");
+  if (s.metrics.rolling && !(s.friction > 0))
+    r.fail(r.node("rolling"), "rolling", "needs friction above 0 (a frictionless ball never rolls)");
 }
 
 // Without allow_overlap no two balls may start overlapping. Only the first `unchecked` balls (the

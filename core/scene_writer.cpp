@@ -64,8 +64,10 @@ SceneSnapshot scene_at_state(const Scene& scene, const State& state, const std::
     balls.push_back(std::move(b));
   }
   doc.insert("ball", std::move(balls));
-  if (scene.metrics.rolling || scene.metrics.angle_of_repose)
-    doc.insert("metrics", toml::table{{"rolling", scene.metrics.rolling}, {"angle_of_repose", scene.metrics.angle_of_repose}});
+  toml::table metrics;
+  for (const RequestedMetricKey& m : kRequestedMetricKeys)
+    if (scene.metrics.*m.flag) metrics.insert(m.key, true);
+  if (!metrics.empty()) doc.insert("metrics", std::move(metrics));
   toml::table accuracy;
   const AccuracySpec spec = scene_spec(scene);
   for (const SpecTermDef& d : spec_terms()) {

@@ -43,6 +43,9 @@ class TableReader {
 
   // Every key must be one of `allowed`.
   void check_keys(std::initializer_list<const char*> allowed) const {
+    check_keys(std::vector<const char*>(allowed));
+  }
+  void check_keys(const std::vector<const char*>& allowed) const {
     for (const auto& [k, v] : t_) {
       const std::string key(k.str());
       if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return key == a; })) {

@@ -1,5 +1,5 @@
-// The metrics a scene asks for in its [metrics] table: the rolling closed forms and the angle of
-// repose, on hand-made scenes and heaps with known answers, and the table's bad-input lines.
+// The metrics a scene asks for in its [metrics] table: the rolling closed forms, the angle of
+// repose and the runout, on hand-made scenes and heaps with known answers, and the table's bad-input lines.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +9,7 @@
 #include "metrics/angle_of_repose.h"
 #include "metrics/meter_set.h"
 #include "metrics/rolling.h"
+#include "metrics/runout.h"
 #include "registry.h"
 #include "runner.h"
 #include "scene_loader.h"
@@ -112,6 +113,32 @@ TEST(AngleOfRepose, OfAStaircaseHeapIsNearItsSlope) {
 
 // Slide to roll (scenarios/slide-to-roll.toml, v0 3 m/s, mu 0.5, a disk, k = 1/2): v0 / (1 + k)
 // = 2 m/s from t = v0 k / ((1 + k) mu g) = 0.2039 s, the README's numbers.
+// Balls at (x, y) of radius r.
+State balls_at(std::initializer_list<Eigen::Vector2d> at) {
+  State s;
+  s.resize(static_cast<int>(at.size()));
+  int i = 0;
+  for (const Eigen::Vector2d& p : at) s.pos.row(i) = p.transpose(), s.vel.row(i++).setZero();
+  return s;
+}
+
+// The deposit is the run of balls, each within a mean diameter of the ones before, that holds the
+// highest ball: a ball that rolled away is not in it, one a diameter's gap away is, and a lower
+// heap elsewhere is not the heap.
+TEST(Runout, IsTheLengthOfTheDepositThatHoldsTheHighestBall) {
+  const double r = 0.1;
+  const State heap = balls_at({{0.1, 0.1}, {0.3, 0.1}, {0.5, 0.1}, {0.2, 0.27}, {0.4, 0.27}, {0.3, 0.44}, {0.7, 0.1},
+                               {3.0, 0.1}});  // the last rolled away
+  EXPECT_NEAR(*runout(heap, Eigen::VectorXd::Constant(heap.n(), r)), 0.8, 1e-12);
+  // A ball whose left edge lies within a diameter of the deposit's right edge joins it; one farther does not.
+  EXPECT_NEAR(*runout(balls_at({{0.1, 0.3}, {0.49, 0.1}}), Eigen::VectorXd::Constant(2, r)), 0.59, 1e-12);
+  EXPECT_NEAR(*runout(balls_at({{0.1, 0.3}, {0.51, 0.1}}), Eigen::VectorXd::Constant(2, r)), 0.2, 1e-12);
+  // The highest ball's run, wherever it is: here the right one.
+  const State two = balls_at({{0.1, 0.1}, {0.3, 0.1}, {0.5, 0.1}, {2.0, 0.1}, {2.2, 0.1}, {2.1, 0.27}});
+  EXPECT_NEAR(*runout(two, Eigen::VectorXd::Constant(two.n(), r)), 0.4, 1e-12);
+  EXPECT_FALSE(runout(State{}, Eigen::VectorXd()));
+}
+
 TEST(RollingClosedForm, SlideToRoll) {
   const RollingClosedForm c = rolling_closed_form(load_scene("slide-to-roll"), 0);
   EXPECT_DOUBLE_EQ(c.speed, 2.0);
@@ -290,6 +317,9 @@ TEST(RequestedMetrics, AreReadAndCheckedAgainstWhatTheyNeed) {
   sideways.replace(sideways.find("[0.0, -9.81]"), 12, "[9.81, 0.0]");
   EXPECT_EQ(error_of(sideways),
             "s.toml:12: metrics.angle_of_repose: needs a floor: a box container and gravity straight down [0, -g]");
+  EXPECT_TRUE(parse_scene(base + "[metrics]\nrunout = true\n", "s.toml").metrics.runout);
+  sideways.replace(sideways.find("angle_of_repose"), 15, "runout");
+  EXPECT_EQ(error_of(sideways), "s.toml:12: metrics.runout: needs a floor: a box container and gravity straight down [0, -g]");
 }
 
 // The runner computes them only where the scene asks, from the states: Box2D's ball sliding to

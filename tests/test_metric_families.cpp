@@ -41,7 +41,7 @@ TEST(MetricFamilies, AreTheMetricFilesAndEachKeyIsOnesAlone) {
 TEST(MetricFamilies, EachMeterWritesItsOwnRows) {
   const Scene gas = load_scene("gas");               // 100+ equal elastic balls: the speed distribution
   const Scene roll = load_scene("slide-to-roll");    // slip and rolling
-  const Scene heap = load_scene("rough-pile");       // angle of repose
+  const Scene heap = load_scene("column-collapse");  // angle of repose and runout
   std::set<std::string> written;
   for (const Scene* s : {&gas, &roll, &heap}) {
     MeterSet meters(*s, {});
