@@ -43,6 +43,9 @@ columns = {3}
 vel_min = [-2.5, -2.5]
 vel_max = [2.5, 2.5]
 seed = 2017
+[accuracy]
+overlap = 0.02
+rest_speed = false
 )", n, 0.25 * scale, 0.6 * scale, columns),
                      fmt::format("fluid-{}", n));
 }

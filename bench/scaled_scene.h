@@ -19,7 +19,7 @@ const char* scene_kind_name(SceneKind k);
 // Fluid: seed-bowl (10 x 10 box, g = 100, restitution 0.99, velocities uniform in [-2.5, 2.5]^2)
 // with n balls at its packing fraction: radius 0.25 sqrt(72 / n), on its lattice scaled (spacing
 // 0.6 sqrt(72 / n), sqrt(8 n / 9) columns from its first ball at (-4.6, -4.6)); the built-in scene
-// fluid-10k is n = 10^4.
+// fluid-10k is n = 10^4, with its spec (overlap <= 2%; not at rest).
 Scene scaled_scene(SceneKind kind, int n);
 
 // The same scene, built once per (kind, n) and kept for the process: benchmarks of one run share

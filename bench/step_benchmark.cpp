@@ -22,6 +22,12 @@
 // the settle: 300 steps from the start, no warm-up; a ball that leaves the box (checked every 10
 // steps, outside the timing) ends the benchmark as diverged.
 //
+// The settled piles and the fluid are judged against their scene's spec (spec_check.h) on states
+// read outside the timing: the label says "spec met: overlap 0.0041 (<= 0.01), ..." or "spec not
+// met: ...", and the counters spec_met (1 or 0) and overlap (the deepest after the timing's start,
+// over the radius). A pile's spec: overlap <= 1%, at rest (RMS speed <= 0.01 sqrt(g r)); the fluid's
+// overlap <= 2%, no ball out of the box.
+//
 // A benchmark whose steps (warm-up included) pass --budget_s (default 30 s) stops with an error
 // that says how far it got and what a step cost: a slow engine is reported, not waited for.
 //
@@ -38,6 +44,7 @@
 #include <chrono>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <optional>
 
 #include <fmt/format.h>
@@ -46,6 +53,7 @@
 #include "registry.h"
 #include "scaled_scene.h"
 #include "settled_pile.h"
+#include "spec_check.h"
 
 namespace ballbench::bench {
 namespace {
@@ -78,18 +86,6 @@ const Scene& gas_scene(int n) { return shared_scaled_scene(SceneKind::Gas, n); }
 const Scene& bowl_scene(int n) { return shared_scaled_scene(SceneKind::Bowl, n); }
 const Scene& fluid_scene(int n) { return shared_scaled_scene(SceneKind::Fluid, n); }
 
-// A centre beyond a wall by more than the largest diameter: the runner's divergence rule
-// (the tunnelling meter's stop, core/metrics/tunnelling_metric.cpp), which `ballbench run` reports as diverged.
-bool left_the_box(const Scene& scene, const State& s) {
-  if (scene.container.kind != ContainerKind::Box) return false;
-  const double d = 2 * scene.radius.maxCoeff();
-  for (int i = 0; i < s.n(); ++i) {
-    for (int c = 0; c < 2; ++c)
-      if (!(s.pos(i, c) > scene.container.min(c) - d && s.pos(i, c) < scene.container.max(c) + d)) return true;
-  }
-  return false;
-}
-
 struct StepOptions {
   int warm_up = 5;
   bool check_divergence = false;  // read the state every kDivergenceCheckSteps steps, untimed
@@ -99,6 +95,9 @@ struct StepOptions {
   // pile first sags and rebounds (measured for home at 10^4 balls: balls up to 0.65 m/s 1 s after
   // the start, at rest again after 6 s).
   bool settle = false;
+  // Judge the run against the scene's spec (spec_check.h) on the states read untimed: where the
+  // timing starts, every kDivergenceCheckSteps steps when those are read, and at the end.
+  bool judge = false;
 };
 
 constexpr int kSettleCheckSteps = 50;
@@ -115,6 +114,7 @@ struct Prepared {
   double resident_before = 0;
   int settle_steps = 0;
   double start_rms = -1;
+  std::unique_ptr<SpecCheck> check;
 };
 Prepared& prepared() {
   static Prepared p;
@@ -171,6 +171,7 @@ void step_benchmark(benchmark::State& state, const std::string& name, const Engi
       if (over_budget(fmt::format("in warm-up step {} of {}", k + 1, warm_up))) return;
     }
     if (options.settle) engine->read(read), start_rms = rms_speed(read), kept.name = name;
+    if (options.judge) engine->read(read), kept.check = std::make_unique<SpecCheck>(scene), kept.check->sample(read);
   } catch (const std::exception& e) {
     engine.reset();
     state.SkipWithError(e.what());
@@ -182,6 +183,7 @@ void step_benchmark(benchmark::State& state, const std::string& name, const Engi
   long steps = 0;
   const auto ball_left_the_box = [&] {
     engine->read(read);
+    if (kept.check) kept.check->sample(read);
     return left_the_box(scene, read);
   };
   const auto report_diverged = [&] {
@@ -230,6 +232,13 @@ void step_benchmark(benchmark::State& state, const std::string& name, const Engi
     state.counters["engine_process_ns_per_ball_step"] = (*own_after - *own_before) * 1e9 / (static_cast<double>(steps) * n);
   state.counters["peak_rss_bytes_per_ball"] = peak_resident_bytes() / n;
   state.counters["engine_bytes_per_ball"] = (resident_bytes() - kept.resident_before) / n;
+  if (kept.check) {
+    engine->read(read);
+    kept.check->sample(read);
+    state.SetLabel("spec " + kept.check->verdict(read));
+    state.counters["spec_met"] = kept.check->met() ? 1 : 0;
+    state.counters["overlap"] = kept.check->overlap();  // deepest after the timing's start, over the radius
+  }
   if (options.settle) {
     state.counters["settle_steps"] = settle_steps;  // warm-up included
     state.counters["start_rms_speed"] = start_rms;  // m/s, when the first run's timed steps began
@@ -266,10 +275,10 @@ void register_benchmarks() {
       const BenchSizes& sizes = e.info.bench.for_profile(profile);
       for (int n = 100; n <= sizes.settled_balls; n *= 10)
         add(fmt::format("step/{}/{}/settled/{}", e.info.name, profile, n), &e, profile, shared_settled_pile, n,
-            {.settle = true}, nlohmann::json::object());
+            {.settle = true, .judge = true}, nlohmann::json::object());
       for (int n = 1000; n <= sizes.fluid_balls; n *= 10)
         add(fmt::format("step/{}/{}/fluid/{}", e.info.name, profile, n), &e, profile, fluid_scene, n,
-            {.warm_up = 0, .check_divergence = true},
+            {.warm_up = 0, .check_divergence = true, .judge = true},
             nlohmann::json::object())
             ->Iterations(kFluidSteps);
     }
@@ -289,7 +298,7 @@ void register_benchmarks() {
   for (const Variant& v : variants)
     for (int n = 100; n <= v.max_n; n *= 10)
       add(fmt::format("step/{}/{}/settled/{}", v.engine, v.label, n), &find_engine(v.engine), v.profile,
-          shared_settled_pile, n, {.warm_up = v.warm_up, .settle = true}, v.settings)
+          shared_settled_pile, n, {.warm_up = v.warm_up, .settle = true, .judge = true}, v.settings)
           ;
   // The engine process protocol's own cost: a Node process engine that moves nothing
   // (adapters/node/noop.js), so its time per step is the request, the reply and the state block

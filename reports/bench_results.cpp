@@ -96,6 +96,11 @@ BenchResults bench_from_json(const nlohmann::json& j) {
       optional("settle_steps", row.settle_steps);
       optional("start_rms_speed", row.start_rms_speed);
       optional("engine_process_ns_per_ball_step", row.pipe_ns_per_ball_step);
+      if (std::optional<double> met; optional("spec_met", met), met) {
+        row.spec_met = *met != 0;
+        row.spec = b.value("label", "");
+        if (row.spec.starts_with("spec ")) row.spec.erase(0, 5);
+      }
       // An engine in another process: its own step is the headline, the harness's time with the
       // pipe stands beside it.
       if (row.pipe_ns_per_ball_step) std::swap(row.ns_per_ball_step, *row.pipe_ns_per_ball_step);
@@ -121,7 +126,9 @@ BenchResults read_bench_file(const std::string& path) {
                                                       {"engine_bytes_per_ball", 0},
                                                       {"settle_steps", 0},
                                                       {"start_rms_speed", 0},
-                                                      {"engine_process_ns_per_ball_step", 0}};
+                                                      {"engine_process_ns_per_ball_step", 0},
+                                                      {"spec_met", 0},
+                                                      {"label", ""}};
                           return JsonShape{{{"context", nlohmann::json::object()}, {"benchmarks", {row}}}, ""};
                         });
 }

@@ -24,6 +24,10 @@ struct BenchRow {
   std::optional<double> settle_steps;             // settled pile: steps before the timed ones
   std::optional<double> start_rms_speed;          // settled pile: RMS speed when the timed steps began (m/s)
   std::optional<double> pipe_ns_per_ball_step;  // an engine in another process: the harness's time, pipe included
+  // The settled piles and the fluid: whether the run met its scene's spec on the states the
+  // benchmark read outside its timing (bench/spec_check.h), and its verdict ("met: overlap ...").
+  std::optional<bool> spec_met;
+  std::string spec;
   std::string error;                   // the benchmark skipped with this message ("" = ran)
 };
 

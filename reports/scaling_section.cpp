@@ -96,7 +96,8 @@ void put_scaling_table(MarkdownBuffer& put, const BenchResults& bench, const std
         if (r.scene == scene && r.n == n && run_label(r.engine, r.profile) == e)
           cell = !r.error.empty()            ? "failed"
                  : r.ns_per_ball_step >= 10 ? fmt::format("{:.0f}", r.ns_per_ball_step)
-                                             : fmt::format("{:.2g}", r.ns_per_ball_step);
+                                             : fmt::format("{:.2g}", r.ns_per_ball_step),
+          cell += r.spec_met == false ? " (spec not met)" : "";
       put(" {} |", cell);
     }
     put("\n");
@@ -155,6 +156,16 @@ void put_scaling_notes(MarkdownBuffer& put, const ReportInputs& in, const BenchR
     if (r.scene == scene && !r.error.empty())
       failures.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, markdown_cell(r.error)));
   if (!failures.empty()) put("\nFailed: {}.\n", fmt::join(failures, "; "));
+  std::vector<std::string> judged, not_met;
+  for (const BenchRow& r : bench.rows)
+    if (r.scene == scene && r.spec_met) {
+      add_once(judged, run_label(r.engine, r.profile));
+      if (!*r.spec_met) not_met.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, markdown_cell(r.spec)));
+    }
+  if (!judged.empty())
+    put("\nEach run judged against the scene's spec on the states read outside its timing (bench/spec_check.h: "
+        "the overlap after the timing's start, a pile's rest speed, no ball out of the box): {}.\n",
+        not_met.empty() ? std::string("every run met it") : fmt::format("not met by {}", fmt::join(not_met, "; ")));
   for (const BenchRow& r : bench.pour)
     if (r.scene == scene && role_of(in, r.engine) == EngineRole::ours && r.error.empty() && r.steps_per_s)
       put("\nOver the first second of the pour instead (100 steps from rest, no warm-up; `pour/{}/default/{}/{}`), "

@@ -150,6 +150,35 @@ TEST(BenchResults, TheReportShowsWhatIsTheEngineAndWhatIsThePipe) {
   EXPECT_EQ(md.find("| home | gas | 1000 |"), std::string::npos) << md;  // in this process: no pipe
 }
 
+// A settled pile or the fluid judged against its scene's spec (bench/spec_check.h): the verdict is
+// read with the row, a run that did not meet it is marked in its cell and named with why below.
+TEST(BenchResults, TheScalingPageSaysWhichRunsMetTheirSpec) {
+  const auto path = std::filesystem::temp_directory_path() / ("bb_spec." + std::to_string(::getpid()) + ".json");
+  std::ofstream(path) << R"json({
+  "context": {"num_cpus": 2},
+  "benchmarks": [
+    {"name": "step/home/default/settled/1000/real_time", "run_type": "iteration", "ns_per_ball_step": 984,
+     "spec_met": 1, "label": "spec met: overlap 0.000554 (<= 0.01), rest_speed 0.000619 (<= 0.0156605)"},
+    {"name": "step/box2d/stock/settled/1000/real_time", "run_type": "iteration", "ns_per_ball_step": 1036,
+     "spec_met": 0, "label": "spec not met: overlap 0.0213 > 0.01"},
+    {"name": "step/home/default/gas/1000/real_time", "run_type": "iteration", "ns_per_ball_step": 24}
+  ]})json";
+  const BenchResults b = read_bench_file(path.string());
+  std::filesystem::remove(path);
+  ASSERT_EQ(b.rows.size(), 3u);
+  EXPECT_EQ(b.rows[0].spec_met, true);
+  EXPECT_EQ(b.rows[1].spec_met, false);
+  EXPECT_EQ(b.rows[1].spec, "not met: overlap 0.0213 > 0.01");
+  EXPECT_FALSE(b.rows[2].spec_met);  // not judged
+  ReportInputs in;
+  in.run = nlohmann::json::object();
+  in.bench = b;
+  const std::string md = all_pages(render_report(in));
+  EXPECT_NE(md.find("| box2d/stock | 1036 (spec not met) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| home | 984 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("not met by box2d/stock at 1000: not met: overlap 0.0213 > 0.01"), std::string::npos) << md;
+}
+
 TEST(BenchResults, AHarnessRowWithoutItsCountersIsAnInputError) {
   const auto path = std::filesystem::temp_directory_path() / ("bb_harness_bad." + std::to_string(::getpid()) + ".json");
   for (const char* row : {R"({"name": "harness/home/gas/10/sample_every:1", "run_type": "iteration", "overhead": 1.0})",
