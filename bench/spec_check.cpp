@@ -42,7 +42,7 @@ std::string SpecCheck::verdict(const State& last) {
   meters_.final_state(last);
   Result r;
   r.status = RunStatus::ok;
-  r.steps_done = samples_ - 1;  // the states read after the first: none, and there is nothing to judge
+  r.steps_done = samples_ - 1;  // judge() reads the figures of a run that moved: the states read after the first
   r.metrics = meters_.values();
   const SpecVerdict v = judge(spec_, r);
   met_ = v.met && !left_box_;

@@ -93,11 +93,12 @@ void put_scaling_table(MarkdownBuffer& put, const BenchResults& bench, const std
     for (long n : counts) {
       std::string cell = "";
       for (const BenchRow& r : bench.rows)
-        if (r.scene == scene && r.n == n && run_label(r.engine, r.profile) == e)
+        if (r.scene == scene && r.n == n && run_label(r.engine, r.profile) == e) {
           cell = !r.error.empty()            ? "failed"
                  : r.ns_per_ball_step >= 10 ? fmt::format("{:.0f}", r.ns_per_ball_step)
-                                             : fmt::format("{:.2g}", r.ns_per_ball_step),
-          cell += r.spec_met == false ? " (spec not met)" : "";
+                                             : fmt::format("{:.2g}", r.ns_per_ball_step);
+          if (r.spec_met == false) cell += " (spec not met)";
+        }
       put(" {} |", cell);
     }
     put("\n");
