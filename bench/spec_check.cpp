@@ -36,8 +36,6 @@ void SpecCheck::sample(const State& s) {
   left_box_ = left_box_ || left_the_box(scene_, s);
 }
 
-double SpecCheck::overlap() const { return meters_.now("penetration.after_start").value_or(0); }
-
 std::string SpecCheck::verdict(const State& last) {
   meters_.final_state(last);
   Result r;
@@ -46,6 +44,7 @@ std::string SpecCheck::verdict(const State& last) {
   r.metrics = meters_.values();
   const SpecVerdict v = judge(spec_, r);
   met_ = v.met && !left_box_;
+  overlap_ = spec_figure(SpecTerm::overlap, r).value_or(0);
   std::string figures;
   for (const SpecTermDef& d : spec_terms())
     if (const auto& bound = spec_[d.term]; bound && v.figures.contains(d.key) && v.figures[d.key].is_number())

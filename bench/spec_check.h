@@ -23,7 +23,7 @@ class SpecCheck {
   // "not met: overlap 0.031 > 0.02".
   std::string verdict(const State& last);
   bool met() const { return met_; }
-  double overlap() const;
+  double overlap() const { return overlap_; }  // the spec's overlap figure, as of the last verdict
 
  private:
   const Scene& scene_;
@@ -31,6 +31,7 @@ class SpecCheck {
   MeterSet meters_;
   bool left_box_ = false, met_ = false;
   long samples_ = 0;
+  double overlap_ = 0;
 };
 
 // A centre beyond a wall by more than the largest diameter: the runner's divergence rule (the
