@@ -400,9 +400,13 @@ class Search {
     if (reusable) {
       t = match_try_from_json(kept->at("try"));
       t.stored = true;
-      // Measured under a higher limit or none: what this limit would have done to it.
+      // Measured under a higher limit or none: what this limit would have done to it. Under the same
+      // limit it stands as it ran (its last steps may pass the limit between two of the run's checks).
       const double run_s = t.cost_ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps()));
-      if (r.cost_limit && t.status == RunStatus::ok && run_s > r.cost_limit->seconds) {
+      const auto ran_under = kept->contains("cost_limit_s") ? std::optional(kept->at("cost_limit_s").get<double>())
+                                                            : std::nullopt;
+      if (r.cost_limit && t.status == RunStatus::ok && run_s > r.cost_limit->seconds &&
+          (!ran_under || r.cost_limit->seconds < *ran_under)) {
         t.status = RunStatus::over_cost, t.met = false, t.work = 0;
         t.why_not = t.error = fmt::format("over cost: its engine time of {:.3g} s passes {:.3g} s, {}", run_s,
                                           r.cost_limit->seconds, r.cost_limit->what);
@@ -458,7 +462,7 @@ class Search {
     } else {
       std::filesystem::remove(r.window.checkpoint, ec);
     }
-    if (res.status == RunStatus::over_cost) kept["cost_limit_s"] = r.cost_limit->seconds;
+    if (r.cost_limit) kept["cost_limit_s"] = r.cost_limit->seconds;
     // What the clock or the user ended is not kept: another search would not end it alike.
     const bool keep = decided_by_states || res.status == RunStatus::over_cost;
     if (o_.store && keep && !interrupt_signal()) o_.store->keep(store_key(c, k), kept);
