@@ -6,6 +6,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "input_error.h"
 #include "registry.h"
 #include "runner.h"
@@ -198,6 +200,38 @@ radius = 0.25
   // Measured 0.49990: the spring holds the upper ball's weight at 1e-4 m of overlap. Fallen
   // through, the difference would be negative.
   EXPECT_NEAR(s.pos(1, 1) - s.pos(0, 1), 0.5, 1e-3) << "the upper ball should rest on the lower one";
+}
+
+// A ball at rest on the floor is struck at 12 m/s by another and carries half that speed on,
+// across a gap of 0.14 radii to the wall (or to a third ball at rest) that its own speed would not
+// close within the step: it has a contact there, and stays out within 2% of its radius. Without
+// one it would sink about 0.05 radii in by the end of the step.
+TEST(HomeSoft, ABallStruckAcrossAGapMeetsWhatIsThere) {
+  const auto overlap = [](double wall, const std::string& beyond) {
+    const std::string text = fmt::format(R"(
+dt = 0.01
+duration = 0.05
+gravity = [0.0, -9.81]
+restitution = 0.5
+[container]
+min = [-2.0, 0.0]
+max = [{}, 2.0]
+[[ball]]
+pos = [1.19, 0.25]
+vel = [12.0, 0.0]
+radius = 0.25
+[[ball]]
+pos = [1.715, 0.25]
+radius = 0.25
+{})",
+                                         wall, beyond);
+    const Result r = run_soft(parse_scene(text, "struck"), {{"contact_hertz", 1000}, {"substeps", 40}});
+    EXPECT_EQ(r.status, RunStatus::ok) << r.error;
+    EXPECT_EQ(r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair"), 0);
+    return r.metrics.value("penetration.max");
+  };
+  EXPECT_LT(overlap(2.0, ""), 0.02);  // the wall 0.035 m beyond the struck ball
+  EXPECT_LT(overlap(3.0, "[[ball]]\npos = [2.25, 0.25]\nradius = 0.25"), 0.02);  // a ball there
 }
 
 // A ball passing another at 50 m/s (10 radii per step), 2 cm clear of it, never touches it. A

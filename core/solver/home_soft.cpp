@@ -26,23 +26,22 @@ StartScan scan(const HomeWorld& w) {
   return s;
 }
 
-// Which contacts can touch within a part of dt: a pair whose gap the sum of the two balls' speeds
-// (not their relative speed: two balls falling together close at once when the lower one lands),
-// with what gravity adds, can close within it, or a wall a ball can reach, plus `margin`.
+// Which contacts can touch within a part of dt: a pair whose gap the sum of the two balls' reach
+// speeds (not their relative speed: two balls falling together close at once when the lower one
+// lands), with what gravity adds, can close within it, or a wall a ball can reach, plus `margin`.
+// A ball's reach speed (reach_speeds) is its own or a faster neighbour's.
 struct ContactTest {
   const double* __restrict px;
   const double* __restrict py;
-  const double* __restrict vx;
-  const double* __restrict vy;
+  const double* __restrict speed;   // per ball: its reach speed (m/s)
   const double* __restrict radius;  // null: every ball has r0
   double r0, g, dt, margin;
   const HomeWorld& w;
 
-  ContactTest(const HomeWorld& w, double dt, double margin)
+  ContactTest(const HomeWorld& w, const std::vector<double>& speed, double dt, double margin)
       : px(w.p.col(0).data()),
         py(w.p.col(1).data()),
-        vx(w.v.col(0).data()),
-        vy(w.v.col(1).data()),
+        speed(speed.data()),
         radius(w.equal_radii ? nullptr : w.r.data()),
         r0(w.r0),
         g(w.g.norm()),
@@ -51,13 +50,11 @@ struct ContactTest {
         w(w) {}
 
   // Pair a < b: if it can touch, its contact to `add(a, b, nx, ny, gap)`; whether it did.
-  // (|va| + |vb| <= sqrt(2 (va^2 + vb^2)), one square root.)
   template <class Add>
   bool pair(int a, int b, Add&& add) const {
     const double dx = px[a] - px[b], dy = py[a] - py[b];
-    const double speed2 = vx[a] * vx[a] + vy[a] * vy[a] + vx[b] * vx[b] + vy[b] * vy[b];
     const double rs = radius ? radius[a] + radius[b] : r0 + r0;
-    const double lim = rs + (std::sqrt(2 * speed2) + 2 * g * dt) * dt * kSpeedMargin + margin;
+    const double lim = rs + (speed[a] + speed[b] + 2 * g * dt) * dt * kSpeedMargin + margin;
     const double d2 = dx * dx + dy * dy;
     if (d2 >= lim * lim || d2 == 0) return false;
     const double d = std::sqrt(d2);
@@ -68,9 +65,8 @@ struct ContactTest {
   // Wall `side` of `axis` for ball i, as pair().
   template <class Add>
   bool wall(int i, int axis, int side, Add&& add) const {
-    const double toward = std::abs(axis == 0 ? vx[i] : vy[i]) + g * dt;
     const double gap = w.wall_gap(i, axis, side);
-    if (gap >= toward * dt * kSpeedMargin + margin) return false;
+    if (gap >= (speed[i] + g * dt) * dt * kSpeedMargin + margin) return false;
     const double sign = side == 0 ? 1.0 : -1.0;  // the normal points into the box
     add(i, wall_partner(axis, side), axis == 0 ? sign : 0.0, axis == 1 ? sign : 0.0, gap);
     return true;
@@ -86,6 +82,19 @@ struct ContactTest {
 // in a settled hexagonal pile the next shell of neighbours is 1.46 radii beyond touching, so half a
 // radius adds no candidate there, and a pile at rest keeps its candidates for good.
 constexpr double kCandidateSkin = 0.5;
+
+// Each ball's reach speed within a part: the largest of its own speed and its candidate
+// neighbours' (pairs (i, j), j < 0 a wall). A ball struck within the part by a faster one carries
+// that speed on: beside a wall, or a hair's breadth from a ball it was not closing on, it crosses
+// a gap its own speed would not (a column landing on the balls at rest below it).
+template <class Pairs>
+void reach_speeds(const HomeWorld& w, const Pairs& pairs, std::vector<double>& own, std::vector<double>& reach) {
+  own.resize(w.n);
+  for (int i = 0; i < w.n; ++i) own[i] = std::sqrt(w.v(i, 0) * w.v(i, 0) + w.v(i, 1) * w.v(i, 1));
+  reach = own;
+  for (const auto& c : pairs)
+    if (c.j >= 0) reach[c.i] = std::max(reach[c.i], own[c.j]), reach[c.j] = std::max(reach[c.j], own[c.i]);
+}
 
 }  // namespace
 
@@ -164,7 +173,6 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
                                          HomeGrid& grid, ForkJoin& pool,
                                          const std::function<void()>& renumber_if_due) {
   const double reach = part_reach(w, start, dt);
-  const ContactTest test(w, dt, kSoftMargin * w.rmax);
   candidate_of_.clear();
   // The candidates hold while no pair can have come within reach of touching that was not within
   // reach of touching plus the skin at their build: each ball moved at most `moved` since.
@@ -177,7 +185,9 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
     }
     hold = 2 * std::sqrt(moved2) + 2 * reach <= 2 * built_reach_ + built_skin_;
   }
-  if (!hold) return build_candidates(w, dt, reach, no_pairs, start, grid, pool, renumber_if_due);
+  if (!hold) build_candidates(w, reach, no_pairs, start, grid, pool, renumber_if_due);
+  reach_speeds(w, candidates_, own_speed_, reach_speed_);
+  const ContactTest test(w, reach_speed_, dt, kSoftMargin * w.rmax);
   int k = 0;
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
     contacts_.push_back(warm_contact(i, j, nx, ny, gap, candidates_[k].impulse, candidates_[k].tangent));
@@ -192,12 +202,11 @@ void SoftResting::gather_from_candidates(const HomeWorld& w, double dt, bool no_
 
 // The candidates: every pair within 2 reach + margin + skin of touching (on a grid with cells that
 // wide), the lower number first, and every wall within reach + margin + skin of a ball; each with
-// the impulse its contact ended the last part with; and this part's contacts among them. The skin
-// is left out while a ball moves so fast that the candidates would not hold for a few parts (the
-// fluid's pour), where it would only add candidates.
-void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, bool no_pairs, const StartScan& start,
+// the impulse its contact ended the last part with. The skin is left out while a ball moves so
+// fast that the candidates would not hold for a few parts (the fluid's pour), where it would only
+// add candidates.
+void SoftResting::build_candidates(const HomeWorld& w, double reach, bool no_pairs, const StartScan& start,
                                    HomeGrid& grid, ForkJoin& pool, const std::function<void()>& renumber_if_due) {
-  const ContactTest test(w, dt, kSoftMargin * w.rmax);
   warm_entries_.clear();
   for (const Candidate& c : candidates_)
     if (c.impulse > 0) warm_entries_.push_back({c.i, c.j, c.impulse, c.tangent});
@@ -205,11 +214,6 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
   const double skin = reach <= 0.25 * kCandidateSkin * w.rmax ? kCandidateSkin * w.rmax : 0.0;
   const double extra = kSoftMargin * w.rmax + skin;
   candidates_.clear();
-  const auto add = [&](int i, int j, double nx, double ny, double gap) {
-    const int k = static_cast<int>(candidates_.size()) - 1;
-    contacts_.push_back(warm_contact(i, j, nx, ny, gap, candidates_[k].impulse, candidates_[k].tangent));
-    candidate_of_.push_back(k);
-  };
   const auto keep = [&](int i, int j) {
     const WarmStart::Entry* e = warm_.entry(i, j);
     candidates_.push_back(e ? Candidate{i, j, e->impulse, e->tangent} : Candidate{i, j, 0.0, 0.0});
@@ -225,19 +229,14 @@ void SoftResting::build_candidates(const HomeWorld& w, double dt, double reach, 
       if (a > b) std::swap(a, b);
       const double lim = w.radius(a) + w.radius(b) + 2.0 * reach + extra;
       const double dx = px[a] - px[b], dy = py[a] - py[b];
-      if (dx * dx + dy * dy >= lim * lim) return;
-      keep(a, b);
-      if (!test.pair(a, b, add)) candidates_.back().impulse = 0, candidates_.back().tangent = 0;
+      if (dx * dx + dy * dy < lim * lim) keep(a, b);
     });
   }
   if (w.walls)
     for (int i = 0; i < w.n; ++i)
       for (int axis = 0; axis < 2; ++axis)
         for (int side = 0; side < 2; ++side)
-          if (w.wall_gap(i, axis, side) < reach + extra) {
-            keep(i, wall_partner(axis, side));
-            if (!test.wall(i, axis, side, add)) candidates_.back().impulse = 0, candidates_.back().tangent = 0;
-          }
+          if (w.wall_gap(i, axis, side) < reach + extra) keep(i, wall_partner(axis, side));
   built_at_ = w.p;
   built_reach_ = reach;
   built_skin_ = skin;
@@ -248,16 +247,18 @@ void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const Sta
   const int n = w.n;
   const double reach = part_reach(w, start, dt);
   const double margin = kSoftMargin * w.rmax;
-  const ContactTest test(w, dt, margin);
   const auto add = [&](int i, int j, double nx, double ny, double gap) {
     const WarmStart::Entry* e = warm_.entry(i, j);
     contacts_.push_back(e ? warm_contact(i, j, nx, ny, gap, e->impulse, e->tangent) : warm_contact(i, j, nx, ny, gap, 0, 0));
   };
-  // A pair, the lower number first, so the warm start finds it whichever cell order the grid gave
-  // it this step.
+  // The pairs within reach of touching, the lower number first, so the warm start finds each
+  // whichever cell order the grid gave it this step; tested once every ball's reach speed is known.
+  near_.clear();
   const auto try_pair = [&](int a, int b) {
     if (a > b) std::swap(a, b);
-    test.pair(a, b, add);
+    const double lim = w.radius(a) + w.radius(b) + 2 * reach + margin;
+    const double dx = w.p(a, 0) - w.p(b, 0), dy = w.p(a, 1) - w.p(b, 1);
+    if (dx * dx + dy * dy < lim * lim) near_.push_back({a, b, 0.0, 0.0});
   };
   // Two sleeping balls have no contact: neither moves (unless one wakes, below).
   const int sleeping = sleep_.sleeping();
@@ -280,6 +281,9 @@ void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const Sta
       });
     }
   }
+  reach_speeds(w, near_, own_speed_, reach_speed_);
+  const ContactTest test(w, reach_speed_, dt, margin);
+  for (const Candidate& c : near_) test.pair(c.i, c.j, add);
   if (w.walls)
     for (int i = 0; i < n; ++i)
       if (sleeping == 0 || !asleep(i)) test.walls(i, add);
@@ -290,7 +294,8 @@ void SoftResting::gather_awake(HomeWorld& w, double dt, bool no_pairs, const Sta
       if (!no_pairs)
         grid.for_each_near(i, [&](int j) {
           const SleepIslands::State sj = sleep_.state(j);
-          if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i)) try_pair(i, j);
+          if (sj == SleepIslands::kAsleep || (sj == SleepIslands::kWoken && j > i))
+            test.pair(std::min(i, j), std::max(i, j), add);
         });
       if (w.walls) test.walls(i, add);
     }

@@ -45,8 +45,8 @@ class SoftResting {
   // beyond them (without sleeping).
   void gather_from_candidates(const HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid,
                               ForkJoin& pool, const std::function<void()>& renumber_if_due);
-  void build_candidates(const HomeWorld& w, double dt, double reach, bool no_pairs, const StartScan& start,
-                        HomeGrid& grid, ForkJoin& pool, const std::function<void()>& renumber_if_due);
+  void build_candidates(const HomeWorld& w, double reach, bool no_pairs, const StartScan& start, HomeGrid& grid,
+                        ForkJoin& pool, const std::function<void()>& renumber_if_due);
   // Every contact gathered afresh on the grid, around the balls awake (with sleeping).
   void gather_awake(HomeWorld& w, double dt, bool no_pairs, const StartScan& start, HomeGrid& grid, ForkJoin& pool,
                     const std::function<void()>& renumber_if_due);
@@ -72,6 +72,8 @@ class SoftResting {
   };
   std::vector<Candidate> candidates_;
   std::vector<int> candidate_of_;  // per contact of the part: its candidate
+  std::vector<Candidate> near_;    // with sleeping: this part's pairs within reach of touching
+  std::vector<double> own_speed_, reach_speed_;  // per ball (m/s): its speed; its reach speed
   Eigen::MatrixX2d built_at_;      // positions at the candidates' build
   double built_reach_ = -1;        // the reach they were built for (m); negative: none built
   double built_skin_ = 0;          // and the skin (m)
