@@ -166,7 +166,7 @@ TEST(MatchWork, ConfigurationsThatMetAreTimedInTurnAndTheFirstWithinTheNoiseIsFo
   o.isolation.enabled = false;
   o.profile = "soft";
   o.repeats = 3;
-  // Two substeps meet the small pile at about half the cost of four; whether that try runs within
+  // Two substeps meet the small pile for less than four cost; whether that try runs within
   // the cost of the first one is a timing, which a machine loaded enough (a sanitized build beside
   // other tests) can turn: what follows is what a search does with it, so it is searched again.
   MatchResult m;

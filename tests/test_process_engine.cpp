@@ -157,6 +157,24 @@ TEST(ProcessEngine, OneProcessServesSuccessiveScenes) {
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
 }
 
+// One process serves every scene a report gives it (a search's tries, the closed-form checks): an
+// engine in WebAssembly closes each world before the next, so its memory and Box2D v3's 128 worlds
+// at once are not used up (box2d3 failed its 129th scene with "memory access out of bounds").
+TEST(ProcessEngine, ANodeEngineServesMoreScenesThanBox2dHoldsWorlds) {
+  std::string unavailable;
+  for (const char* name : {"box2d3", "rapier"}) {
+    const EngineEntry& e = find_engine(name);
+    if (!e.info.unavailable.empty()) {
+      unavailable += fmt::format(" {}: {}", name, e.info.unavailable);
+      continue;
+    }
+    Result r;
+    for (int k = 0; k < 140 && (k == 0 || r.status == RunStatus::ok); ++k) r = run_engine(box(), e, steps(1));
+    EXPECT_EQ(r.status, RunStatus::ok) << name << ": " << r.error;
+  }
+  if (!unavailable.empty()) GTEST_SKIP() << "unavailable here:" << unavailable;
+}
+
 // box2d3 reads its states from Box2D's arrays in place once it has found them (box2d3_state.js:
 // on `pile`'s 500 balls from about step 130, its getters' calls then having cost a search of the
 // heap), checking every 64th read against Box2D's getters: the same trajectory, bit for bit, as
@@ -659,6 +677,13 @@ TEST(Conform, ChecksAnyEngineAndNamesARefutedClaim) {
   const std::string slide = row(liar.out, "misbehaving        slide-to-roll-disk");
   EXPECT_TRUE(has(slide, "FAIL (refutes its claim of friction: 0.1 or more)")) << liar.out;
   EXPECT_TRUE(has(liar.out, "refute a capability the engine claims")) << liar.out;
+  // An engine that fails a case (an error for its scene) fails that check, with its error, and the
+  // others are still checked.
+  const auto failing = testing::run_cli("conform --engine 'process:python3 " + kMisbehaving + " error-at-scene'");
+  EXPECT_EQ(failing.status, 1) << failing.err;
+  EXPECT_TRUE(has(row(failing.out, "misbehaving        drop"), "FAIL: the engine failed: ")) << failing.out;
+  EXPECT_TRUE(has(failing.out, "memory access out of bounds")) << failing.out;
+  EXPECT_TRUE(has(failing.out, "12 checks: 0 passed, 12 failed")) << failing.out;
   const auto unknown = testing::run_cli("conform --engine nosuch");
   EXPECT_EQ(unknown.status, 2);
   EXPECT_TRUE(has(unknown.err, "unknown engine 'nosuch'")) << unknown.err;

@@ -145,6 +145,9 @@ async function load(scene, profileName, overrides) {
       B.b2World_Step(world, dt, s.substeps);
       state.stepped();
     },
+    close() {
+      B.b2DestroyWorld(world);
+    },
     read(x, y, vx, vy, w, angle) {
       state.read();
       const { position: p, velocity: v } = state.values;

@@ -104,7 +104,9 @@ function inertiaLabel(scene) {
 }
 
 // driver: { hello(): handshake fields, or throws (unavailable); async load(scene, profile,
-// settings): a world { n, t, rotation, step(dt), read(x, y, vx, vy[, w, angle]), settings } }.
+// settings): a world { n, t, rotation, step(dt), read(x, y, vx, vy[, w, angle]), settings,
+// close() (optional) } }. A world is closed before the next scene replaces it: an engine in
+// WebAssembly frees its memory only when asked (Box2D v3 holds at most 128 worlds at once).
 // `rotation` is the scene's (friction or spin): read then fills the angular velocities and angles.
 function serve(driver) {
   let world = null;
@@ -123,6 +125,7 @@ function serve(driver) {
         return send(Object.assign({ ok: true, protocol: PROTOCOL, state_fields: fields }, info));
       }
       case 'scene':
+        if (world && world.close) world.close();
         world = null;
         world = await driver.load(msg.scene, msg.profile, msg.settings || {});
         world.rotation = !!msg.scene.rotation;

@@ -97,6 +97,7 @@ async function load(scene, profileName, overrides) {
     n: b.n,
     t: 0,
     step() { world.step(); },
+    close() { world.free(); },
     read(x, y, vx, vy, w, angle) {
       for (let i = 0; i < bodies.length; ++i) {
         const pos = bodies[i].translation(), v = bodies[i].linvel();

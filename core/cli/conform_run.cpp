@@ -7,6 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "conformance.h"
+#include "input_error.h"
 #include "interrupt.h"
 #include "machine_info.h"
 #include "registry.h"
@@ -27,6 +28,10 @@ ConformRow check(const EngineEntry& e, const std::string& profile, const Conform
     if (*d.capability && claims(e.info.caps, d.capability) && !(figure < d.refutes)) row.refuted = d.capability;
   } catch (const SceneUnsupported& refused) {  // a case it says it cannot run: neither a pass nor a refuted claim
     row.verdict = ConformVerdict::refused, row.why = refused.what();
+  } catch (const InputError&) {
+    throw;  // the user's settings: one line for the whole command
+  } catch (const std::exception& failed) {  // the engine failed the case: a failure with its error, the others run
+    row.verdict = ConformVerdict::fail, row.why = fmt::format("the engine failed: {}", failed.what());
   }
   return row;
 }

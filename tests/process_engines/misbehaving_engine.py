@@ -8,6 +8,7 @@ stdout, its pid written to argv[2]), "helper-hang" (the same, and hangs at step 
 own, out of the engine's process group), "helper-exit" (the engine exits at step 3 while its
 helper holds its stdout), "spin-step" (its step 3 computes for ever), "float-t" and "float-t-undeclared" (the time summed in
 float32, the precision declared or not), "settings-at-scene" (a settings error for every scene),
+"error-at-scene" (an engine error for every scene, as a WebAssembly engine out of memory sends),
 "unsupported" (refuses every scene as unsupported), "speed-cap-bad" (a speed cap below zero), "minimal" and "minimal-1" (a handshake of the
 required fields only, in protocol version 2 or 1). And two that behave but take time: "busy-step"
 (every step spends 20 ms of CPU) and "sleep-step" (every step sleeps 20 ms), each reporting its
@@ -73,6 +74,9 @@ for line in sys.stdin.buffer:
             continue
         if mode == "unsupported":
             send({"ok": False, "kind": "unsupported", "error": "misbehaving cannot run walls today"})
+            continue
+        if mode == "error-at-scene":
+            send({"ok": False, "kind": "engine", "error": "memory access out of bounds"})
             continue
         balls = msg["scene"]["balls"]
         n, t, dt = balls["n"], 0.0, msg["scene"]["dt"]
