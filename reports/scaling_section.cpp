@@ -8,6 +8,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -162,7 +163,8 @@ void put_scaling_notes(MarkdownBuffer& put, const ReportInputs& in, const BenchR
     if (r.scene == scene && r.spec_met) {
       add_once(judged, run_label(r.engine, r.profile));
       // The verdict without its first words: "not met: overlap 0.031 > 0.02" reads "overlap 0.031 > 0.02".
-      const std::string why = r.spec.starts_with("not met: ") ? r.spec.substr(9) : r.spec;
+      constexpr std::string_view kNotMet = "not met: ";  // bench/spec_check.cpp's verdict
+      const std::string why = r.spec.starts_with(kNotMet) ? r.spec.substr(kNotMet.size()) : r.spec;
       if (!*r.spec_met) not_met.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, markdown_cell(why)));
     }
   if (!judged.empty())
