@@ -43,9 +43,13 @@ vel_max = [0.5, 0.5]
 seed = 1
 )", n, width, height, kRadius, kSpacing, columns, 0.5 * kSpacing),
                             fmt::format("settled-{}", n));
-  HomeSettings settings;
-  settings.resting = RestingMethod::soft;  // no sleeping: the state is each ball's own, not one frozen by a rule
-  const auto engine = make_home(scene, settings);
+  // Settled by `home` without sleeping (each ball's own state, none frozen by a rule), as built for
+  // the spec the benchmark judges it at (its default profile: overlap <= 1%, spec_check.h) up to
+  // kSettledAtSpecBalls; a pile settled looser springs apart under an engine stiffer than the one
+  // that settled it (home's default from the soft profile's 5% at 10^4 balls: RMS 3.6 m/s after
+  // 1.6 s). Larger piles, whose settling at the spec would take hours, by the soft profile.
+  const auto engine = home_engine().create(scene, n <= kSettledAtSpecBalls ? "default" : "soft",
+                                           nlohmann::json::object());
   State state;
   int steps = 0;
   for (; steps < kSettleSteps; ++steps) {
