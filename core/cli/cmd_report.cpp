@@ -240,7 +240,7 @@ void add_report(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "report", "run the standard comparison (tables, sweeps, stability frontiers, scaling) and write REPORT.md");
   cmd->add_option("--out", a->out, "folder for REPORT.md, figures/ and results/ (default: reports)");
-  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite (the default): about 20 minutes on 2 cores, 17 with --no-bench");
+  auto* quick = cmd->add_flag("--quick", a->quick, "the quick suite (the default): about 15 minutes on 2 cores, 12 with --no-bench");
   cmd->add_flag("--full", a->full, "the complete evidence: more scenes, equal-accuracy searches, sweeps and "
                                    "frontiers, every benchmark (hours)")
       ->excludes(quick);
