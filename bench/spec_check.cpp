@@ -50,8 +50,8 @@ std::string SpecCheck::verdict(const State& last) {
     if (const auto& bound = spec_[d.term]; bound && v.figures.contains(d.key) && v.figures[d.key].is_number())
       figures += fmt::format("{}{} {:.3g} (<= {:g})", figures.empty() ? "" : ", ", d.key, v.figures[d.key].get<double>(),
                              *bound);
-  if (left_box_) return "not met: a ball left the box";
-  return fmt::format("{}: {}", met_ ? "met" : "not met", v.met ? figures : v.why_not);
+  if (left_box_) return verdict_line(false, "a ball left the box");
+  return verdict_line(met_, v.met ? figures : v.why_not);
 }
 
 }  // namespace ballbench::bench

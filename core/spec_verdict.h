@@ -34,4 +34,16 @@ struct SpecVerdict {
 // Whether `r` meets `spec`: a run that did not end ok never does; an unmeasured term fails.
 SpecVerdict judge(const AccuracySpec& spec, const Result& r);
 
+// A verdict in one line, as the step benchmark labels its runs: "met: overlap 0.004 (<= 0.01)" or
+// "not met: overlap 0.031 > 0.01"; verdict_detail reads back what follows the verdict.
+inline constexpr std::string_view kVerdictMet = "met: ", kVerdictNotMet = "not met: ";
+inline std::string verdict_line(bool met, std::string_view detail) {
+  return std::string(met ? kVerdictMet : kVerdictNotMet) + std::string(detail);
+}
+inline std::string_view verdict_detail(std::string_view line) {
+  for (const std::string_view prefix : {kVerdictNotMet, kVerdictMet})
+    if (line.starts_with(prefix)) return line.substr(prefix.size());
+  return line;
+}
+
 }  // namespace ballbench

@@ -8,7 +8,6 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
@@ -22,6 +21,7 @@
 #include "markdown_cell.h"
 #include "no_data.h"
 #include "ordered_set.h"
+#include "spec_verdict.h"
 
 namespace ballbench {
 namespace {
@@ -162,10 +162,10 @@ void put_scaling_notes(MarkdownBuffer& put, const ReportInputs& in, const BenchR
   for (const BenchRow& r : bench.rows)
     if (r.scene == scene && r.spec_met) {
       add_once(judged, run_label(r.engine, r.profile));
-      // The verdict without its first words: "not met: overlap 0.031 > 0.02" reads "overlap 0.031 > 0.02".
-      constexpr std::string_view kNotMet = "not met: ";  // bench/spec_check.cpp's verdict
-      const std::string why = r.spec.starts_with(kNotMet) ? r.spec.substr(kNotMet.size()) : r.spec;
-      if (!*r.spec_met) not_met.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n, markdown_cell(why)));
+      // The verdict without its first words: "overlap 0.031 > 0.02".
+      if (!*r.spec_met)
+        not_met.push_back(fmt::format("{} at {}: {}", run_label(r.engine, r.profile), r.n,
+                                      markdown_cell(std::string(verdict_detail(r.spec)))));
     }
   if (!judged.empty())
     put("\nEach run judged against the scene's spec on the states read outside its timing (bench/spec_check.h: "

@@ -509,3 +509,13 @@ TEST(MatchCli, ASpecTheSceneCannotMeasureIsRefusedWithItsFix) {
 
 }  // namespace
 }  // namespace ballbench
+
+namespace ballbench {
+// The step benchmark's label and the scaling page that reads it back share the verdict's words.
+TEST(SpecVerdict, AVerdictLineReadsBackItsDetail) {
+  EXPECT_EQ(verdict_line(false, "overlap 0.031 > 0.02"), "not met: overlap 0.031 > 0.02");
+  EXPECT_EQ(verdict_detail(verdict_line(false, "overlap 0.031 > 0.02")), "overlap 0.031 > 0.02");
+  EXPECT_EQ(verdict_detail(verdict_line(true, "overlap 0.004 (<= 0.01)")), "overlap 0.004 (<= 0.01)");
+  EXPECT_EQ(verdict_detail("diverged"), "diverged");
+}
+}  // namespace ballbench
