@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <random>
 #include <string_view>
 
@@ -294,6 +295,11 @@ void check_writable(const std::string& path, const std::string& what, bool creat
     throw InputError(fmt::format("{}: cannot write {} there", path, what));
   }
   std::filesystem::remove(probe, ec);
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 nlohmann::json parse_json_file(const std::string& path, const std::string& what) {

@@ -89,6 +89,9 @@ void move_file_into_place(const std::string& from, const std::string& to, const 
 // the parent folders (write_file_atomically does), so they are created here.
 void check_writable(const std::string& path, const std::string& what, bool create_parents);
 
+// The whole of a file, byte for byte ("" for a file that cannot be opened).
+std::string read_text_file(const std::string& path);
+
 // Throws InputError naming the file and `what` if it cannot be opened, is not a regular file,
 // holds more than kMaxResultsFileBytes, nests deeper than kMaxJsonDepth or is not JSON.
 nlohmann::json parse_json_file(const std::string& path, const std::string& what);

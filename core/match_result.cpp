@@ -321,7 +321,8 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
 std::string timing_method_text() {
   return fmt::format(
       "the found configuration timed alone after the searches over a tenth of its run (or the first part of it "
-      "that held {:g} s of the engine's time) from the state it saved there, run again in one process until a "
+      "that held {:g} s of the engine's time) from the state it saved there, or over its whole run where that held "
+      "at most as much, run again in one process until a "
       "pass is under {:g}% faster than the one before and the passes hold {:g} s of the engine's time (the engine "
       "warm: a JIT's compiled code, caches), the mean of the warm passes scaled to the whole run; the fastest of "
       "the repeats, each round on the next core",

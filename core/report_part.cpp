@@ -12,6 +12,7 @@ struct PartKindDef {
 
 constexpr PartKindDef kKinds[] = {
     {PartKind::table, "table", "", true},           {PartKind::match, "match", "match-", true},
+    {PartKind::measured, "measured", "measured-", true},
     {PartKind::sweep, "sweep", "sweep-", true},     {PartKind::stress, "stress", "stress-", true},
     {PartKind::conform, "conform", "", false},         {PartKind::calibration, "calibration", "", false},
     {PartKind::bench, "bench", "", false},
@@ -52,6 +53,7 @@ std::vector<ReportPart> report_parts(const ReportSuite& suite, bool bench) {
   };
   each(PartKind::table, suite.scenes);
   each(PartKind::match, suite.match_scenes);
+  for (const MeasuredMatch& m : suite.measured_matches) parts.push_back({PartKind::measured, m.scene});
   each(PartKind::sweep, suite.sweep_scenes);
   each(PartKind::stress, suite.stress_scenes);
   parts.push_back({PartKind::conform, ""});

@@ -1,7 +1,8 @@
 #pragma once
 // The parts of a report (`ballbench report`), each run once and kept as its results file(s): a
 // scene's comparison table, an equal-accuracy search, a sweep, a stability frontier, the
-// closed-form checks of every engine, the restitution calibration, the benchmarks. A shard runs every N-th part; a report that stopped
+// closed-form checks of every engine, the restitution calibration, the benchmarks, and a search
+// measured before (ReportSuite::measured_matches), carried in. A shard runs every N-th part; a report that stopped
 // resumes from the parts it finished.
 #include <optional>
 #include <string>
@@ -12,7 +13,7 @@
 
 namespace ballbench {
 
-enum class PartKind { table, match, sweep, stress, conform, calibration, bench };
+enum class PartKind { table, match, measured, sweep, stress, conform, calibration, bench };
 
 struct ReportPart {
   PartKind kind = PartKind::table;
@@ -25,7 +26,7 @@ std::string part_word(const ReportPart& p);
 // The word read back; none for a word of no part.
 std::optional<ReportPart> part_from_word(std::string_view word);
 
-// Its results file in the results folder: "pile.json", "match-pile.json", "calibration.json",
+// Its results file in the results folder: "pile.json", "match-pile.json", "measured-pile-10k-settled.json", "calibration.json",
 // "bench.json" (the benchmarks also write "harness.json").
 std::string part_file(const ReportPart& p);
 

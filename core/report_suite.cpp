@@ -7,12 +7,53 @@
 #include <fmt/ranges.h>
 
 #include "input_error.h"
+#include "match_result.h"
 #include "scene_loader.h"
 #include "toml_table_reader.h"
 
 namespace ballbench {
 
 std::string report_suites_file() { return scenario_dir() + "/suites/report.toml"; }
+
+namespace {
+
+// measured_matches: match files relative to the suites file's folder, each of a built-in scene the
+// suite does not search itself, once.
+std::vector<MeasuredMatch> measured_matches(const TableReader& r, const std::string& suites_path,
+                                            const std::vector<std::string>& match_scenes,
+                                            const std::vector<std::string>& builtin) {
+  const char* key = "measured_matches";
+  std::vector<MeasuredMatch> out;
+  const std::vector<std::string> files = r.strings(key, {});
+  for (size_t i = 0; i < files.size(); ++i) {
+    const std::string field = fmt::format("{}[{}]", key, i);
+    const std::filesystem::path given(files[i]);
+    const std::string path =
+        given.is_absolute() ? files[i] : (std::filesystem::path(suites_path).parent_path() / given).lexically_normal().string();
+    MatchResult m;
+    try {
+      m = read_match_file(path);
+    } catch (const InputError& e) {
+      r.fail(r.node(key), field, e.what());
+    }
+    if (!m.interrupted.empty() || m.shard_count != 1)
+      r.fail(r.node(key), field,
+             fmt::format("{}: {}; carry a whole search", path,
+                         m.interrupted.empty() ? fmt::format("shard {} of {}", m.shard_index, m.shard_count)
+                                               : "interrupted by " + m.interrupted));
+    if (std::find(builtin.begin(), builtin.end(), m.scene) == builtin.end())
+      r.fail(r.node(key), field, fmt::format("{}: its scene '{}' is not a built-in scene", path, m.scene));
+    if (std::find(match_scenes.begin(), match_scenes.end(), m.scene) != match_scenes.end())
+      r.fail(r.node(key), field, fmt::format("{}: the suite searches '{}' itself (match_scenes)", path, m.scene));
+    for (const MeasuredMatch& other : out)
+      if (other.scene == m.scene)
+        r.fail(r.node(key), field, fmt::format("{}: a second search of '{}' (the first: {})", path, m.scene, other.path));
+    out.push_back({m.scene, path});
+  }
+  return out;
+}
+
+}  // namespace
 
 ReportSuite load_report_suite(const std::string& name, const std::string& given_path) {
   const std::string path = given_path.empty() ? report_suites_file() : given_path;
@@ -32,7 +73,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
   r.check_keys({"scenes", "unreferenced", "match_scenes", "match_budget", "match_max_halvings", "match_ceiling", "sweep_scenes",
                 "stress_scenes", "stress_levels", "seeds", "bench_filters", "bench_min_time", "bench_budget_s",
                 "harness_filter", "timeout_s", "costly_engines",
-                "match_costly_engines"});
+                "match_costly_engines", "measured_matches"});
   ReportSuite s;
   s.name = name;
   const auto names = builtin_scene_names();
@@ -78,6 +119,7 @@ ReportSuite load_report_suite(const std::string& name, const std::string& given_
   s.timeout_s = positive("timeout_s", s.timeout_s);
   s.costly_engines = r.boolean("costly_engines", s.costly_engines);
   s.match_costly_engines = r.strings("match_costly_engines", {});
+  s.measured_matches = measured_matches(r, path, s.match_scenes, names);
   return s;
 }
 

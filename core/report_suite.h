@@ -6,6 +6,13 @@
 
 namespace ballbench {
 
+// An equal-accuracy search too costly for the suite (an hour at 10^4 balls), measured before by
+// `ballbench match` and committed: the report shows it with its own date and build.
+struct MeasuredMatch {
+  std::string scene;  // the scene it searched (its file's)
+  std::string path;   // its JSON file, as the suites file names it, resolved against that file's folder
+};
+
 struct ReportSuite {
   std::string name;                         // "quick", "full"
   std::vector<std::string> scenes;          // a comparison table each, every engine and profile
@@ -25,6 +32,7 @@ struct ReportSuite {
   double timeout_s = 600;                   // per engine run
   bool costly_engines = false;              // sweeps, frontiers and matches include EngineInfo::costly_runs engines
   std::vector<std::string> match_costly_engines;  // costly engines the matches include anyway
+  std::vector<MeasuredMatch> measured_matches;     // searches carried into the report, not run by it
 };
 
 // The suite `name` of the suites file (default: scenarios/suites/report.toml in the scenarios

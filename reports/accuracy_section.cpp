@@ -10,6 +10,7 @@
 #include "json_value.h"
 #include "markdown_cell.h"
 #include "page_links.h"
+#include "report_part.h"
 #include "result.h"
 
 namespace ballbench {
@@ -77,7 +78,7 @@ void put_match_table(std::string& md, const ReportInputs& in, const MatchResult&
 }
 
 // How the cost was measured and how the searches were bounded, when and by which build.
-void put_match_method(std::string& md, const MatchResult& m) {
+void put_match_method(std::string& md, const MatchResult& m, bool measured) {
   md += fmt::format(
       "\nCost: the engine's step time per ball per scene step in CPU time (a step of dt/8 costs 8 of its steps), "
       "{} (± half their range); figures as the harness measured them from the states at the scene's step times. "
@@ -91,8 +92,10 @@ void put_match_method(std::string& md, const MatchResult& m) {
     md += fmt::format(" Ceiling: {:g}x our solver's cost ({} ns), searched first; a try stopped once its CPU time passed "
                       "{:g}x the ceiling, and a configuration met past the ceiling is over it.",
                       m.ceiling, cost_text(m.ceiling_ns), kClearlyCostlier);
-  md += fmt::format(" Measured {} by build {}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
-                    json_string_field(m.context, "build", "(not recorded)"));
+  md += fmt::format(" Measured {} by build {}{}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
+                    json_string_field(m.context, "build", "(not recorded)"),
+                    measured ? ": a search measured on its own (`ballbench match`) and carried into this report as it was"
+                             : "");
 }
 
 // Each of our profiles that met the spec against the cheapest external engine that did.
@@ -125,7 +128,8 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
   md += "\n\n";
   const std::vector<const MatchOutcome*> rows = ranked_rows(m);
   put_match_table(md, in, m, rows);
-  put_match_method(md, m);
+  const bool measured = in.measured.contains(m.scene);
+  put_match_method(md, m, measured);
   put_our_ratios(md, m);
   for (const Figure& f : figures)
     if (f.kind == "front" && f.scene == m.scene)
@@ -133,7 +137,8 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
   md += "\n<details><summary>Reproduce each row with <code>ballbench run</code></summary>\n\n";
   for (const MatchOutcome* oc : rows)
     if (!oc->command.empty()) md += fmt::format("- {}: `{}`\n", run_label(oc->engine, oc->profile), oc->command);
-  md += fmt::format("\nEvery try: `results/match-{}.csv`.\n\n</details>\n\n", m.scene);
+  md += fmt::format("\nEvery try: `results/{}`.\n\n</details>\n\n",
+                    measured ? part_file({PartKind::measured, m.scene}) : fmt::format("match-{}.csv", m.scene));
 }
 
 }  // namespace

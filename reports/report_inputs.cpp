@@ -45,8 +45,11 @@ std::vector<PartOrigin> origins(const ReportInputs& in) {
     out.push_back({file == in.result_files.end() ? r.scene : file->second, r.build, r.scene, r.scene_digest});
   }
   for (const MatchResult& m : in.matches) {
-    from_context(fmt::format("results/{}", part_file({PartKind::match, m.scene})), m.context, m.scene);
+    const bool measured = in.measured.contains(m.scene);
+    from_context(fmt::format("results/{}", part_file({measured ? PartKind::measured : PartKind::match, m.scene})),
+                 m.context, m.scene);
     out.back().digest = m.scene_digest;
+    if (measured) out.back().build.clear();  // carried in with its own build, and said so
   }
   for (const SweepResult& s : in.sweeps) {
     const std::string scene = s.plan.value("scene", "");
@@ -114,6 +117,9 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
       in.calibration = read_calibration_file(f.string());
     } else if (name.starts_with("match-")) {
       in.matches.push_back(read_match_file(f.string()));
+    } else if (name.starts_with("measured-")) {
+      in.matches.push_back(read_match_file(f.string()));
+      in.measured.insert(in.matches.back().scene);
     } else if (name.starts_with("sweep-")) {
       in.sweeps.push_back(read_sweep_file(f.string()));
       mark_pareto(in.sweeps.back().points);  // by today's rule, whatever rule wrote the file
@@ -132,10 +138,15 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   // The equal-accuracy scenes in the suite's order (run.json's parts), then any others by name.
   const auto parts = in.run.is_object() ? in.run.value("parts", std::vector<std::string>{}) : std::vector<std::string>{};
   const auto rank = [&](const MatchResult& m) {
-    return std::find(parts.begin(), parts.end(), part_word({PartKind::match, m.scene})) - parts.begin();
+    const PartKind kind = in.measured.contains(m.scene) ? PartKind::measured : PartKind::match;
+    return std::find(parts.begin(), parts.end(), part_word({kind, m.scene})) - parts.begin();
   };
   std::stable_sort(in.matches.begin(), in.matches.end(),
                    [&](const MatchResult& a, const MatchResult& b) { return rank(a) < rank(b); });
+  for (const std::string& scene : in.measured)
+    if (std::count_if(in.matches.begin(), in.matches.end(), [&](const MatchResult& m) { return m.scene == scene; }) > 1)
+      throw InputError(fmt::format("{}: holds {} and {} of one scene: run `ballbench report --fresh`", results_dir,
+                                   part_file({PartKind::match, scene}), part_file({PartKind::measured, scene})));
   if (in.run.is_null())
     throw InputError(fmt::format("{}: no run.json, so no report's results to render (run `ballbench report` "
                                  "without --render-only first)",

@@ -2,6 +2,7 @@
 // Results (JSON files) -> REPORT.md and its pages. It reads result files only: every number in the
 // report can be traced to a file in the results folder.
 #include <map>
+#include <set>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +24,10 @@ struct ReportInputs {
   nlohmann::json run;                // results/run.json: machine, compiler, command, date
   std::vector<Result> results;       // every other results/*.json, in file order: the scene's own placement
   std::vector<Result> placements;    // the same files' runs of further placements (seed_offset > 0)
-  std::vector<MatchResult> matches;  // results/match-*.json (`ballbench match`), in the suite's order
+  std::vector<MatchResult> matches;  // results/match-*.json (`ballbench match`), in the suite's order, then measured-*.json
+  // The scenes whose search was measured before and carried in (results/measured-*.json): shown with
+  // their own date and build, not this report's.
+  std::set<std::string> measured;
   std::map<std::string, std::string> result_files;  // scene -> its results file, relative to the report
   std::vector<SweepResult> sweeps;   // results/sweep-*.json (`ballbench sweep`)
   std::vector<FrontierResult> frontiers;  // results/stress-*.json (`ballbench stress --json`)

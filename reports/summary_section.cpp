@@ -75,13 +75,15 @@ std::string provenance(const ReportInputs& in) {
   double budget = 0, ceiling = 0;
   std::set<std::string> builds, dates, steps;
   for (const MatchResult& m : in.matches) {
+    if (in.measured.contains(m.scene)) continue;  // said on its own (measured_text)
     steps.insert(fmt::format("{:g} s", m.dt));
     budget = std::max(budget, m.budget_runs), ceiling = std::max(ceiling, m.ceiling_ns > 0 ? m.ceiling : 0.0);
     if (const auto b = json_string_field(m.context, "build"); !b.empty()) builds.insert(b);
     if (const auto d = json_string_field(m.context, "date"); !d.empty()) dates.insert(d.substr(0, 10));
   }
   std::string md = "Cost: the engine's CPU time per ball per scene step (ns), the configuration found timed alone "
-                   "(the fastest of at least three windows of its run, more for a short window, run on each core in turn, "
+                   "(the fastest of at least three timings of a window of its run, or of all of it where that takes under 0.2 s, "
+                   "more for a short one, run on each core in turn, "
                    "each run again until the engine is warm; ± half their range).";
   md += fmt::format(" dt: the scene's own step ({}); a step of dt/64 makes 64 steps per scene step.",
                     steps.size() == 1 ? *steps.begin() + " in each" : fmt::format("{}", fmt::join(steps, ", ")));
@@ -99,6 +101,16 @@ std::string provenance(const ReportInputs& in) {
                     json_string_field(in.run, "cpu"), in.run.is_object() ? json_text(in.run.value("cores", nlohmann::json())) : "?",
                     in.run.is_object() ? in.run.value("suite", "quick") : "quick", fmt::join(builds, ", "));
   return md;
+}
+
+// A search carried in rather than run by this report: when, by which build and within what.
+std::string measured_text(const MatchResult& m) {
+  return fmt::format("The row of `{}` is a search too costly for this suite, measured on its own (`ballbench match`) "
+                     "and carried into this report as it was: measured {} by build {}, each search's budget {:g} runs "
+                     "of the scene at dt{}.",
+                     m.scene, json_string_field(m.context, "date", "(not recorded)").substr(0, 10),
+                     json_string_field(m.context, "build", "(not recorded)"), m.budget_runs,
+                     m.ceiling_ns > 0 ? fmt::format(", ceiling {:g}x our cost", m.ceiling) : "");
 }
 
 }  // namespace
@@ -121,17 +133,28 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
   for (const MatchResult& m : in.matches) {
     const auto [ext, ext_cost] = pick_cells(in, m, EngineRole::external);
     const auto [ours, our_cost] = pick_cells(in, m, EngineRole::ours);
-    md += fmt::format("| [{}](#{}), {} | {} | {} | {} | {} | {} | {} |\n",
+    md += fmt::format("| [{}](#{}), {}{} | {} | {} | {} | {} | {} | {} |\n",
                       m.use_case.empty() ? m.scene : m.use_case, accuracy_anchor(m.scene), balls_text(m.n),
+                      in.measured.contains(m.scene) ? " (measured on its own, below)" : "",
                       spec_words(m.spec), markdown_cell(ext), ext_cost, markdown_cell(ours), our_cost, ratio_cell(m));
   }
-  // At scale: the searches at 10^4 balls are the full suite's; the step benchmark's scaling is in every report.
+  // At scale: a search at 10^4 balls takes an hour, the full suite's or measured on its own; the step
+  // benchmark's scaling is in every report.
   constexpr int kAtScale = 10000;
-  if (std::none_of(in.matches.begin(), in.matches.end(), [](const MatchResult& m) { return m.n >= kAtScale; }))
-    md += fmt::format("\nAt 10^4 balls and more: the equal-accuracy searches (a settled 10^4 pile, the thesis's fluid "
-                      "at 10^4, a 10^4 gas) are the full suite's (`scripts/report --full`){}.\n",
-                      in.bench ? "; how each engine's step cost grows is on [scaling](pages/scaling.md)" : "");
-  md += "\n" + provenance(in);
+  const auto at_scale = [&](bool measured) {
+    return std::any_of(in.matches.begin(), in.matches.end(),
+                       [&](const MatchResult& m) { return m.n >= kAtScale && in.measured.contains(m.scene) == measured; });
+  };
+  md += "\n";
+  for (const MatchResult& m : in.matches)
+    if (in.measured.contains(m.scene)) md += measured_text(m) + " ";
+  if (!at_scale(false))  // this report ran none: the full suite's
+    md += fmt::format("At 10^4 balls and more: {} (`scripts/report --full`){}.",
+                    at_scale(true) ? "the other equal-accuracy searches (the thesis's fluid at 10^4, a 10^4 gas) are the full suite's"
+                             : "the equal-accuracy searches (a settled 10^4 pile, the thesis's fluid at 10^4, a 10^4 gas) "
+                               "are the full suite's",
+                    in.bench ? "; how each engine's step cost grows is on [scaling](pages/scaling.md)" : "");
+  md += "\n\n" + provenance(in);
   for (const Figure& f : figures)
     if (f.kind == "fronts") md += fmt::format("![every scene's work-precision front]({})\n\n*{}*\n\n", f.file, f.caption);
   return md;

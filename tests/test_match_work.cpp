@@ -109,7 +109,7 @@ TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
 
 // A timing runs the first part of a window that held kTimedWindowSeconds of the engine's time in
 // its try, scaled by that part's share of the run; a window that held less, whole.
-TEST(MatchWork, ALongWindowIsTimedOverItsFirstPartThatHeldAFifthOfASecond) {
+TEST(MatchWork, ALongWindowIsTimedOverItsFirstPartThatHeldAFifthOfASecondAndAShortRunWhole) {
   cli::WindowShares w;
   w.steps = 1600, w.share = 0.16;
   for (int i = 0; i < kWindowPoints; ++i) w.pace.push_back(0.01 * (i + 1));
@@ -121,6 +121,10 @@ TEST(MatchWork, ALongWindowIsTimedOverItsFirstPartThatHeldAFifthOfASecond) {
   EXPECT_DOUBLE_EQ(share, 0.02);
   // A run of 1 s: the whole window holds 0.16 s.
   EXPECT_EQ(cli::timed_prefix(w, 1.0), std::make_pair(1600L, 0.16));
+  // A run of at most 0.2 s is timed whole, not over a window of it.
+  EXPECT_FALSE(cli::timed_whole(1.0));
+  EXPECT_TRUE(cli::timed_whole(0.2));
+  EXPECT_TRUE(cli::timed_whole(0.001));
 }
 
 // The budget counts work: a search that cannot afford its next try stops there, naming it, and a

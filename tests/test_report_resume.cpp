@@ -352,6 +352,36 @@ TEST_F(ReportResume, AResultsFileOfAnotherSceneIsNotReused) {
   for (const auto& o : read_match_file(match_box).outcomes) EXPECT_TRUE(o.engine == "home" || o.engine == "exact") << o.engine;
 }
 
+// A search measured before (the suite's measured_matches) is carried into the report as it was,
+// with its page and its own build, while its scene is the one it searched; a search of another
+// content of the scene is refused, with the command that measures it again.
+TEST_F(ReportResume, ASearchMeasuredBeforeIsCarriedWhileItsSceneIsTheSame) {
+  const fs::path measured = root_ / "measured" / "match-rough-box.json";
+  fs::create_directories(measured.parent_path());
+  ASSERT_EQ(command("match --scene rough-box --engine home,chipmunk --budget 20 --max-halvings 2 --store '' --json " +
+                    measured.string()),
+            0)
+      << err_;
+  std::ofstream(root_ / "suites.toml") << R"([quick]
+scenes = ["seed-box"]
+measured_matches = ["measured/match-rough-box.json"]
+)";
+  const std::string args = "--suites " + (root_ / "suites.toml").string();
+  ASSERT_EQ(report(args), 0) << err_;
+  EXPECT_EQ(slurp(out() / "results" / "measured-rough-box.json"), slurp(measured));
+  EXPECT_EQ(broken_links(out()), std::vector<std::string>{});
+  EXPECT_NE(slurp(out() / "REPORT.md").find("(scenes/rough-box.md#equal-accuracy-rough-box), 3 balls (measured on its own, below)"),
+            std::string::npos)
+      << slurp(out() / "REPORT.md");
+  EXPECT_NE(slurp(out() / "scenes" / "rough-box.md").find("carried into this report as it was"), std::string::npos);
+
+  std::string text = slurp(root_ / "scenarios" / "rough-box.toml");
+  text.replace(text.find("duration = 0.2"), 14, "duration = 0.3");
+  std::ofstream(root_ / "scenarios" / "rough-box.toml") << text;
+  EXPECT_EQ(report(args), 2);
+  EXPECT_NE(err_.find(measured.string() + ": searched another content of scene rough-box"), std::string::npos) << err_;
+}
+
 // A report run as two shards (on two machines, say), merged: every part's result file and a
 // REPORT.md with every section of the quick suite; a shard alone renders nothing, and a merge with
 // a shard missing is refused.

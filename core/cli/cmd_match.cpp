@@ -108,7 +108,8 @@ void add_match(CLI::App& app) {
       ->transform(kPositiveNumberOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run (or the first part of it "
-                  "that held 0.2 s of its time) from the state it saved at its middle, each the mean of its passes "
+                  "that held 0.2 s of its time) from the state it saved at its middle, or over its whole run where "
+                  "that held at most 0.2 s, each the mean of its passes "
                   "once the engine is warm, more until they hold 0.25 s of its time (at most 8 times as many), each "
                   "round on the next core; the fastest is reported (default 3; 0: its own run's time)")
       ->check(whole_in_range(0, 100));

@@ -107,11 +107,13 @@ void render_report_folder(const std::string& out) {
 
 namespace {
 
-// What the report reads (an engines file, the benchmark binaries; with --render-only the results)
+// What the report reads (an engines file, the benchmark binaries, the measured searches; with --render-only the results)
 // lies outside what it writes and, with --fresh, empties: OUT/results, the rendered folders
 // (kRenderedFolders) and OUT/REPORT.md.
-void check_report_paths(const ReportArgs& a) {
+void check_report_paths(const ReportArgs& a, const ReportSuite& suite) {
   std::vector<PathUse> uses = noted_input_files();
+  if (!a.render_only)
+    for (const MeasuredMatch& m : suite.measured_matches) uses.push_back({"the suite's measured_matches", m.path, false});
   const std::string bin = a.bench_binary.empty() ? default_bench_binary("ballbench_step_benchmark") : a.bench_binary;
   if (!a.render_only && !a.no_bench && !bin.empty())
     for (const std::string& b : {bin, (fs::path(bin).parent_path() / "ballbench_harness_benchmark").string()})
@@ -187,19 +189,19 @@ void write_run_record(const ReportArgs& a, const ReportRun& run, const std::vect
 
 // Every place the report writes and reads is checked before anything runs (a report takes
 // minutes): an --out that cannot hold them is one line, not an error from deep inside after the runs.
-void check_before_running(const ReportArgs& a) {
+void check_before_running(const ReportArgs& a, const ReportSuite& suite) {
   if (!a.bench_binary.empty() && ::access(a.bench_binary.c_str(), X_OK) != 0)
     throw InputError(fmt::format("--bench-binary {}: not an executable file", a.bench_binary));
   for (const std::string& p : {a.out + "/REPORT.md", a.out + "/results/run.json", a.out + "/figures/scaling.png"})
     check_writable(p, "the report's files", true);
-  check_report_paths(a);
+  check_report_paths(a, suite);
 }
 
 void report(const ReportArgs& a) {
   install_interrupt_handlers();  // first: a stop request during the handshakes too
   Progress::quiet = a.quiet;
-  check_before_running(a);
   ReportSuite suite = load_report_suite(a.full ? "full" : "quick", a.suites);
+  check_before_running(a, suite);
   const auto engines = parse_engine_list(a.engines);  // a bad name is an error before anything runs
   if (a.seeds > 0) suite.seeds = a.seeds;
   const Shard shard = a.shard.empty() ? Shard{} : parse_shard(a.shard);

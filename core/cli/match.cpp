@@ -9,8 +9,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <map>
 #include <memory>
@@ -105,11 +103,6 @@ std::string run_command(const Scene& scene, const EngineEntry& e, const MatchTry
 // Where a search stopped at the ceiling: "the ceiling (50x our solver's cost: 36547 ns)".
 std::string ceiling_text(double ratio, double ns) {
   return fmt::format("the ceiling ({:g}x our solver's cost: {} ns)", ratio, cost_text(ns));
-}
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // One run at dt / 2^k, in a child process (a crash or hang is that run's result) unless isolation
@@ -458,7 +451,7 @@ class Search {
     std::error_code ec;
     if (const auto w = window_shares(res, r.window.steps); t.met && w) {
       windows[index] = {r.window.checkpoint, *w};
-      kept["window"] = {{"scene", read_text(r.window.checkpoint)}, {"pace", w->pace}, {"share", w->share}};
+      kept["window"] = {{"scene", read_text_file(r.window.checkpoint)}, {"pace", w->pace}, {"share", w->share}};
     } else {
       std::filesystem::remove(r.window.checkpoint, ec);
     }
@@ -534,8 +527,8 @@ struct Running {
   bool failed = false;
 };
 
-// The subjects whose timing is not in the store and whose window ran: each to be timed, warm
-// (RunOptions::passes).
+// The subjects whose timing is not in the store and whose window ran (or that are timed_whole): each
+// to be timed, warm (RunOptions::passes).
 std::vector<Running> to_time(std::vector<Timed>& subjects, const Scene& scene, const MatchOptions& o) {
   std::vector<Running> running;
   for (Timed& s : subjects) {
@@ -545,18 +538,26 @@ std::vector<Running> to_time(std::vector<Timed>& subjects, const Scene& scene, c
       s.stored = true;
       continue;
     }
-    if (!s.w || !(s.w->shares.share > 0)) continue;
     RunOptions r;
     r.profile = s.t->profile;
     if (!s.t->knob.empty()) r.overrides = {{s.t->knob, s.t->value}};
     r.series_points = 0;
     r.passes = kTimingPasses;
+    // The sampled metrics at the end only: a timing judges nothing, and the harness's work beside
+    // each step would fill the caches the engine's next step finds.
+    const auto sample_at_end = [](long steps) { return int(std::clamp<long>(steps, 1, std::numeric_limits<int>::max())); };
     const double run_s = s.t->cost_ns * 1e-9 * double(scene.n()) * double(scene.steps());
+    if (timed_whole(run_s)) {
+      Scene whole = scene;
+      whole.dt = scene.dt / double(1 << s.t->halvings);
+      r.metrics.sample_every = sample_at_end(whole.steps());
+      running.push_back({&s, whole, r, 1.0});
+      continue;
+    }
+    if (!s.w || !(s.w->shares.share > 0)) continue;
     const auto [steps, share] = timed_prefix(s.w->shares, run_s);
     r.steps = steps;
-    // The sampled metrics at the window's end only: a timing judges nothing, and the harness's work
-    // beside each step would fill the caches the engine's next step finds.
-    r.metrics.sample_every = int(std::clamp<long>(steps, 1, std::numeric_limits<int>::max()));
+    r.metrics.sample_every = sample_at_end(steps);
     running.push_back({&s, load_scene_file(s.w->scene), r, share});
   }
   return running;

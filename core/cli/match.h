@@ -69,6 +69,13 @@ inline constexpr int kTimingPasses = 8;
 inline constexpr double kWindowFraction = 0.1;
 inline constexpr long kMinWindowSteps = 500;
 
+// Whether a configuration whose try's whole run took `run_s` of its engine's time is timed over its
+// whole run, from the scene's start, rather than over its window: at most kTimedWindowSeconds. A
+// window's share of a run of milliseconds, read once in its try (the first steps' allocations and
+// cold caches among them), moved its cost by half between two searches (rolling-balls: home's 53
+// and 82 ns), and the ceiling every other search stops at with it.
+inline bool timed_whole(double run_s) { return run_s <= kTimedWindowSeconds; }
+
 // A try's window as a timing sees it: the window's steps and its pace (Result::window_pace) as
 // shares of the run's engine time, each on the window's clock (Result::window_clock_s).
 struct WindowShares {

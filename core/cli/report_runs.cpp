@@ -231,6 +231,26 @@ void run_match_part(const ReportRun& run, const ReportPart& part) {
                     fmt::format("{}/match-{}.csv", run.results_dir, part.scene));
 }
 
+const MeasuredMatch& measured_of(const ReportRun& run, const ReportPart& part) {
+  for (const MeasuredMatch& m : run.suite.measured_matches)
+    if (m.scene == part.scene) return m;
+  throw std::logic_error("a measured part the suite does not name");
+}
+
+// A search measured before, copied into the results as it is (its own date and build), once its
+// scene's content is checked to be today's.
+void run_measured_part(const ReportRun& run, const ReportPart& part) {
+  const MeasuredMatch& measured = measured_of(run, part);
+  const MatchResult m = read_match_file(measured.path);
+  const std::string now = scene_digest(load_scene(part.scene));
+  if (m.scene_digest != now)
+    throw InputError(fmt::format("{}: searched another content of scene {} (digest {}, now {}): measure it again with "
+                                 "`ballbench match --scene {} --json {}`",
+                                 measured.path, part.scene, m.scene_digest.empty() ? "not recorded" : m.scene_digest,
+                                 now, part.scene, measured.path));
+  write_file_atomically(path_of(run, part), read_text_file(measured.path), "the measured search's copy");
+}
+
 void run_sweep_part(const ReportRun& run, const ReportPart& part) {
   SweepOptions o;
   o.repeats = 5;
@@ -301,6 +321,9 @@ const PartRunner kRunners[] = {
      "ran"},
     {PartKind::match, run_match_part,
      [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_match_file, r.matched); }, "matched"},
+    // Checked and copied again by every report: it takes a second, and the scene may have changed.
+    {PartKind::measured, run_measured_part, [](const ReportRun&, const ReportPart&) { return false; },
+     "carried the search measured before of"},
     {PartKind::sweep, run_sweep_part,
      [](const ReportRun& r, const ReportPart& p) { return reusable(r, p, read_sweep_file, r.swept); }, "swept"},
     {PartKind::stress, run_stress_part,
