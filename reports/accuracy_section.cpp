@@ -132,7 +132,7 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
   put_match_method(md, m, measured);
   put_our_ratios(md, m);
   for (const Figure& f : figures)
-    if (f.kind == "front" && f.scene == m.scene)
+    if (f.kind == FigureKind::front && f.scene == m.scene)
       md += fmt::format("\n![work-precision front of {}]({})\n\n*{}*\n", m.scene, f.file, f.caption);
   md += "\n<details><summary>Reproduce each row with <code>ballbench run</code></summary>\n\n";
   for (const MatchOutcome* oc : rows)

@@ -8,7 +8,7 @@
 
 namespace ballbench {
 
-inline void put_figures(MarkdownBuffer& put, const std::vector<Figure>& figures, const std::string& kind,
+inline void put_figures(MarkdownBuffer& put, const std::vector<Figure>& figures, FigureKind kind,
                         const std::string& scene) {
   for (const Figure& f : figures)
     if (f.kind == kind && f.scene == scene) put("![{}]({})\n\n*{}*\n\n", f.caption, f.file, f.caption);

@@ -148,7 +148,7 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
     gp << "set title " << quoted(scene + ": the other profiles (dashed)") << "\nplot " << others << "\nunset multiplot\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return Figure{"energy", scene, "figures/" + base + ".png",
+  return Figure{FigureKind::energy, scene, "figures/" + base + ".png",
                 two ? "Energy over time relative to the start (log scale): above, each engine's first profile; below, "
                       "its other profiles (dashed), with the reference for comparison. One colour per engine, as in "
                       "every figure and the viewer; a run that stopped early says when in the key."
@@ -214,7 +214,7 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
   gp << "unset multiplot\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {"picture", scene, "figures/" + base + ".png",
+  return {FigureKind::picture, scene, "figures/" + base + ".png",
           "The scene at the end, to scale in metres: the balls in their engine's colour, the tracks of the first four "
           "balls (a colour each), the centre-of-mass trail (dark grey) and the container's walls (red), as in the "
           "thesis's figures 3 to 5."};
@@ -326,7 +326,7 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
   }
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {"animation", scene, "figures/" + base + ".gif",
+  return {FigureKind::animation, scene, "figures/" + base + ".gif",
           fmt::format("The scene in motion ({} frames, animated GIF): the thesis's algorithm, ours and an external "
                       "engine side by side, balls to scale in their engine's colour; a run that stopped early shows its "
                       "last frame greyed, with when and why it stopped.",
@@ -340,7 +340,7 @@ Figure viewer_figure(const std::string& scene, const std::vector<const Result*>&
   write_file_atomically((dir / file).string(), page, "the viewer page");
   size_t frames = 0;
   for (const Result* r : runs) frames = std::max(frames, r->series.frames.size());
-  return {"viewer", scene, "figures/" + file,
+  return {FigureKind::viewer, scene, "figures/" + file,
           fmt::format("every engine and profile side by side, {} frames ({:.1f} MB, opens offline in any browser): "
                       "play, pause, scrub and speed, the tracks of four balls, every tunnelling and sticking event "
                       "marked where and when it happened (click one in the list to jump there), energy over time "
@@ -400,7 +400,7 @@ Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
      << "unset multiplot\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {"work-precision", sw.scene, "figures/" + base + ".png",
+  return {FigureKind::work_precision, sw.scene, "figures/" + base + ".png",
           fmt::format("Work against precision on {}: each line is one engine and profile at the step sizes {} s "
                       "(cost grows as dt shrinks), x bars the spread of {} timing runs; open circles are the same "
                       "engine with one of its own knobs changed at the scene's dt (table below); the right panel "
@@ -491,7 +491,7 @@ std::vector<Figure> scaling_figures(const BenchResults& bench, const fs::path& d
     gp << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n';
     gp.close();
     run_gnuplot(dir / (base + ".gp"));
-    figures.push_back({"scaling", "", "figures/" + base + ".png",
+    figures.push_back({FigureKind::scaling, "", "figures/" + base + ".png",
                        fmt::format("Step cost against ball count on {} (bench/ballbench_step_benchmark, engine step "
                                    "only), one line per engine and profile, log-log: flat is linear scaling. Points "
                                    "an engine did not reach are named under the plot.",
@@ -535,7 +535,7 @@ Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
      << "plot for [k=2:" << knobs.size() + 1 << "] '" << base << ".dat' using k:xtic(1) title columnheader\n";
   gp.close();
   run_gnuplot(dir / (base + ".gp"));
-  return {"frontier", f.scene, "figures/" + base + ".png",
+  return {FigureKind::frontier, f.scene, "figures/" + base + ".png",
           fmt::format("Stability frontier on {}: for each engine, how many doublings of each knob it survived ({} "
                       "steps per run; a run fails on tunnelling, a non-finite state, or energy off the reference by "
                       "more than {:.0f}%). 0: the scene itself already failed.",

@@ -146,7 +146,7 @@ Figure scene_front(const MatchResult& m) {
      << "plot " << (series.empty() ? "NaN notitle" : plot_series(series, true)) << write_picks(m, base) << '\n';
   gp.close();
   run_gnuplot(base + ".gp");
-  return {"front", m.scene, "figures/" + base + ".png",
+  return {FigureKind::front, m.scene, "figures/" + base + ".png",
           fmt::format("Cost against error on `{}`, on the overview's axes: each engine and profile's tries, the "
                       "profile as it is from dt down (the line) and each knob on top of it, the error the spec's worst "
                       "term over its bound; filled: met the spec ({}), open: did not; ringed: the picks (the cheapest "
@@ -197,7 +197,7 @@ Figure all_fronts(const std::vector<MatchResult>& matches) {
   gp << "\nunset multiplot\n";
   gp.close();
   run_gnuplot("fronts.gp");
-  return {"fronts", "", "figures/fronts.png",
+  return {FigureKind::fronts, "", "figures/fronts.png",
           "Every scene's work-precision front: cost against the spec's worst term over its bound (the dashed "
           "line at 1: at most 1 meets the spec; 0 drawn at 0.001), each engine and profile's tries; filled: met the "
           "spec, open: did not; ringed: the picks (the cheapest external engine and ours that met it). Each engine has "

@@ -31,7 +31,7 @@ void put_frontier(MarkdownBuffer& put, const FrontierResult& f, const std::vecto
       "2^(k-1) times the scene's value; `count` tiles the scene side by side). The table gives the largest value "
       "that passed and why the next level failed. Source: `results/stress-{}.json`.\n\n",
       balls_text(f.n), f.steps, f.scene);
-  put_figures(put, figures, "frontier", f.scene);
+  put_figures(put, figures, FigureKind::frontier, f.scene);
   std::vector<std::string> knobs, engines;
   for (const FrontierRow& r : f.rows) {
     add_once(knobs, r.knob);

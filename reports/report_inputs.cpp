@@ -66,9 +66,14 @@ std::vector<PartOrigin> origins(const ReportInputs& in) {
   return out;
 }
 
-// A report is one build's measurement of one content of each scene: results of two builds, or of
-// two contents of a scene, are never rendered as one report.
+// A report is one build's measurement of one content of each scene, searched once: results of two
+// builds (but for a search measured before, which says its own), of two contents of a scene, or a
+// search of a scene run and carried in, are never rendered as one report.
 void check_one_origin(const ReportInputs& in, const std::string& results_dir) {
+  for (const std::string& scene : in.measured)
+    if (std::count_if(in.matches.begin(), in.matches.end(), [&](const MatchResult& m) { return m.scene == scene; }) > 1)
+      throw InputError(fmt::format("{}: holds {} and {} of one scene: run `ballbench report --fresh`", results_dir,
+                                   part_file({PartKind::match, scene}), part_file({PartKind::measured, scene})));
   const std::vector<PartOrigin> all = origins(in);
   const PartOrigin* first_build = nullptr;
   std::map<std::string, const PartOrigin*> first_digest;  // scene -> the first part naming its content
@@ -143,10 +148,6 @@ ReportInputs read_report_inputs(const std::string& results_dir) {
   };
   std::stable_sort(in.matches.begin(), in.matches.end(),
                    [&](const MatchResult& a, const MatchResult& b) { return rank(a) < rank(b); });
-  for (const std::string& scene : in.measured)
-    if (std::count_if(in.matches.begin(), in.matches.end(), [&](const MatchResult& m) { return m.scene == scene; }) > 1)
-      throw InputError(fmt::format("{}: holds {} and {} of one scene: run `ballbench report --fresh`", results_dir,
-                                   part_file({PartKind::match, scene}), part_file({PartKind::measured, scene})));
   if (in.run.is_null())
     throw InputError(fmt::format("{}: no run.json, so no report's results to render (run `ballbench report` "
                                  "without --render-only first)",

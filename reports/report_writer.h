@@ -42,10 +42,14 @@ struct ReportInputs {
 
 EngineRole role_of(const ReportInputs& in, const std::string& engine);
 
+// What a figure of the report shows: per scene its energy over time, a picture of its end, its
+// animation, its trajectory viewer, its work against precision, its stability frontier and its
+// work-precision front; every scene's fronts in one; the engines' scaling.
+enum class FigureKind { energy, picture, animation, viewer, work_precision, frontier, front, fronts, scaling };
+
 // A figure drawn for the report (figures.h).
 struct Figure {
-  std::string kind;     // "energy", "picture", "animation", "viewer" (per scene), "work-precision", "frontier", "front" (per
-                        // scene), "fronts" (every scene's front), "scaling"
+  FigureKind kind = FigureKind::energy;
   std::string scene;    // "" for scaling
   std::string file;     // relative to the report's folder: figures/NAME.png (an animation: NAME.gif; the viewer:
                         // SCENE-viewer.html)

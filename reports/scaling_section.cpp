@@ -182,7 +182,7 @@ void put_scaling_notes(MarkdownBuffer& put, const ReportInputs& in, const BenchR
 void put_scaling(MarkdownBuffer& put, const ReportInputs& in, const BenchResults& bench,
                  const std::vector<Figure>& figures) {
   put_scaling_intro(put, bench.context);
-  put_figures(put, figures, "scaling", "");
+  put_figures(put, figures, FigureKind::scaling, "");
   std::vector<std::string> scenes, engines;
   std::vector<long> counts;
   for (const BenchRow& r : bench.rows) {

@@ -267,7 +267,7 @@ void put_other_columns(MarkdownBuffer& put, const ReportInputs& in, const std::v
 // The scene's trajectory viewer page, as a link (a page, not a picture).
 void put_viewer(MarkdownBuffer& put, const std::vector<Figure>& figures, const std::string& scene) {
   for (const Figure& f : figures)
-    if (f.kind == "viewer" && f.scene == scene) put("**Trajectory viewer**: [{}]({}): {}.\n\n", f.file, f.file, f.caption);
+    if (f.kind == FigureKind::viewer && f.scene == scene) put("**Trajectory viewer**: [{}]({}): {}.\n\n", f.file, f.file, f.caption);
 }
 
 // A seed scene over its placements (ensemble.h): each metric's mean with its interval, and how each
@@ -371,7 +371,7 @@ std::string scene_section(const ReportInputs& in, const std::string& scene, cons
   put("\n");
   put_viewer(put, figures, scene);
   put_ensemble(put, in, scene);
-  for (const char* kind : {"energy", "picture", "animation"}) put_figures(put, figures, kind, scene);
+  for (const FigureKind kind : {FigureKind::energy, FigureKind::picture, FigureKind::animation}) put_figures(put, figures, kind, scene);
   put_other_columns(put, in, rows);
   return put.str();
 }

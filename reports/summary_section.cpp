@@ -46,9 +46,11 @@ std::string configuration_words(const ReportInputs& in, const MatchResult& m, co
 std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const MatchResult& m, EngineRole role) {
   if (const MatchOutcome* oc = cheapest_reached(m, role_name(role))) {
     std::string words = configuration_words(in, m, *oc);
-    for (const MatchOutcome* tie : tied_with(m, *oc))
-      words += fmt::format("; [a tie](pages/terms.md#cost-step-and-search) with {} ({})",
-                           configuration_words(in, m, *tie), cost_spread_text(*tie));
+    const char* joint = "; [tied](pages/terms.md#cost-step-and-search) with ";
+    for (const MatchOutcome* tie : tied_with(m, *oc)) {
+      words += fmt::format("{}{} ({})", joint, configuration_words(in, m, *tie), cost_spread_text(*tie));
+      joint = " and ";
+    }
     return {words, cost_spread_text(*oc)};
   }
   const MatchOutcome* near = nearest_unreached(m, role_name(role));
@@ -125,11 +127,11 @@ std::string spec_words(const AccuracySpec& spec) {
 std::string summary_section(const ReportInputs& in, const std::vector<Figure>& figures) {
   std::string md =
       "Which 2D ball-physics engine to pick, at equal accuracy: per use case one spec, each engine's cheapest "
-      "configuration that meets it (`ballbench match`: a step size and at most one of its own settings), and ours "
-      "(`home`) against the cheapest external one.\n\n";
+      "configuration that meets it (a step size and at most one of its settings), and ours (`home`) against the "
+      "cheapest external one.\n\n";
   if (in.matches.empty()) return md + "No equal-accuracy results in this report.\n\n";
   md += "| use case | [spec](pages/terms.md#spec-terms) | cheapest external engine | [cost](pages/terms.md#cost-step-and-search) (ns) | "
-        "ours | cost (ns) | ours against it |\n|---|---|---|---:|---|---:|---|\n";
+        "ours | cost (ns) | ratio |\n|---|---|---|---:|---|---:|---|\n";
   for (const MatchResult& m : in.matches) {
     const auto [ext, ext_cost] = pick_cells(in, m, EngineRole::external);
     const auto [ours, our_cost] = pick_cells(in, m, EngineRole::ours);
@@ -156,7 +158,7 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
                     in.bench ? "; how each engine's step cost grows is on [scaling](pages/scaling.md)" : "");
   md += "\n\n" + provenance(in);
   for (const Figure& f : figures)
-    if (f.kind == "fronts") md += fmt::format("![every scene's work-precision front]({})\n\n*{}*\n\n", f.file, f.caption);
+    if (f.kind == FigureKind::fronts) md += fmt::format("![every scene's work-precision front]({})\n\n*{}*\n\n", f.file, f.caption);
   return md;
 }
 

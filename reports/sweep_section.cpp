@@ -38,7 +38,7 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
       "step time to reach it, median of {} runs. Every point, with its settings: `results/sweep-{}.json` (and "
       "`.csv`).\n\n",
       balls_text(sw.n), sw.reference, sw.horizon, sw.repeats, sw.scene);
-  put_figures(put, figures, "work-precision", sw.scene);
+  put_figures(put, figures, FigureKind::work_precision, sw.scene);
   put("Each engine's Pareto front, fastest first: the settings no other setting of the same engine beats, being at "
       "least as accurate and not slower, and more accurate or faster beyond the noise (its slowest timing repeat "
       "below the other's fastest). Two settings whose repeats overlap are equally fast: a ranking inside the "

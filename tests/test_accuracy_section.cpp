@@ -89,7 +89,7 @@ TEST(AccuracySection, ThePickNamesAnEngineItCannotBeToldFrom) {
   ReportInputs in;
   in.matches = {m};
   const std::string md = summary_section(in, {});
-  EXPECT_NE(md.find("| **chipmunk** as shipped, dt/64; [a tie](pages/terms.md#cost-step-and-search) with **box2d** as "
+  EXPECT_NE(md.find("| **chipmunk** as shipped, dt/64; [tied](pages/terms.md#cost-step-and-search) with **box2d** as "
                     "shipped, dt/64 (46000 ±2%) | 45000 ±3% |"),
             std::string::npos)
       << md;

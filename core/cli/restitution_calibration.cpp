@@ -66,7 +66,8 @@ CalibrationResult run_calibration(const std::vector<const EngineEntry*>& engines
             CalibrationPoint p{e->info.name, profile, contact, requested, speed, std::nan(""), r.status, false, r.error};
             // Both scenes start with zero momentum along the contact (the wall's frame for one
             // ball), so the kinetic energy is the energy of the approach.
-            if (r.status == RunStatus::ok) p.effective = std::sqrt(std::max(r.metrics.value("energy.final"), 0.0) / r.metrics.value("energy.initial"));
+            if (const auto ratio = r.metrics.energy_ratio(); r.status == RunStatus::ok && ratio)
+              p.effective = std::sqrt(std::max(*ratio, 0.0));
             if (r.status == RunStatus::ok && r.metrics.tunnelled() > 0)
               p.tunnelled = true, p.error = "passed through the contact instead of bouncing";
             out.points.push_back(std::move(p));

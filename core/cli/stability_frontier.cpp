@@ -43,8 +43,8 @@ std::string stress_failure(const Result& r, double energy_tolerance) {
   if (const long n = r.metrics.count("tunnelling.pair")) return count(n, "pair pass-through");
   if (r.reference.available && r.reference.reference_failed_step < 0 && r.reference.energy_rel_max > energy_tolerance)
     return fmt::format("energy off the reference by {:.3g}", r.reference.energy_rel_max);
-  const double e0 = r.metrics.value("energy.initial"), e1 = r.metrics.value("energy.final");
-  if (e0 > 0 && e1 > (1 + energy_tolerance) * e0) return fmt::format("energy grew to {:.3g} x", e1 / e0);
+  if (const auto ratio = r.metrics.energy_ratio(); ratio && *ratio > 1 + energy_tolerance)
+    return fmt::format("energy grew to {:.3g} x", *ratio);
   return "";
 }
 

@@ -54,8 +54,8 @@ MetricFamily energy_metric() {
   MetricDef e_final_ratio = shown(metric_row("", "", fixed("the energy left at the end, E final / E0")), "E final / E0",
                                   "", false, MeaningfulOn::inelastic_scenes);
   e_final_ratio.get = [](const Result& r) {
-    const double e0 = r.metrics.value("energy.initial");
-    return e0 > 0 ? nlohmann::json(r.metrics.value("energy.final") / e0) : nlohmann::json(nullptr);
+    const auto ratio = r.metrics.energy_ratio();
+    return ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
   };
   MetricDef rel_drift = shown(metric_row("energy.max_rel_drift", "",
                                          fixed("max over samples of |E - E0| / E0 (none when E0 = 0). Restitution "

@@ -27,10 +27,16 @@ class MetricValues {
   double value(std::string_view key) const { return number(key).value_or(0.0); }
   long count(std::string_view key) const { return static_cast<long>(value(key)); }
   Eigen::Vector2d vec(std::string_view key) const;
-  // The figures derived from two counts, computed here once: balls that passed through a wall or
-  // another ball within a step (tunnelling wall + pair), and stuck episodes (sticking wall + pair).
+  // The figures derived from two values, computed here once: balls that passed through a wall or
+  // another ball within a step (tunnelling wall + pair), stuck episodes (sticking wall + pair), and
+  // the energy ratio.
   long tunnelled() const { return count("tunnelling.wall") + count("tunnelling.pair"); }
   long stuck() const { return count("sticking.wall") + count("sticking.pair"); }
+  // The energy left at the end, E final / E0; none where the run started with none.
+  std::optional<double> energy_ratio() const {
+    const double e0 = value("energy.initial");
+    return e0 > 0 ? std::optional(value("energy.final") / e0) : std::nullopt;
+  }
 
   const std::map<std::string, nlohmann::json, std::less<>>& all() const { return values_; }
   bool operator==(const MetricValues&) const = default;
