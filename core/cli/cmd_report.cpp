@@ -107,9 +107,9 @@ void render_report_folder(const std::string& out) {
 
 namespace {
 
-// What the report reads (an engines file, the benchmark binaries, the measured searches; with --render-only the results)
-// lies outside what it writes and, with --fresh, empties: OUT/results, the rendered folders
-// (kRenderedFolders) and OUT/REPORT.md.
+// What the report reads (an engines file, the benchmark binaries, the suite's measured searches;
+// with --render-only the results) lies outside what it writes and, with --fresh, empties:
+// OUT/results, the rendered folders (kRenderedFolders) and OUT/REPORT.md.
 void check_report_paths(const ReportArgs& a, const ReportSuite& suite) {
   std::vector<PathUse> uses = noted_input_files();
   if (!a.render_only)
