@@ -144,7 +144,7 @@ double seed_box_escapes(const EngineEntry& engine, const std::string& profile) {
   const Scene s = load_project_scene("seed-box");
   const Result r = run_engine(s, engine, o);
   if (r.status != RunStatus::ok) return HUGE_VAL;
-  return r.metrics.count("tunnelling.wall");
+  return r.metrics.count(Metric::tunnelling_wall);
 }
 
 // A friction case's engine, built for its scene; or, when there is none to run, the case's figure:

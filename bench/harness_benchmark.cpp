@@ -95,7 +95,7 @@ void tunnelling_benchmark(benchmark::State& state, int n) {
       std::swap(prev, cur);
     }
     const MetricValues values = metrics.values();
-    passthroughs = values.count("tunnelling.pair") + values.count("tunnelling.wall");
+    passthroughs = values.tunnelled();
     state.SetIterationTime(seconds);
     total_s += seconds;
   }

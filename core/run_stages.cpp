@@ -52,7 +52,7 @@ void record(RunContext& c, long k) {
   }
   if (k % c.series_every != 0 && k != c.r.steps) return;
   series.t.push_back(state.t);
-  series.energy.push_back(c.metrics->now("energy.final").value_or(0.0));
+  series.energy.push_back(c.metrics->now(Metric::energy_final).value_or(0.0));
   const Eigen::Vector2d com = state.pos.transpose() * scene.mass / scene.mass.sum();
   series.com_x.push_back(com.x()), series.com_y.push_back(com.y());
   if (c.reference) series.pos_err.push_back(c.error->summary().pos_rms_final);

@@ -11,20 +11,32 @@
 namespace ballbench {
 namespace {
 
-using Lookup = std::function<std::optional<double>(std::string_view key)>;
-
 // A term's figure from the run's metric values alone (none for the terms against the reference).
-std::optional<double> metric_figure(SpecTerm t, const Lookup& number) {
-  const auto sum = [&](const char* a, const char* b) { return number(a).value_or(0) + number(b).value_or(0); };
+std::optional<double> metric_figure(SpecTerm t, const MetricValues& v) {
   switch (t) {
-    case SpecTerm::overlap: return number("penetration.after_start");
-    case SpecTerm::tunnelling: return sum("tunnelling.wall", "tunnelling.pair");
-    case SpecTerm::sticking: return sum("sticking.wall", "sticking.pair");
-    case SpecTerm::rest_speed: return number("jitter");
-    case SpecTerm::energy_drift: return number("energy.max_rel_drift");
+    case SpecTerm::overlap: return v.number(Metric::penetration_after_start);
+    case SpecTerm::tunnelling: return static_cast<double>(v.tunnelled());
+    case SpecTerm::sticking: return static_cast<double>(v.stuck());
+    case SpecTerm::rest_speed: return v.number(Metric::jitter);
+    case SpecTerm::energy_drift: return v.number(Metric::energy_max_rel_drift);
     case SpecTerm::energy_error:
     case SpecTerm::horizon: return std::nullopt;
-    case SpecTerm::rolling: return number("rolling.error");
+    case SpecTerm::rolling: return v.number(Metric::rolling_error);
+  }
+  return std::nullopt;
+}
+
+// The metric whose meter measures a term, none for the terms against the reference.
+std::optional<Metric> term_metric(SpecTerm t) {
+  switch (t) {
+    case SpecTerm::overlap: return Metric::penetration_after_start;
+    case SpecTerm::tunnelling: return Metric::tunnelling_wall;
+    case SpecTerm::sticking: return Metric::sticking_wall;
+    case SpecTerm::rest_speed: return Metric::jitter;
+    case SpecTerm::energy_drift: return Metric::energy_max_rel_drift;
+    case SpecTerm::energy_error:
+    case SpecTerm::horizon: return std::nullopt;
+    case SpecTerm::rolling: return Metric::rolling_error;
   }
   return std::nullopt;
 }
@@ -32,11 +44,11 @@ std::optional<double> metric_figure(SpecTerm t, const Lookup& number) {
 }  // namespace
 
 std::optional<std::string> grown_past(const AccuracySpec& spec, const MeterSet& meters) {
-  const Lookup now = [&](std::string_view key) { return meters.now(key); };
   for (const SpecTermDef& d : spec_terms()) {
     const auto& bound = spec[d.term];
-    if (!bound || !d.grows || d.at_least) continue;
-    if (const auto figure = metric_figure(d.term, now); figure && *figure > *bound)
+    const auto metric = term_metric(d.term);
+    if (!bound || !d.grows || d.at_least || !metric) continue;
+    if (const auto figure = metric_figure(d.term, meters.values_of(*metric)); figure && *figure > *bound)
       return fmt::format("{} {:.3g} > {:g}", d.key, *figure, *bound);
   }
   return std::nullopt;
@@ -54,7 +66,7 @@ std::optional<double> spec_figure(SpecTerm t, const Result& r) {
       if (!r.reference.horizon)
         return (r.reference.reference_failed_step >= 0 ? r.reference.reference_failed_step : r.steps_done) * r.dt;
       return *r.reference.horizon;
-    default: return metric_figure(t, [&](std::string_view key) { return r.metrics.number(key); });
+    default: return metric_figure(t, r.metrics);
   }
 }
 

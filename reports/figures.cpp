@@ -114,7 +114,7 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
   const std::string base = slug(scene) + "-energy";
   std::string first, others, reference;
   for (const Result* r : runs) {
-    const double e0 = r->metrics.value("energy.initial");
+    const double e0 = r->metrics.value(Metric::energy_initial);
     if (r->series.t.empty() || e0 <= 0) continue;
     const std::string data = base + "-" + slug(run_label(*r)) + ".dat";
     std::ofstream f(dir / data);

@@ -37,17 +37,17 @@ std::string source_text(const Result& r) {
 void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vector<const Result*>& rows) {
   const Result* any = nullptr;
   for (const Result* r : rows)
-    if (r->metrics.has("rolling.expected_speed")) any = r;
+    if (r->metrics.has(Metric::rolling_expected_speed)) any = r;
   const bool one = any->n == 1;
   const auto time = [&](const char* before) {
-    return any->metrics.has("rolling.expected_time_to_roll")
-               ? fmt::format("{}**{:.3f} s**", before, any->metrics.value("rolling.expected_time_to_roll"))
+    return any->metrics.has(Metric::rolling_expected_time_to_roll)
+               ? fmt::format("{}**{:.3f} s**", before, any->metrics.value(Metric::rolling_expected_time_to_roll))
                : std::string();
   };
   put("### `{}`: rolling against the closed form\n\n", scene);
   if (one)
     put("`{}`; closed forms from the scene (core/metrics/rolling.h): it ends rolling at **{:.4g} m/s**{}.\n\n",
-        source_text(*any), any->metrics.value("rolling.expected_speed"), time(" from t = "));
+        source_text(*any), any->metrics.value(Metric::rolling_expected_speed), time(" from t = "));
   else
     put("`{}`, {} balls; closed forms from the scene (core/metrics/rolling.h): each ball ends rolling at its own "
         "(v0_i - k r_i w0_i) / (1 + k) (v0_i / (1 + k) without spin){}. The table shows the ball farthest from its "
@@ -67,15 +67,15 @@ void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vecto
       continue;
     }
     const MetricValues& m = r->metrics;
-    const auto speed = m.number("rolling.speed"), expected = m.number("rolling.expected_speed");
-    const auto expected_time = m.number("rolling.expected_time_to_roll"), t = m.number("slip.time_to_roll");
+    const auto speed = m.number(Metric::rolling_speed), expected = m.number(Metric::rolling_expected_speed);
+    const auto expected_time = m.number(Metric::rolling_expected_time_to_roll), t = m.number(Metric::slip_time_to_roll);
     std::string speed_error = kNoData, time_error = kNoData;
     if (speed && expected && *expected != 0) {
       const double rel = 100 * (*speed - *expected) / std::abs(*expected);
       speed_error = std::abs(rel) < 0.005 ? "0.00%" : fmt::format("{:+.2f}%", rel);  // no "-0.00%"
     }
     if (t && expected_time) time_error = fmt::format("{:+.3f} s", *t - *expected_time);
-    const auto slip = m.number("slip.final_max");
+    const auto slip = m.number(Metric::slip_final_max);
     put("| {} | {} | {} | {} |{} {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r),
         or_none(speed, "{:.4f}"), one ? "" : fmt::format(" {} |", or_none(expected, "{:.4f}")), speed_error,
         t ? fmt::format("{:.2f}", *t) : "never", time_error, slip ? fmt::format("{:.2g}", *slip) : kNoData);
@@ -111,12 +111,12 @@ void put_repose(MarkdownBuffer& put, const std::vector<std::string>& scenes,
       }
       const Result& r = **it;
       if (!ran(r) || r.status != RunStatus::ok) {
-        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.metrics.number("angle_of_repose"), "{:.1f}"))
+        put(" {} |", ran(r) ? fmt::format("{} (at the end: {})", run_status_text(r.status), or_none(r.metrics.number(Metric::angle_of_repose), "{:.1f}"))
                    : std::string(run_status_text(r.status)));
         if (!r.error.empty()) notes.push_back(fmt::format("{} on `{}`: {}", label, scenes[k], markdown_cell(r.error)));
         continue;
       }
-      const auto angle = r.metrics.number("angle_of_repose");
+      const auto angle = r.metrics.number(Metric::angle_of_repose);
       put(" {} |", angle ? fmt::format("{:.1f}", *angle) : "none");
     }
     put("\n");
@@ -135,11 +135,11 @@ std::string friction_section(const std::vector<Result>& results, const std::vect
   for (const std::string& scene : scene_order)
     for (const Result& r : results) {
       if (r.scene != scene) continue;
-      if (r.metrics.has("rolling.expected_speed")) add_once(rolling, scene);
+      if (r.metrics.has(Metric::rolling_expected_speed)) add_once(rolling, scene);
       const bool unmeasured = std::any_of(r.skipped.begin(), r.skipped.end(), [](const std::string& note) {
         return note.starts_with(kReposeUnmeasuredNote);
       });
-      if (r.metrics.has("angle_of_repose") || unmeasured) add_once(repose, scene);
+      if (r.metrics.has(Metric::angle_of_repose) || unmeasured) add_once(repose, scene);
     }
   if (rolling.empty() && repose.empty()) return "";
   const auto rows = [&](const std::string& scene) {

@@ -45,8 +45,8 @@ std::string verdict(const Result& r) {
   if (r.diverged()) parts.push_back(fmt::format("diverged at step {} ({})", r.diverged_step, r.error));
   if (!r.clamped.empty()) parts.push_back("clamped: " + r.clamped);
   const auto& m = r.metrics;
-  const long tunnel_wall = m.count("tunnelling.wall"), tunnel_pair = m.count("tunnelling.pair");
-  const long stick_wall = m.count("sticking.wall"), stick_pair = m.count("sticking.pair");
+  const long tunnel_wall = m.count(Metric::tunnelling_wall), tunnel_pair = m.count(Metric::tunnelling_pair);
+  const long stick_wall = m.count(Metric::sticking_wall), stick_pair = m.count(Metric::sticking_pair);
   const long tunnels = m.tunnelled(), sticks = m.stuck();
   parts.push_back(tunnels ? fmt::format("tunnelled {} ({} through walls, {} through balls)", times(tunnels),
                                         tunnel_wall, tunnel_pair)
@@ -54,7 +54,7 @@ std::string verdict(const Result& r) {
   parts.push_back(sticks ? fmt::format("got stuck {} ({} in walls, {} in balls)", times(sticks), stick_wall, stick_pair)
                          : "no sticking");
   // Only where energy should be kept: with restitution below 1 the loss is the scene's physics.
-  if (const auto drift = m.number("energy.max_rel_drift"); drift && r.scene_features && r.scene_features->elastic)
+  if (const auto drift = m.number(Metric::energy_max_rel_drift); drift && r.scene_features && r.scene_features->elastic)
     parts.push_back(fmt::format("energy drifted by up to {:.2g}%", 100 * *drift));
   return fmt::format("{}", fmt::join(parts, "; "));
 }
@@ -242,7 +242,7 @@ std::string results_file(const ReportInputs& in, const std::string& scene) {
 void put_initial_overlap(MarkdownBuffer& put, const std::vector<const Result*>& rows) {
   std::vector<double> initial;
   for (const Result* r : rows)
-    if (r->measured()) initial.push_back(r->metrics.value("penetration.initial"));
+    if (r->measured()) initial.push_back(r->metrics.value(Metric::penetration_initial));
   if (initial.empty()) return;
   const auto [lo, hi] = std::minmax_element(initial.begin(), initial.end());
   if (*hi <= rows.front()->metrics_config.contact_tolerance) return;

@@ -66,13 +66,13 @@ nlohmann::json run_json(const Result& r) {
           {"frames", std::move(frames)},
           {"t", r.series.t},
           {"energy", std::move(energy)},
-          {"e0", r.metrics.value("energy.initial")},
+          {"e0", r.metrics.value(Metric::energy_initial)},
           {"events", std::move(events)},
           {"totals",
-           {{"tunnel-wall", r.metrics.count("tunnelling.wall")},
-            {"tunnel-pair", r.metrics.count("tunnelling.pair")},
-            {"stick-wall", r.metrics.count("sticking.wall")},
-            {"stick-pair", r.metrics.count("sticking.pair")}}}};
+           {{"tunnel-wall", r.metrics.count(Metric::tunnelling_wall)},
+            {"tunnel-pair", r.metrics.count(Metric::tunnelling_pair)},
+            {"stick-wall", r.metrics.count(Metric::sticking_wall)},
+            {"stick-pair", r.metrics.count(Metric::sticking_pair)}}}};
 }
 
 std::vector<std::string> track_colours() {

@@ -141,28 +141,28 @@ TEST(Judge, MeetsOnlyWhenEveryBoundTermIsWithinIt) {
   spec[SpecTerm::tunnelling] = 0;
   spec[SpecTerm::rest_speed] = 0.001;
   Result r = ok_run();
-  r.metrics.set("penetration.max", 0.5);  // the placement's, not judged
-  r.metrics.set("penetration.after_start", 0.008);
-  r.metrics.set("jitter", 1e-4);
+  r.metrics.set(Metric::penetration_max, 0.5);  // the placement's, not judged
+  r.metrics.set(Metric::penetration_after_start, 0.008);
+  r.metrics.set(Metric::jitter, 1e-4);
   SpecVerdict v = judge(spec, r);
   EXPECT_TRUE(v.met) << v.why_not;
   EXPECT_EQ(v.figures["overlap"], 0.008);
 
-  r.metrics.set("penetration.after_start", 0.02);
-  r.metrics.set("tunnelling.pair", 1);
+  r.metrics.set(Metric::penetration_after_start, 0.02);
+  r.metrics.set(Metric::tunnelling_pair, 1);
   v = judge(spec, r);
   EXPECT_FALSE(v.met);
   EXPECT_EQ(v.why_not, "overlap 0.02 > 0.01; tunnelling 1 > 0");
 
   r = ok_run();
-  r.metrics.set("jitter", nullptr);  // a term the run did not measure fails, never passes
+  r.metrics.set(Metric::jitter, nullptr);  // a term the run did not measure fails, never passes
   v = judge(spec, r);
   EXPECT_FALSE(v.met);
   EXPECT_EQ(v.why_not, "rest_speed not measured");
   EXPECT_TRUE(v.figures["rest_speed"].is_null());
 
   r = ok_run();
-  r.metrics.set("jitter", 0);
+  r.metrics.set(Metric::jitter, 0);
   r.status = RunStatus::diverged;
   r.error = "a ball left the container";
   EXPECT_FALSE(judge(spec, r).met);

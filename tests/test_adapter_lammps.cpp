@@ -146,10 +146,10 @@ TEST(LammpsAdapter, ElasticBoxKeepsItsEnergy) {
     o.profile = profile;
     const Result r = run_engine(s, find_engine("lammps"), o);
     ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-    ASSERT_TRUE(r.metrics.number("energy.max_rel_drift"));
-    const double drift = std::abs(r.metrics.value("energy.final") - r.metrics.value("energy.initial")) / r.metrics.value("energy.initial");
+    ASSERT_TRUE(r.metrics.number(Metric::energy_max_rel_drift));
+    const double drift = std::abs(r.metrics.value(Metric::energy_final) - r.metrics.value(Metric::energy_initial)) / r.metrics.value(Metric::energy_initial);
     std::printf("lammps/%s elastic box: final energy drift %.3g, max over samples %.3g, wall tunnelling %ld\n", profile,
-                drift, *r.metrics.number("energy.max_rel_drift"), r.metrics.count("tunnelling.wall"));
+                drift, *r.metrics.number(Metric::energy_max_rel_drift), r.metrics.count(Metric::tunnelling_wall));
     EXPECT_LT(drift, 1e-4) << profile;
   }
 }
@@ -240,22 +240,22 @@ TEST(LammpsAdapter, TwoRanksAgreeWithOne) {
   const Result two = run_engine(s, find_engine("lammps"), o);
   ASSERT_EQ(one.status, RunStatus::ok) << one.error;
   ASSERT_EQ(two.status, RunStatus::ok) << two.error;
-  EXPECT_EQ(two.metrics.count("samples"), 5);  // steps 0, 5, 10, 15, 20
+  EXPECT_EQ(two.metrics.count(Metric::samples), 5);  // steps 0, 5, 10, 15, 20
   EXPECT_EQ(two.metrics_config.sample_every, 5);
   EXPECT_NE(std::find_if(two.skipped.begin(), two.skipped.end(),
                          [](const std::string& note) { return note.rfind(kStrideNote, 0) == 0; }),
             two.skipped.end());
   const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(1.0, std::abs(a)); };
-  EXPECT_TRUE(near(one.metrics.value("energy.final"), two.metrics.value("energy.final")))
-      << one.metrics.value("energy.final") << " vs " << two.metrics.value("energy.final");
-  EXPECT_TRUE(near(one.metrics.value("energy.max_abs_drift"), two.metrics.value("energy.max_abs_drift")));
-  EXPECT_TRUE(near(one.metrics.vec("momentum.final").x(), two.metrics.vec("momentum.final").x()));
-  EXPECT_TRUE(near(one.metrics.vec("momentum.final").y(), two.metrics.vec("momentum.final").y()));
-  EXPECT_TRUE(near(one.metrics.value("penetration.max"), two.metrics.value("penetration.max")));
-  EXPECT_EQ(one.metrics.count("tunnelling.wall") + one.metrics.count("tunnelling.pair"), two.metrics.count("tunnelling.wall") + two.metrics.count("tunnelling.pair"));
-  EXPECT_EQ(one.metrics.count("sticking.wall") + one.metrics.count("sticking.pair"), two.metrics.count("sticking.wall") + two.metrics.count("sticking.pair"));
-  std::printf("lammps 2 ranks vs 1: energy %.17g vs %.17g, checksums %s\n", two.metrics.value("energy.final"),
-              one.metrics.value("energy.final"), one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
+  EXPECT_TRUE(near(one.metrics.value(Metric::energy_final), two.metrics.value(Metric::energy_final)))
+      << one.metrics.value(Metric::energy_final) << " vs " << two.metrics.value(Metric::energy_final);
+  EXPECT_TRUE(near(one.metrics.value(Metric::energy_max_abs_drift), two.metrics.value(Metric::energy_max_abs_drift)));
+  EXPECT_TRUE(near(one.metrics.vec(Metric::momentum_final).x(), two.metrics.vec(Metric::momentum_final).x()));
+  EXPECT_TRUE(near(one.metrics.vec(Metric::momentum_final).y(), two.metrics.vec(Metric::momentum_final).y()));
+  EXPECT_TRUE(near(one.metrics.value(Metric::penetration_max), two.metrics.value(Metric::penetration_max)));
+  EXPECT_EQ(one.metrics.count(Metric::tunnelling_wall) + one.metrics.count(Metric::tunnelling_pair), two.metrics.count(Metric::tunnelling_wall) + two.metrics.count(Metric::tunnelling_pair));
+  EXPECT_EQ(one.metrics.count(Metric::sticking_wall) + one.metrics.count(Metric::sticking_pair), two.metrics.count(Metric::sticking_wall) + two.metrics.count(Metric::sticking_pair));
+  std::printf("lammps 2 ranks vs 1: energy %.17g vs %.17g, checksums %s\n", two.metrics.value(Metric::energy_final),
+              one.metrics.value(Metric::energy_final), one.checksum_trajectory == two.checksum_trajectory ? "equal" : "different");
 }
 
 TEST(LammpsAdapter, IsDeterministic) {

@@ -245,18 +245,18 @@ TEST(RollingMeter, ReportsTheBallFarthestFromItsClosedForm) {
   Result r;
   r.metrics = meters.values();
   r.steps_done = 100;
-  EXPECT_DOUBLE_EQ(*r.metrics.number("rolling.speed"), 1.02);
-  EXPECT_DOUBLE_EQ(*r.metrics.number("rolling.expected_speed"), 1.0);
-  EXPECT_NEAR(*r.metrics.number("rolling.error"), 0.02, 1e-12);
-  EXPECT_NEAR(*r.metrics.number("rolling.expected_time_to_roll"), std::sqrt(2 * 0.5 / 9.81), 1e-12);
-  EXPECT_EQ(spec_figure(SpecTerm::rolling, r), r.metrics.number("rolling.error"));
+  EXPECT_DOUBLE_EQ(*r.metrics.number(Metric::rolling_speed), 1.02);
+  EXPECT_DOUBLE_EQ(*r.metrics.number(Metric::rolling_expected_speed), 1.0);
+  EXPECT_NEAR(*r.metrics.number(Metric::rolling_error), 0.02, 1e-12);
+  EXPECT_NEAR(*r.metrics.number(Metric::rolling_expected_time_to_roll), std::sqrt(2 * 0.5 / 9.81), 1e-12);
+  EXPECT_EQ(spec_figure(SpecTerm::rolling, r), r.metrics.number(Metric::rolling_error));
   // The other way round, ball 0 is the farther, and below the ball that is exact.
   end.vel(0, 0) = 1.9, end.vel(1, 0) = 1.0;
   MeterSet again(s, {});
   again.final_state(end);
-  EXPECT_DOUBLE_EQ(*again.values().number("rolling.speed"), 1.9);
-  EXPECT_DOUBLE_EQ(*again.values().number("rolling.expected_speed"), 2.0);
-  EXPECT_NEAR(*again.values().number("rolling.error"), 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(*again.values().number(Metric::rolling_speed), 1.9);
+  EXPECT_DOUBLE_EQ(*again.values().number(Metric::rolling_expected_speed), 2.0);
+  EXPECT_NEAR(*again.values().number(Metric::rolling_error), 0.05, 1e-12);
 }
 
 // A ball whose closed form is 0 (at rest on the floor) has no relative error: the scene's error is
@@ -270,8 +270,8 @@ TEST(RollingMeter, AClosedFormOfZeroLeavesTheErrorNone) {
   MeterSet meters(s, {});
   meters.final_state(end);
   const MetricValues v = meters.values();
-  EXPECT_FALSE(v.number("rolling.error"));
-  EXPECT_DOUBLE_EQ(*v.number("rolling.expected_speed"), 0.0);  // the ball that has none
+  EXPECT_FALSE(v.number(Metric::rolling_error));
+  EXPECT_DOUBLE_EQ(*v.number(Metric::rolling_expected_speed), 0.0);  // the ball that has none
 }
 
 std::string error_of(const std::string& text) {
@@ -329,13 +329,13 @@ TEST(RequestedMetrics, AreComputedOnlyWhereAsked) {
   RunOptions o;
   const Result roll = run_engine(load_scene("slide-to-roll"), find_engine("box2d"), o);
   ASSERT_EQ(roll.status, RunStatus::ok) << roll.error;
-  ASSERT_TRUE(roll.metrics.number("rolling.speed") && roll.metrics.number("rolling.expected_speed") && roll.metrics.number("rolling.expected_time_to_roll"));
-  EXPECT_NEAR(*roll.metrics.number("rolling.speed"), 2.0, 0.005 * 2.0);
-  ASSERT_TRUE(roll.metrics.number("rolling.error"));
-  EXPECT_DOUBLE_EQ(*roll.metrics.number("rolling.error"), std::abs(*roll.metrics.number("rolling.speed") - 2.0) / 2.0);
-  EXPECT_FALSE(roll.metrics.number("angle_of_repose"));
+  ASSERT_TRUE(roll.metrics.number(Metric::rolling_speed) && roll.metrics.number(Metric::rolling_expected_speed) && roll.metrics.number(Metric::rolling_expected_time_to_roll));
+  EXPECT_NEAR(*roll.metrics.number(Metric::rolling_speed), 2.0, 0.005 * 2.0);
+  ASSERT_TRUE(roll.metrics.number(Metric::rolling_error));
+  EXPECT_DOUBLE_EQ(*roll.metrics.number(Metric::rolling_error), std::abs(*roll.metrics.number(Metric::rolling_speed) - 2.0) / 2.0);
+  EXPECT_FALSE(roll.metrics.number(Metric::angle_of_repose));
   const Result plain = run_engine(load_scene("corridor"), find_engine("box2d"), o);
-  EXPECT_FALSE(plain.metrics.number("rolling.speed") || plain.metrics.number("rolling.expected_speed") || plain.metrics.number("angle_of_repose"));
+  EXPECT_FALSE(plain.metrics.number(Metric::rolling_speed) || plain.metrics.number(Metric::rolling_expected_speed) || plain.metrics.number(Metric::angle_of_repose));
 }
 
 }  // namespace

@@ -15,12 +15,12 @@ namespace {
 
 Result rolling_run(std::string engine, std::string scene, int n, double speed, double expected) {
   Result r = made_run(std::move(engine), std::move(scene), n, 150);
-  r.metrics.set("rolling.speed", speed);
-  r.metrics.set("rolling.expected_speed", expected);
-  r.metrics.set("rolling.error", std::abs(speed - expected) / std::abs(expected));
-  r.metrics.set("rolling.expected_time_to_roll", 0.204);
-  r.metrics.set("slip.time_to_roll", 0.21);
-  r.metrics.set("slip.final_max", 0.0);
+  r.metrics.set(Metric::rolling_speed, speed);
+  r.metrics.set(Metric::rolling_expected_speed, expected);
+  r.metrics.set(Metric::rolling_error, std::abs(speed - expected) / std::abs(expected));
+  r.metrics.set(Metric::rolling_expected_time_to_roll, 0.204);
+  r.metrics.set(Metric::slip_time_to_roll, 0.21);
+  r.metrics.set(Metric::slip_final_max, 0.0);
   return r;
 }
 

@@ -22,7 +22,7 @@ double runout_of(const Scene& scene, const char* engine, const char* profile) {
   o.profile = profile;
   const Result r = run_engine(scene, find_engine(engine), o);
   EXPECT_EQ(r.status, RunStatus::ok) << engine << "/" << profile << ": " << r.error;
-  const auto length = r.metrics.number("runout");
+  const auto length = r.metrics.number(Metric::runout);
   EXPECT_TRUE(length) << engine << "/" << profile;
   return length ? *length : NAN;
 }

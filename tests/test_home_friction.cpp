@@ -192,10 +192,10 @@ TEST(HomeSoftPath, RollsAtTheClosedFormSpeed) {
 TEST(HomeRoughBox, NeitherTunnelsNorGainsEnergy) {
   const Result r = run_engine(load_scene("rough-box"), find_engine("home"), {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-  EXPECT_EQ(r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair"), 0);
-  EXPECT_EQ(r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair"), 0);
-  EXPECT_LE(r.metrics.value("energy.final"), r.metrics.value("energy.initial"));
-  EXPECT_LT(r.metrics.value("penetration.max"), 0.01);
+  EXPECT_EQ(r.metrics.count(Metric::tunnelling_wall) + r.metrics.count(Metric::tunnelling_pair), 0);
+  EXPECT_EQ(r.metrics.count(Metric::sticking_wall) + r.metrics.count(Metric::sticking_pair), 0);
+  EXPECT_LE(r.metrics.value(Metric::energy_final), r.metrics.value(Metric::energy_initial));
+  EXPECT_LT(r.metrics.value(Metric::penetration_max), 0.01);
 }
 
 }  // namespace

@@ -404,7 +404,7 @@ TEST(Isolation, ASlowRunStopsAtItsTimeLimitKeepingItsSteps) {
   EXPECT_NE(r.error.find("the time limit passed after step"), std::string::npos) << r.error;
   EXPECT_GT(r.steps_done, 0);
   EXPECT_LT(r.steps_done, r.steps);
-  EXPECT_EQ(r.metrics.count("samples"), r.steps_done + 1);
+  EXPECT_EQ(r.metrics.count(Metric::samples), r.steps_done + 1);
 }
 
 TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {
@@ -412,7 +412,7 @@ TEST(Isolation, AnEngineExceptionIsStillAFailureNotACrash) {
   EXPECT_EQ(r.status, RunStatus::failed);
   EXPECT_NE(r.error.find("step 5 threw: the test engine gave up"), std::string::npos) << r.error;
   EXPECT_EQ(r.steps_done, 4);  // the metrics of the steps before are kept
-  EXPECT_EQ(r.metrics.count("samples"), 5);
+  EXPECT_EQ(r.metrics.count(Metric::samples), 5);
 }
 
 TEST(Isolation, BadSettingsFoundInTheChildAreTheUsersError) {
@@ -476,7 +476,7 @@ TEST(Isolation, TheComparisonCompletesAroundCrashesAndHangs) {
   EXPECT_EQ(results[4].status, RunStatus::ok);
   for (int i : {0, 4}) {
     EXPECT_EQ(results[i].steps_done, n);
-    EXPECT_EQ(results[i].metrics.count("samples"), n + 1);
+    EXPECT_EQ(results[i].metrics.count(Metric::samples), n + 1);
   }
   // One header, then (n + 1) samples x 20 balls for each complete run, none for the others.
   std::ifstream in(csv);
@@ -520,8 +520,8 @@ TEST(DivergingRun, ANonFiniteStateStopsTheRunAtThatStep) {
   EXPECT_TRUE(r.diverged());
   EXPECT_EQ(r.diverged_step, 7);
   EXPECT_EQ(r.steps_done, 6);         // the last good step
-  EXPECT_EQ(r.metrics.count("samples"), 7);    // steps 0..6: the metrics before the bad state
-  EXPECT_TRUE(std::isfinite(r.metrics.value("energy.final")));
+  EXPECT_EQ(r.metrics.count(Metric::samples), 7);    // steps 0..6: the metrics before the bad state
+  EXPECT_TRUE(std::isfinite(r.metrics.value(Metric::energy_final)));
   // The final figures come from the last good state, not from the non-finite one.
   ASSERT_FALSE(r.series.final_pos.empty());
   for (const auto& p : r.series.final_pos) EXPECT_TRUE(std::isfinite(p[0]) && std::isfinite(p[1]));
@@ -604,7 +604,7 @@ TEST(DivergingRun, EnergyBeyondTheBoundStopsTheRun) {
   EXPECT_EQ(r.diverged_step, 13);
   EXPECT_EQ(r.steps_done, 13);  // the step that crossed the bound is observed, then the run stops
   EXPECT_NE(r.error.find("energy above 100 x"), std::string::npos) << r.error;
-  EXPECT_GT(r.metrics.value("energy.final"), 100 * r.metrics.value("energy.initial"));
+  EXPECT_GT(r.metrics.value(Metric::energy_final), 100 * r.metrics.value(Metric::energy_initial));
 }
 
 TEST(DivergingRun, OneDivergingEngineLeavesTheOthersRunning) {

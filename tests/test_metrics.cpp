@@ -66,8 +66,8 @@ TEST(Momentum, DriftIsTheLargestChangeOfTheTotal) {
   m.sample(s.initial);  // P0 = (2, -12)
   m.sample(state({-1, 0, 1, 1}, {2, 0, 0, -3}));  // P = (2, -9): drift 3
   m.sample(state({-1, 0, 1, 1}, {2, 0, 0, -4}));  // back to P0
-  EXPECT_DOUBLE_EQ(m.values().value("momentum.max_abs_drift"), 3.0);
-  EXPECT_DOUBLE_EQ(m.values().vec("momentum.final").y(), -12.0);
+  EXPECT_DOUBLE_EQ(m.values().value(Metric::momentum_max_abs_drift), 3.0);
+  EXPECT_DOUBLE_EQ(m.values().vec(Metric::momentum_final).y(), -12.0);
 }
 
 // Steps through `states` as the runner does: the motion of every step, then the sample.
@@ -107,18 +107,18 @@ TEST(AngularMomentum, IsOrbitalPlusSpinAboutTheBoxCentre) {
   // spin k m r^2 w = 0.5 * 0.0625 * (1 * 4 + 3 * -2) = -0.0625.
   MeterSet m(s, {});
   m.sample(s.initial);
-  EXPECT_EQ(m.values().vec("angular_momentum.centre"), Eigen::Vector2d(0, 0));
-  EXPECT_DOUBLE_EQ(m.values().value("angular_momentum.initial"), -12.0625);
+  EXPECT_EQ(m.values().vec(Metric::angular_momentum_centre), Eigen::Vector2d(0, 0));
+  EXPECT_DOUBLE_EQ(m.values().value(Metric::angular_momentum_initial), -12.0625);
   // Spin traded for orbit at the same total: no drift; then a change of 1 is one.
   State t = s.initial;
   t.vel(0, 1) = 0.0625;  // ball 0 at x = -1: x vy m = -0.0625, what the spins held
   t.w.setZero();
   m.sample(t);
-  EXPECT_NEAR(m.values().value("angular_momentum.max_abs_drift"), 0.0, 1e-15);
+  EXPECT_NEAR(m.values().value(Metric::angular_momentum_max_abs_drift), 0.0, 1e-15);
   t.vel(1, 0) = -1.0;  // - y vx m = -1 * -1 * 3 = +3
   m.sample(t);
-  EXPECT_NEAR(m.values().value("angular_momentum.max_abs_drift"), 3.0, 1e-12);
-  EXPECT_NEAR(m.values().value("angular_momentum.final"), -9.0625, 1e-12);
+  EXPECT_NEAR(m.values().value(Metric::angular_momentum_max_abs_drift), 3.0, 1e-12);
+  EXPECT_NEAR(m.values().value(Metric::angular_momentum_final), -9.0625, 1e-12);
 }
 
 TEST(Slip, IsZeroForARollingBallAndTimesTheRoll) {
@@ -130,26 +130,26 @@ TEST(Slip, IsZeroForARollingBallAndTimesTheRoll) {
   a.vel.row(0) << 2.0, 0.0, a.vel.row(1) << 0.0, 1.0;
   a.w << -8.0 + 0.4, 4.0;  // floor: |-vx - w r| = |-2 + 1.9| = 0.1; right wall: |-vy - w r| = |-1 - 1| = 2
   m.sample(a);
-  EXPECT_TRUE(m.values().has("slip.final_max"));
-  EXPECT_NEAR(m.values().value("slip.final_max"), 2.0, 1e-12);
-  EXPECT_FALSE(m.values().number("slip.time_to_roll"));
+  EXPECT_TRUE(m.values().has(Metric::slip_final_max));
+  EXPECT_NEAR(m.values().value(Metric::slip_final_max), 2.0, 1e-12);
+  EXPECT_FALSE(m.values().number(Metric::slip_time_to_roll));
   a.t = 0.5, a.w << -8.0, -4.0;  // both roll: floor -2 + 2, wall -1 + 1
   m.sample(a);
-  EXPECT_EQ(m.values().value("slip.final_max"), 0.0);
-  ASSERT_TRUE(m.values().number("slip.time_to_roll"));
-  EXPECT_EQ(*m.values().number("slip.time_to_roll"), 0.5);
+  EXPECT_EQ(m.values().value(Metric::slip_final_max), 0.0);
+  ASSERT_TRUE(m.values().number(Metric::slip_time_to_roll));
+  EXPECT_EQ(*m.values().number(Metric::slip_time_to_roll), 0.5);
   a.t = 0.6, a.pos(1, 0) = 0.0;  // ball 1 leaves the wall: its spin no longer counts
   a.w(1) = 100.0;
   m.sample(a);
-  EXPECT_EQ(*m.values().number("slip.time_to_roll"), 0.5);
+  EXPECT_EQ(*m.values().number(Metric::slip_time_to_roll), 0.5);
   a.t = 0.7, a.w(0) = 0.0;  // the floor ball slips again: not rolling
   m.sample(a);
-  EXPECT_FALSE(m.values().number("slip.time_to_roll"));
+  EXPECT_FALSE(m.values().number(Metric::slip_time_to_roll));
   // A scene that does not rotate measures none.
   const Scene still = two_balls();  // the accumulator keeps a reference to its scene
   MeterSet plain(still, {});
   plain.sample(still.initial);
-  EXPECT_FALSE(plain.values().has("slip.final_max"));
+  EXPECT_FALSE(plain.values().has(Metric::slip_final_max));
 }
 
 TEST(Tunnelling, AnInjectedWallEscapeCountsOne) {
@@ -158,7 +158,7 @@ TEST(Tunnelling, AnInjectedWallEscapeCountsOne) {
   feed(m, {s.initial, state({-1, 0, 1, -4.9}, {0, 0, 0, 0}),
            state({-1, 0, 1, -5.2}, {0, 0, 0, 0}),    // centre beyond the floor
            state({-1, 0, 1, -5.3}, {0, 0, 0, 0})});  // still beyond: the same escape
-  EXPECT_EQ(m.values().count("tunnelling.wall"), 1);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_wall), 1);
 }
 
 TEST(Tunnelling, AnInjectedPassThroughCountsOne) {
@@ -166,8 +166,8 @@ TEST(Tunnelling, AnInjectedPassThroughCountsOne) {
   MeterSet m(s, {});
   // Swapped places without ever overlapping in a sample.
   feed(m, {state({-1, 0, 1, 0}, {0, 0, 0, 0}), state({1, 0, -1, 0}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.values().count("tunnelling.pair"), 1);
-  EXPECT_EQ(m.values().count("sticking.pair"), 0);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_pair), 1);
+  EXPECT_EQ(m.values().count(Metric::sticking_pair), 0);
 }
 
 TEST(Tunnelling, OnlyTheMotionCounts) {
@@ -176,7 +176,7 @@ TEST(Tunnelling, OnlyTheMotionCounts) {
   MeterSet m(s, {});
   m.sample(state({-1, 0, 1, 0}, {0, 0, 0, 0}));
   m.sample(state({1, 0, -1, 0}, {0, 0, 0, 0}));
-  EXPECT_EQ(m.values().count("tunnelling.pair"), 0);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_pair), 0);
 }
 
 TEST(Tunnelling, AResolvedBounceDoesNotCount) {
@@ -185,7 +185,7 @@ TEST(Tunnelling, AResolvedBounceDoesNotCount) {
   const Scene s = two_balls();
   MeterSet m(s, {});
   feed(m, {state({-0.6, 0, 0, 0.3}, {0, 0, 0, 0}), state({-0.6, 0, 0, 0.35}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.values().count("tunnelling.pair"), 0);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_pair), 0);
 }
 
 TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
@@ -197,13 +197,13 @@ TEST(Tunnelling, TheSearchSkipsNoPassThroughThatCounts) {
   MeterSet m(s, {});
   feed(m, {state({-half / 2, b / 2, half / 2, -b / 2}, {0, 0, 0, 0}),
            state({half / 2, b / 2, -half / 2, -b / 2}, {0, 0, 0, 0})});
-  EXPECT_EQ(m.values().count("tunnelling.pair"), 1);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_pair), 1);
   // The same pass just outside 98%: not counted.
   MeterSet wide(s, {});
   const double b2 = 0.981 * rs, half2 = 1.0001 * std::sqrt(rs * rs - b2 * b2);
   feed(wide, {state({-half2 / 2, b2 / 2, half2 / 2, -b2 / 2}, {0, 0, 0, 0}),
               state({half2 / 2, b2 / 2, -half2 / 2, -b2 / 2}, {0, 0, 0, 0})});
-  EXPECT_EQ(wide.values().count("tunnelling.pair"), 0);
+  EXPECT_EQ(wide.values().count(Metric::tunnelling_pair), 0);
 }
 
 // The definition of tunnelling.h (passes_through) over every pair: the reference the search must
@@ -475,7 +475,7 @@ TEST(Tunnelling, ANonFiniteStateCountsNothing) {
   after.vel(0, 1) = 0, after.pos(1, 0) = std::numeric_limits<double>::infinity();
   m.motion(before, after);
   EXPECT_EQ(m.stop_after_motion(), non_finite);
-  EXPECT_EQ(m.values().count("tunnelling.wall"), 0);
+  EXPECT_EQ(m.values().count(Metric::tunnelling_wall), 0);
   // On two parts (one ball each): an escape in each part counts twice, a NaN in the first part
   // makes the whole step non-finite.
   TunnellingCheck check(s.radius, s.container, 0.02, 2);
@@ -493,14 +493,14 @@ TEST(Sticking, APairHeldOverlappingKPlusOneSamplesCountsOne) {
   m.sample(s.initial);
   const State overlapping = state({0, 0, 0.4, 0}, {0, 0, 0, 0});  // depth 0.1 = 20% of the radius sum
   for (int k = 0; k < cfg.stuck_samples; ++k) m.sample(overlapping);
-  EXPECT_EQ(m.values().count("sticking.pair"), 0);  // K samples: not yet stuck
+  EXPECT_EQ(m.values().count(Metric::sticking_pair), 0);  // K samples: not yet stuck
   m.sample(overlapping);
-  EXPECT_EQ(m.values().count("sticking.pair"), 1);
+  EXPECT_EQ(m.values().count(Metric::sticking_pair), 1);
   for (int k = 0; k < 5; ++k) m.sample(overlapping);
-  EXPECT_EQ(m.values().count("sticking.pair"), 1);  // the same episode
+  EXPECT_EQ(m.values().count(Metric::sticking_pair), 1);  // the same episode
   m.sample(s.initial);
   for (int k = 0; k <= cfg.stuck_samples; ++k) m.sample(overlapping);
-  EXPECT_EQ(m.values().count("sticking.pair"), 2);  // a new episode
+  EXPECT_EQ(m.values().count(Metric::sticking_pair), 2);  // a new episode
 }
 
 TEST(Sticking, ABallHeldInAWallCountsOne) {
@@ -510,7 +510,7 @@ TEST(Sticking, ABallHeldInAWallCountsOne) {
   MeterSet m(s, cfg);
   m.sample(s.initial);
   for (int k = 0; k < 3; ++k) m.sample(state({-4.9, 0, 1, 1}, {0, 0, 0, 0}));  // 0.15 deep in the left wall
-  EXPECT_EQ(m.values().count("sticking.wall"), 1);
+  EXPECT_EQ(m.values().count(Metric::sticking_wall), 1);
 }
 
 TEST(Penetration, MaxAndMeanAreRelativeToTheRadius) {
@@ -518,8 +518,8 @@ TEST(Penetration, MaxAndMeanAreRelativeToTheRadius) {
   MeterSet m(s, {});
   m.sample(state({0, 0, 0.45, 0}, {0, 0, 0, 0}));   // depth 0.05 -> 0.2
   m.sample(state({0, 0, 0.4, 0}, {0, 0, 0, 0}));    // depth 0.1 -> 0.4
-  EXPECT_NEAR(m.values().value("penetration.max"), 0.4, 1e-12);
-  EXPECT_NEAR(m.values().value("penetration.mean"), 0.3, 1e-12);
+  EXPECT_NEAR(m.values().value(Metric::penetration_max), 0.4, 1e-12);
+  EXPECT_NEAR(m.values().value(Metric::penetration_mean), 0.3, 1e-12);
 }
 
 TEST(Divergence, EnergyFarAboveTheStartIsABlowUp) {

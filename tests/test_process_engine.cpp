@@ -92,8 +92,8 @@ TEST(ProcessEngine, TheExampleEngineRunsThroughTheProtocol) {
   EXPECT_LE(*r.engine_cpu_s, *r.engine_process_s);
   EXPECT_EQ(r.cost_s(), *r.engine_cpu_s);
   // Seed-box's balls move, and the figures come from the states read back.
-  EXPECT_GT(r.metrics.value("energy.initial"), 0);
-  EXPECT_EQ(r.metrics.count("samples"), 41);
+  EXPECT_GT(r.metrics.value(Metric::energy_initial), 0);
+  EXPECT_EQ(r.metrics.count(Metric::samples), 41);
 }
 
 // Runs `body` with this thread, the threads and processes it starts, and a thread that spins, all
@@ -276,8 +276,8 @@ TEST(ProcessEngine, ABatchGivesTheStatesOfSingleSteps) {
   ASSERT_EQ(b.status, RunStatus::ok) << b.error;
   EXPECT_EQ(b.settings["process"]["protocol"], 2);
   EXPECT_EQ(a.checksum_trajectory, b.checksum_trajectory);
-  EXPECT_EQ(a.metrics.count("samples"), 101);
-  EXPECT_EQ(a.metrics.value("energy.final"), b.metrics.value("energy.final"));
+  EXPECT_EQ(a.metrics.count(Metric::samples), 101);
+  EXPECT_EQ(a.metrics.value(Metric::energy_final), b.metrics.value(Metric::energy_final));
 }
 
 TEST(ProcessEngine, WhatGoesWrongInABatchFailsItsStepAndKeepsTheOnesBefore) {
@@ -855,7 +855,7 @@ radius = 0.25
   use_reference(o);
   for (const auto& [mode, x] : {std::pair{"far", 1e200}, {"far-1e150", 1e150}}) {
     const Result r = run_engine(open, misbehaving(mode), o);
-    EXPECT_EQ(r.metrics.count("tunnelling.pair"), 2) << mode << ": " << r.status << ": " << r.error;
+    EXPECT_EQ(r.metrics.count(Metric::tunnelling_pair), 2) << mode << ": " << r.status << ": " << r.error;
     ASSERT_TRUE(r.reference.available);
     EXPECT_TRUE(std::isfinite(r.reference.pos_rms_max)) << mode << ": " << r.reference.pos_rms_max;
     EXPECT_GT(r.reference.pos_rms_max, 0.5 * x) << mode;

@@ -24,7 +24,7 @@ Result energy_run(const std::string& engine, RunStatus status, long steps_done, 
   r.engine = engine, r.profile = "default", r.engine_version = "1", r.scene = "s", r.n = 1, r.dt = 0.01;
   r.steps = 300, r.steps_done = steps_done, r.status = status, r.diverged_step = diverged_step;
   for (long k = 0; k <= steps_done; k += 50) r.series.t.push_back(k * r.dt), r.series.energy.push_back(1.0);
-  r.metrics.set("energy.initial", 1.0);
+  r.metrics.set(Metric::energy_initial, 1.0);
   return r;
 }
 

@@ -27,9 +27,9 @@ Result run(std::string engine, std::string scene, const SceneFeatures& f, double
   Result r = made_run(std::move(engine), std::move(scene));
   r.scene_features = f;
   r.ns_per_ball_step = ns, r.ns_per_step = 20 * ns;
-  r.metrics.set("energy.initial", 10), r.metrics.set("energy.final", 5), r.metrics.set("energy.max_rel_drift", 0.5);
-  r.metrics.set("momentum.max_abs_drift", 3);
-  r.metrics.set("samples", 101);
+  r.metrics.set(Metric::energy_initial, 10), r.metrics.set(Metric::energy_final, 5), r.metrics.set(Metric::energy_max_rel_drift, 0.5);
+  r.metrics.set(Metric::momentum_max_abs_drift, 3);
+  r.metrics.set(Metric::samples, 101);
   return r;
 }
 
@@ -112,7 +112,7 @@ TEST(ReportSections, AChaoticSceneRanksByTheHorizonNotTheFinalError) {
 TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
   const SceneFeatures bowl = features(true, true, false);
   Result fast_but_broken = run("seed", "bowl", bowl, 1);
-  fast_but_broken.metrics.set("tunnelling.pair", 360);
+  fast_but_broken.metrics.set(Metric::tunnelling_pair, 360);
   Result diverged = run("wild", "bowl", bowl, 0.5);
   diverged.status = RunStatus::diverged, diverged.diverged_step = 40, diverged.steps_done = 40;
   Result refused = run("lazy", "bowl", bowl, 0);
@@ -140,8 +140,8 @@ TEST(ReportSections, BestIsMarkedOnlyWhereARankingMeansSomething) {
 TEST(ReportSections, ThePlacementsOverlapIsSaidApartFromTheEnginesPenetration) {
   const SceneFeatures box = features(true, false, true);
   std::vector<Result> runs = {run("a", "box", box, 10), run("b", "box", box, 20)};
-  for (Result& r : runs) r.metrics.set("penetration.initial", 0.472), r.metrics.set("penetration.max", 0.472);
-  runs[0].metrics.set("penetration.after_start", 0.01), runs[1].metrics.set("penetration.after_start", 0.2);
+  for (Result& r : runs) r.metrics.set(Metric::penetration_initial, 0.472), r.metrics.set(Metric::penetration_max, 0.472);
+  runs[0].metrics.set(Metric::penetration_after_start, 0.01), runs[1].metrics.set(Metric::penetration_after_start, 0.2);
   const std::string scene = section(page_text(render_report(inputs(runs)), "scenes/box.md"), "## Every engine");
   EXPECT_NE(scene.find("overlapping by up to 0.472 of a radius (every engine, `penetration.initial`)"),
             std::string::npos)

@@ -21,12 +21,12 @@ Result run(const std::string& scene, const std::string& engine) {
 TEST(HomeSeed, ReproducesTheThesisBowlSticking) {
   const Result r = run("seed-bowl", "home-seed");
   EXPECT_EQ(r.status, RunStatus::ok);
-  EXPECT_GT(r.metrics.count("sticking.pair"), 0);  // the thesis: balls "stayed on top of each other"
+  EXPECT_GT(r.metrics.count(Metric::sticking_pair), 0);  // the thesis: balls "stayed on top of each other"
 }
 
 TEST(HomeSeed, ReproducesTheThesisBoxProblems) {
   const Result r = run("seed-box", "home-seed");
-  EXPECT_GT(r.metrics.count("tunnelling.wall") + r.metrics.count("sticking.wall"), 0);  // the violet ball in the wall
+  EXPECT_GT(r.metrics.count(Metric::tunnelling_wall) + r.metrics.count(Metric::sticking_wall), 0);  // the violet ball in the wall
 }
 
 class HomeOnSeedScenes : public ::testing::TestWithParam<std::string> {};
@@ -34,10 +34,10 @@ class HomeOnSeedScenes : public ::testing::TestWithParam<std::string> {};
 TEST_P(HomeOnSeedScenes, NeitherTunnelsNorSticks) {
   const Result r = run(GetParam(), "home");
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-  EXPECT_EQ(r.metrics.count("tunnelling.wall"), 0);
-  EXPECT_EQ(r.metrics.count("tunnelling.pair"), 0);
-  EXPECT_EQ(r.metrics.count("sticking.wall"), 0);
-  EXPECT_EQ(r.metrics.count("sticking.pair"), 0);
+  EXPECT_EQ(r.metrics.count(Metric::tunnelling_wall), 0);
+  EXPECT_EQ(r.metrics.count(Metric::tunnelling_pair), 0);
+  EXPECT_EQ(r.metrics.count(Metric::sticking_wall), 0);
+  EXPECT_EQ(r.metrics.count(Metric::sticking_pair), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seed, HomeOnSeedScenes, ::testing::Values("seed-box", "seed-bowl"));
@@ -52,8 +52,8 @@ TEST_P(HomeOnTheBowl, NeitherTunnelsNorSticksAtOtherSteps) {
   s.dt = GetParam();
   const Result r = run_engine(s, find_engine("home"), {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-  EXPECT_EQ(r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair"), 0);
-  EXPECT_EQ(r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair"), 0);
+  EXPECT_EQ(r.metrics.count(Metric::tunnelling_wall) + r.metrics.count(Metric::tunnelling_pair), 0);
+  EXPECT_EQ(r.metrics.count(Metric::sticking_wall) + r.metrics.count(Metric::sticking_pair), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Steps, HomeOnTheBowl, ::testing::Values(0.0025, 0.005, 0.02, 0.03));
@@ -79,8 +79,8 @@ TEST(HomeOnTheBowl, HoldsInAnyBallOrder) {
       const Result r = run_engine(s, find_engine("home"), {});
       ASSERT_EQ(r.status, RunStatus::ok) << "shuffle " << shuffle << ", dt " << dt << ": " << r.error;
       // Restitution 0.99 and resting contact only take energy out.
-      EXPECT_LT(r.metrics.value("energy.final"), r.metrics.value("energy.initial")) << "shuffle " << shuffle << ", dt " << dt;
-      EXPECT_EQ(r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair"), 0) << "shuffle " << shuffle << ", dt " << dt;
+      EXPECT_LT(r.metrics.value(Metric::energy_final), r.metrics.value(Metric::energy_initial)) << "shuffle " << shuffle << ", dt " << dt;
+      EXPECT_EQ(r.metrics.count(Metric::tunnelling_wall) + r.metrics.count(Metric::tunnelling_pair), 0) << "shuffle " << shuffle << ", dt " << dt;
     }
   }
 }

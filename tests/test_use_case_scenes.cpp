@@ -55,9 +55,9 @@ TEST(UseCaseScenes, RollingBallsEachRollOnTheirOwnClosedForm) {
   }
   const Result r = run_engine(s, find_engine("home"), {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-  EXPECT_NEAR(*r.metrics.number("rolling.expected_time_to_roll"), 3 / (3 * mu * g), 1e-15);
-  ASSERT_TRUE(r.metrics.number("rolling.error"));
-  EXPECT_LT(*r.metrics.number("rolling.error"), 1e-9);
+  EXPECT_NEAR(*r.metrics.number(Metric::rolling_expected_time_to_roll), 3 / (3 * mu * g), 1e-15);
+  ASSERT_TRUE(r.metrics.number(Metric::rolling_error));
+  EXPECT_LT(*r.metrics.number(Metric::rolling_error), 1e-9);
   const SpecVerdict v = judge(scene_spec(s), r);
   EXPECT_TRUE(v.met) << v.why_not;
 }

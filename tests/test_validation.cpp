@@ -93,10 +93,10 @@ TEST_P(Validation, ElasticGasKeepsItsEnergyAndBecomesRayleigh) {
   const Scene s = load_scene("gas");
   const Result r = run_engine(s, find_engine(GetParam()), {});
   ASSERT_EQ(r.status, RunStatus::ok) << r.error;
-  EXPECT_LT(*r.metrics.number("energy.max_rel_drift"), 1e-12);  // elastic: round-off of ~10^5 impulses
-  ASSERT_TRUE(r.metrics.has("speed_ks"));
-  EXPECT_LT(*r.metrics.number("speed_ks"), *r.metrics.number("speed_ks_critical"));  // Rayleigh not rejected at the 1% level
-  EXPECT_EQ(r.metrics.count("tunnelling.pair") + r.metrics.count("sticking.pair"), 0);
+  EXPECT_LT(*r.metrics.number(Metric::energy_max_rel_drift), 1e-12);  // elastic: round-off of ~10^5 impulses
+  ASSERT_TRUE(r.metrics.has(Metric::speed_ks));
+  EXPECT_LT(*r.metrics.number(Metric::speed_ks), *r.metrics.number(Metric::speed_ks_critical));  // Rayleigh not rejected at the 1% level
+  EXPECT_EQ(r.metrics.count(Metric::tunnelling_pair) + r.metrics.count(Metric::sticking_pair), 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(OurSolvers, Validation, ::testing::Values("exact", "home"));
@@ -105,8 +105,8 @@ TEST(Stress, BulletBallPassesNothingInOurSolvers) {
   // 1000 m/s, 10 m per step, through five balls to a wall: continuous collision must catch all.
   for (const std::string engine : {"exact", "home"}) {
     const Result r = run_engine(load_scene("bullet"), find_engine(engine), {});
-    EXPECT_EQ(r.metrics.count("tunnelling.pair") + r.metrics.count("tunnelling.wall"), 0) << engine;
-    EXPECT_LT(*r.metrics.number("energy.max_rel_drift"), 1e-12) << engine;
+    EXPECT_EQ(r.metrics.count(Metric::tunnelling_pair) + r.metrics.count(Metric::tunnelling_wall), 0) << engine;
+    EXPECT_LT(*r.metrics.number(Metric::energy_max_rel_drift), 1e-12) << engine;
   }
 }
 

@@ -95,8 +95,8 @@ mass = 1.0
 )",
                                   "fast.toml");
   const Result r = run_engine(scene, find_engine("chipmunk"), {});
-  ASSERT_EQ(r.metrics.count("tunnelling.wall"), 1) << r.status << " " << r.error;
-  ASSERT_EQ(r.metrics.count("tunnelling.pair"), 1);
+  ASSERT_EQ(r.metrics.count(Metric::tunnelling_wall), 1) << r.status << " " << r.error;
+  ASSERT_EQ(r.metrics.count(Metric::tunnelling_pair), 1);
   ASSERT_EQ(r.events.size(), 2u);
   const Event& wall = r.events[0];
   EXPECT_EQ(wall.kind, EventKind::TunnelWall);
@@ -150,7 +150,7 @@ radius = 0.25
     m.sample(next);
     s = next;
   }
-  ASSERT_EQ(m.values().count("sticking.pair"), 1);
+  ASSERT_EQ(m.values().count(Metric::sticking_pair), 1);
   ASSERT_EQ(m.events().size(), 1u);
   EXPECT_EQ(m.events()[0].kind, EventKind::StickPair);
   EXPECT_EQ(m.events()[0].step, config.stuck_samples);
@@ -168,7 +168,7 @@ radius = 0.25
     swaps.motion(a, b);
     a = b;
   }
-  EXPECT_EQ(swaps.values().count("tunnelling.pair"), steps);  // the count stays the total
+  EXPECT_EQ(swaps.values().count(Metric::tunnelling_pair), steps);  // the count stays the total
   ASSERT_EQ(swaps.events().size(), kEventsKept);
   EXPECT_EQ(swaps.events().back().step, static_cast<long>(kEventsKept));
 }
@@ -380,7 +380,7 @@ std::vector<int> rgb(const std::string& colour) {
 // What a panel's title says of its run's events: the count over the whole run, and how many the
 // page lists when it keeps fewer.
 std::string event_note(const Result& r) {
-  const long counted = r.metrics.count("tunnelling.wall") + r.metrics.count("tunnelling.pair") + r.metrics.count("sticking.wall") + r.metrics.count("sticking.pair");
+  const long counted = r.metrics.count(Metric::tunnelling_wall) + r.metrics.count(Metric::tunnelling_pair) + r.metrics.count(Metric::sticking_wall) + r.metrics.count(Metric::sticking_pair);
   std::string note = std::to_string(counted) + (counted == 1 ? " event" : " events");
   if (static_cast<long>(r.events.size()) < counted) note += ", " + std::to_string(r.events.size()) + " listed";
   return note;

@@ -39,8 +39,8 @@ Scene stressed(const Scene& base, const std::string& knob, double factor) {
 std::string stress_failure(const Result& r, double energy_tolerance) {
   if (r.status != RunStatus::ok) return run_status_text(r.status) + (r.error.empty() ? "" : ": " + r.error);
   auto count = [](int k, const char* what) { return fmt::format("{} {}{}", k, what, k == 1 ? "" : "s"); };
-  if (const long n = r.metrics.count("tunnelling.wall")) return count(n, "wall escape");
-  if (const long n = r.metrics.count("tunnelling.pair")) return count(n, "pair pass-through");
+  if (const long n = r.metrics.count(Metric::tunnelling_wall)) return count(n, "wall escape");
+  if (const long n = r.metrics.count(Metric::tunnelling_pair)) return count(n, "pair pass-through");
   if (r.reference.available && r.reference.reference_failed_step < 0 && r.reference.energy_rel_max > energy_tolerance)
     return fmt::format("energy off the reference by {:.3g}", r.reference.energy_rel_max);
   if (const auto ratio = r.metrics.energy_ratio(); ratio && *ratio > 1 + energy_tolerance)

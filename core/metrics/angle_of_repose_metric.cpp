@@ -12,7 +12,7 @@ class AngleOfReposeMeter final : public Meter {
   explicit AngleOfReposeMeter(const Scene& scene) : scene_(scene) {}
   void final_state(const State& s) override { angle_ = angle_of_repose(s, scene_), done_ = true; }
   void write(MetricValues& out) const override {
-    out.set("angle_of_repose", angle_ ? nlohmann::json(*angle_) : nlohmann::json());
+    out.set(Metric::angle_of_repose, angle_ ? nlohmann::json(*angle_) : nlohmann::json());
   }
   std::vector<std::string> notes() const override {
     if (!done_ || angle_) return {};
@@ -34,7 +34,7 @@ MetricFamily angle_of_repose_metric() {
   f.name = "angle_of_repose";
   f.order = 90;
   f.stage = MetricStage::final_state;
-  f.rows = {shown(metric_row("angle_of_repose", "deg",
+  f.rows = {shown(metric_row(Metric::angle_of_repose, "deg",
                              fixed(fmt::format(
                                  "the slope of the final heap's flanks (scenes that ask for `angle_of_repose`): the "
                                  "floor cut into columns one mean diameter wide, each column's height the top of its "

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <set>
 
 #include <fmt/format.h>
 
@@ -20,7 +19,7 @@ std::vector<MetricDef> build_catalog() {
   std::vector<MetricDef> c;
   for (const MetricFamily& f : metric_families())
     for (MetricDef m : f.rows) {
-      if (!m.get) m.get = [key = m.key](const Result& r) { return r.metrics.at(key); };
+      if (!m.get) m.get = [metric = *m.metric](const Result& r) { return r.metrics.at(metric); };
       c.push_back(std::move(m));
     }
   return c;
@@ -40,17 +39,23 @@ std::function<std::string(const MetricsConfig&)> fixed(std::string text) {
   return [text = std::move(text)](const MetricsConfig&) { return text; };
 }
 
-MetricDef metric_row(std::string key, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
+MetricDef metric_row(Metric metric, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
                      std::optional<Tolerance> regress) {
-  MetricDef m;
-  m.key = std::move(key), m.unit = std::move(unit), m.definition = std::move(definition), m.regress = regress;
+  MetricDef m = derived_row(std::move(unit), std::move(definition));
+  m.metric = metric, m.key = metric_key(metric), m.regress = regress;
   return m;
 }
 
-MetricDef count_sum_row(std::string ensemble, std::string definition, std::string a, std::string b) {
-  MetricDef m = metric_row("", "", fixed(std::move(definition)));
+MetricDef derived_row(std::string unit, std::function<std::string(const MetricsConfig&)> definition) {
+  MetricDef m;
+  m.unit = std::move(unit), m.definition = std::move(definition);
+  return m;
+}
+
+MetricDef total_row(std::string ensemble, std::string definition, long (MetricValues::*total)() const) {
+  MetricDef m = derived_row("", fixed(std::move(definition)));
   m.ensemble = std::move(ensemble);
-  m.get = [a = std::move(a), b = std::move(b)](const Result& r) { return json(r.metrics.count(a) + r.metrics.count(b)); };
+  m.get = [total](const Result& r) { return json((r.metrics.*total)()); };
   return m;
 }
 
@@ -76,16 +81,6 @@ const std::vector<MetricDef>& metric_catalog() {
   return catalog;
 }
 
-bool is_metric_key(std::string_view key) {
-  static const std::set<std::string, std::less<>> keys = [] {
-    std::set<std::string, std::less<>> k;
-    for (const MetricDef& m : metric_catalog())
-      if (!m.key.empty()) k.insert(m.key);
-    return k;
-  }();
-  return keys.contains(key);
-}
-
 std::string metric_text(const json& v) {
   if (v.is_null()) return "-";
   if (v.is_number_integer()) return fmt::format("{}", v.get<long>());
@@ -104,13 +99,13 @@ void take_metrics(const json& j, Result& r) {
   // the file's reader names by its field.
   static const MetricValues kinds = resting_values();
   for (const MetricDef& m : metric_catalog()) {
-    if (m.key.empty()) continue;
+    if (!m.metric) continue;
     const json::json_pointer p = pointer(m.key);
     if (!j.contains(p) || j.at(p).is_null()) continue;
     const json& v = j.at(p);
-    if (kinds.at(m.key).is_array()) (void)v.get<std::array<double, 2>>();
+    if (kinds.at(*m.metric).is_array()) (void)v.get<std::array<double, 2>>();
     else (void)v.get<double>();
-    r.metrics.set(m.key, v);
+    r.metrics.set(*m.metric, v);
   }
 }
 

@@ -13,6 +13,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "metrics/metric.h"
+#include "metrics/metric_values.h"
 #include "metrics/metrics_config.h"
 #include "scene.h"
 
@@ -42,8 +44,10 @@ enum class MeaningfulOn {
 bool meaningful_on(MeaningfulOn where, const SceneFeatures& f, bool chaotic = false);
 
 struct MetricDef {
-  // Dotted path in the result JSON, also the metric's name in the baseline: "energy.final"; empty
-  // for a figure the tables derive from others (E final / E0), which is not stored.
+  // The metric a meter stores, none for a figure the tables derive from others (E final / E0).
+  std::optional<Metric> metric;
+  // Its dotted path in the result JSON, also its name in the baseline (metric_key: "energy.final");
+  // empty for a derived figure, which is not stored.
   std::string key;
   std::string unit;  // "J", "kg m/s", "" for counts and ratios
   // What it means, for the report's glossary and `list --metrics`; the config gives the tolerances
@@ -65,8 +69,6 @@ struct MetricDef {
 };
 
 const std::vector<MetricDef>& metric_catalog();
-// A key of the catalog.
-bool is_metric_key(std::string_view key);
 
 // Declaring rows (the metric families' files).
 // Counts and the outcome of a run move only when its behaviour does, never by round-off.
@@ -78,12 +80,14 @@ inline constexpr Tolerance kExact{0.0, 0.0};
 inline constexpr Tolerance kReal{1e-9, 1e-12};
 // A definition that quotes no tolerance.
 std::function<std::string(const MetricsConfig&)> fixed(std::string text);
-// A row stored at `key` of the result JSON, with no column.
-MetricDef metric_row(std::string key, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
+// A row for the metric `m`, stored at its key of the result JSON, with no column.
+MetricDef metric_row(Metric m, std::string unit, std::function<std::string(const MetricsConfig&)> definition,
                      std::optional<Tolerance> regress = std::nullopt);
-// A row without a key for the seed ensembles' column `ensemble`: the sum of the counts at `a` and
-// `b` (walls and pairs together).
-MetricDef count_sum_row(std::string ensemble, std::string definition, std::string a, std::string b);
+// A row that stores nothing: its `get` derives its figure.
+MetricDef derived_row(std::string unit, std::function<std::string(const MetricsConfig&)> definition);
+// A derived row for the seed ensembles' column `ensemble`: a total of MetricValues (walls and pairs
+// together: MetricValues::tunnelled).
+MetricDef total_row(std::string ensemble, std::string definition, long (MetricValues::*total)() const);
 // The same row with its report column, its `ballbench run` heading (either may be ""), whether
 // smaller is better and where the report's scene table shows it.
 MetricDef shown(MetricDef m, std::string column, std::string heading, bool ranked,

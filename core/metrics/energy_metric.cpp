@@ -31,11 +31,11 @@ class EnergyMeter final : public Meter {
   }
 
   void write(MetricValues& out) const override {
-    out.set("energy.initial", initial_);
-    out.set("energy.final", final_);
-    out.set("energy.max_rel_drift", initial_ > 0 ? nlohmann::json(max_abs_drift_ / initial_) : nlohmann::json());
-    out.set("energy.max_abs_drift", max_abs_drift_);
-    out.set("energy.reference", reference_);
+    out.set(Metric::energy_initial, initial_);
+    out.set(Metric::energy_final, final_);
+    out.set(Metric::energy_max_rel_drift, initial_ > 0 ? nlohmann::json(max_abs_drift_ / initial_) : nlohmann::json());
+    out.set(Metric::energy_max_abs_drift, max_abs_drift_);
+    out.set(Metric::energy_reference, reference_);
   }
 
  private:
@@ -51,13 +51,13 @@ MetricFamily energy_metric() {
   f.name = "energy";
   f.order = 10;
   f.stage = MetricStage::sample;
-  MetricDef e_final_ratio = shown(metric_row("", "", fixed("the energy left at the end, E final / E0")), "E final / E0",
+  MetricDef e_final_ratio = shown(derived_row( "", fixed("the energy left at the end, E final / E0")), "E final / E0",
                                   "", false, MeaningfulOn::inelastic_scenes);
   e_final_ratio.get = [](const Result& r) {
     const auto ratio = r.metrics.energy_ratio();
     return ratio ? nlohmann::json(*ratio) : nlohmann::json(nullptr);
   };
-  MetricDef rel_drift = shown(metric_row("energy.max_rel_drift", "",
+  MetricDef rel_drift = shown(metric_row(Metric::energy_max_rel_drift, "",
                                          fixed("max over samples of |E - E0| / E0 (none when E0 = 0). Restitution "
                                                "below 1 loses energy by design, so compare engines on the same scene, "
                                                "not against zero"),
@@ -65,16 +65,16 @@ MetricFamily energy_metric() {
                               "energy drift (max rel)", "E drift", false, MeaningfulOn::elastic_scenes);
   rel_drift.ensemble = "E drift";
   f.rows = {
-      metric_row("energy.initial", "J",
+      metric_row(Metric::energy_initial, "J",
                  fixed("E0: E = sum m |v|^2 / 2 + I w^2 / 2 + m |g| h at the start, h measured from the container's "
                        "floor (from the lowest initial ball in open space), I = k m r^2 (the rotation term only for a "
                        "scene that rotates)"),
                  kReal),
-      metric_row("energy.final", "J", fixed("E at the last sample"), kReal),
+      metric_row(Metric::energy_final, "J", fixed("E at the last sample"), kReal),
       rel_drift,
       e_final_ratio,
-      metric_row("energy.max_abs_drift", "J", fixed("max over samples of |E - E0|"), kReal),
-      metric_row("energy.reference", "J/kg",
+      metric_row(Metric::energy_max_abs_drift, "J", fixed("max over samples of |E - E0|"), kReal),
+      metric_row(Metric::energy_reference, "J/kg",
                  fixed("-g . x_ref: the potential per unit mass at the height E is measured from")),
   };
   f.make = [](const Scene& scene, const MetricsConfig& config) { return std::make_unique<EnergyMeter>(scene, config); };

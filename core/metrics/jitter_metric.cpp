@@ -10,7 +10,7 @@ namespace {
 class JitterMeter final : public Meter {
  public:
   void final_state(const State& s) override { jitter_ = std::sqrt(s.vel.rowwise().squaredNorm().mean()); }
-  void write(MetricValues& out) const override { out.set("jitter", jitter_); }
+  void write(MetricValues& out) const override { out.set(Metric::jitter, jitter_); }
 
  private:
   double jitter_ = 0;
@@ -23,7 +23,7 @@ MetricFamily jitter_metric() {
   f.name = "jitter";
   f.order = 70;
   f.stage = MetricStage::final_state;
-  f.rows = {metric_row("jitter", "m/s",
+  f.rows = {metric_row(Metric::jitter, "m/s",
                        fixed("the RMS speed of the final state, for scenes with gravity and walls, where balls should "
                              "come to rest (a pile)"))};
   f.applies = [](const Scene& scene) {

@@ -41,15 +41,15 @@ std::optional<std::string> MeterSet::first_stop(const std::vector<std::unique_pt
   return std::nullopt;
 }
 
-std::optional<double> MeterSet::now(std::string_view key) const {
+MetricValues MeterSet::values_of(Metric m) const {
+  MetricValues v;
   for (const auto& [family, meter] : meters_)
     for (const MetricDef& row : family->rows)
-      if (row.key == key) {
-        MetricValues v;
+      if (row.metric == m) {
         meter->write(v);
-        return v.number(key);
+        return v;
       }
-  return std::nullopt;
+  return v;
 }
 
 void MeterSet::write(MetricValues& out) const {

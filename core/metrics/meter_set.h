@@ -29,8 +29,11 @@ class MeterSet {
   std::optional<std::string> stop_after_sample() const { return first_stop(sample_); }
   std::optional<std::string> stop_after_motion() const { return first_stop(motion_); }
 
-  // One value as measured so far (the figures' series), or none.
-  std::optional<double> now(std::string_view key) const;
+  // The values of the meter that measures `m`, as measured so far (only that meter writes, at each
+  // sample: the spec's stop and the figures' series read one or two values).
+  MetricValues values_of(Metric m) const;
+  // One value as measured so far, or none.
+  std::optional<double> now(Metric m) const { return values_of(m).number(m); }
   void write(MetricValues& out) const;
   MetricValues values() const {
     MetricValues v;

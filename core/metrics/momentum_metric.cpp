@@ -24,13 +24,13 @@ class MomentumMeter final : public Meter {
   }
 
   void write(MetricValues& out) const override {
-    out.set("momentum.initial", vec_json(p0_));
-    out.set("momentum.final", vec_json(p_));
-    out.set("momentum.max_abs_drift", p_drift_);
-    out.set("angular_momentum.centre", vec_json(centre_));
-    out.set("angular_momentum.initial", l0_);
-    out.set("angular_momentum.final", l_);
-    out.set("angular_momentum.max_abs_drift", l_drift_);
+    out.set(Metric::momentum_initial, vec_json(p0_));
+    out.set(Metric::momentum_final, vec_json(p_));
+    out.set(Metric::momentum_max_abs_drift, p_drift_);
+    out.set(Metric::angular_momentum_centre, vec_json(centre_));
+    out.set(Metric::angular_momentum_initial, l0_);
+    out.set(Metric::angular_momentum_final, l_);
+    out.set(Metric::angular_momentum_max_abs_drift, l_drift_);
   }
 
  private:
@@ -47,20 +47,20 @@ MetricFamily momentum_metric() {
   f.order = 20;
   f.stage = MetricStage::sample;
   f.rows = {
-      metric_row("momentum.initial", "kg m/s", fixed("P0: P = sum m v at the start")),
-      metric_row("momentum.final", "kg m/s", fixed("P at the last sample")),
-      shown(metric_row("momentum.max_abs_drift", "kg m/s",
+      metric_row(Metric::momentum_initial, "kg m/s", fixed("P0: P = sum m v at the start")),
+      metric_row(Metric::momentum_final, "kg m/s", fixed("P at the last sample")),
+      shown(metric_row(Metric::momentum_max_abs_drift, "kg m/s",
                        fixed("max over samples of |P - P0|. Conserved only in open space without gravity; walls and "
                              "gravity change it"),
                        kReal),
             "momentum drift (max abs)", "P drift", false, MeaningfulOn::open_space_without_gravity),
-      metric_row("angular_momentum.centre", "m",
+      metric_row(Metric::angular_momentum_centre, "m",
                  fixed("c, the fixed point angular momentum is taken about: the container's centre, or the initial "
                        "centre of mass in open space")),
-      metric_row("angular_momentum.initial", "kg m^2/s",
+      metric_row(Metric::angular_momentum_initial, "kg m^2/s",
                  fixed("L0: L = sum m (x - c) x v + I w at the start, orbital plus spin, counter-clockwise"), kReal),
-      metric_row("angular_momentum.final", "kg m^2/s", fixed("L at the last sample"), kReal),
-      shown(metric_row("angular_momentum.max_abs_drift", "kg m^2/s",
+      metric_row(Metric::angular_momentum_final, "kg m^2/s", fixed("L at the last sample"), kReal),
+      shown(metric_row(Metric::angular_momentum_max_abs_drift, "kg m^2/s",
                        fixed("max over samples of |L - L0|. Friction trades orbit for spin and keeps the sum: "
                              "conserved in open space without gravity at any friction; walls and gravity change it"),
                        kReal),

@@ -31,10 +31,10 @@ class PenetrationMeter final : public Meter {
   }
 
   void write(MetricValues& out) const override {
-    out.set("penetration.max", max_);
-    out.set("penetration.mean", count_ ? sum_ / static_cast<double>(count_) : 0.0);
-    out.set("penetration.initial", initial_);
-    out.set("penetration.after_start", after_start_);
+    out.set(Metric::penetration_max, max_);
+    out.set(Metric::penetration_mean, count_ ? sum_ / static_cast<double>(count_) : 0.0);
+    out.set(Metric::penetration_initial, initial_);
+    out.set(Metric::penetration_after_start, after_start_);
   }
 
  private:
@@ -50,23 +50,23 @@ MetricFamily penetration_metric() {
   f.name = "penetration";
   f.order = 60;
   f.stage = MetricStage::sample;
-  MetricDef max = shown(metric_row("penetration.max", "",
+  MetricDef max = shown(metric_row(Metric::penetration_max, "",
                                    fixed("the deepest overlap over every contact in every sample, divided by the "
                                          "radius (the smaller one for a pair)"),
                                    kReal),
                         "penetration max", "pen.max", true, MeaningfulOn::no_scene);
   // What the engine lets balls sink, not the placement's overlap: the ensembles' column.
-  MetricDef after_start = shown(metric_row("penetration.after_start", "",
+  MetricDef after_start = shown(metric_row(Metric::penetration_after_start, "",
                                            fixed("penetration max over every sample after the first: how deep the "
                                                  "engine lets balls sink (the accuracy spec's `overlap`)")),
                                 "penetration after start", "", true);
   after_start.ensemble = "overlap";
   f.rows = {
       max,
-      shown(metric_row("penetration.mean", "", fixed("the mean of the same over every overlapping contact in every sample"),
+      shown(metric_row(Metric::penetration_mean, "", fixed("the mean of the same over every overlapping contact in every sample"),
                        kReal),
             "penetration mean", "", true, MeaningfulOn::no_scene),
-      shown(metric_row("penetration.initial", "",
+      shown(metric_row(Metric::penetration_initial, "",
                        fixed("penetration max of the first sample alone: how deep the placement starts overlapping, "
                              "the same for every engine")),
             "initial overlap", "", false, MeaningfulOn::no_scene),

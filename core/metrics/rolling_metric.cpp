@@ -44,10 +44,10 @@ class RollingMeter final : public Meter {
 
   void write(MetricValues& out) const override {
     const bool measured = worst_ >= 0;
-    out.set("rolling.speed", measured ? nlohmann::json(speed_) : nlohmann::json());
-    out.set("rolling.expected_speed", measured ? nlohmann::json(closed_[worst_].speed) : nlohmann::json());
-    out.set("rolling.error", measured && std::isfinite(error_) ? nlohmann::json(error_) : nlohmann::json());
-    out.set("rolling.expected_time_to_roll", latest_roll_ ? nlohmann::json(*latest_roll_) : nlohmann::json());
+    out.set(Metric::rolling_speed, measured ? nlohmann::json(speed_) : nlohmann::json());
+    out.set(Metric::rolling_expected_speed, measured ? nlohmann::json(closed_[worst_].speed) : nlohmann::json());
+    out.set(Metric::rolling_error, measured && std::isfinite(error_) ? nlohmann::json(error_) : nlohmann::json());
+    out.set(Metric::rolling_expected_time_to_roll, latest_roll_ ? nlohmann::json(*latest_roll_) : nlohmann::json());
   }
 
  private:
@@ -67,25 +67,25 @@ MetricFamily rolling_metric() {
   // The closed forms are the scene's, the same in every row: the friction section states them once
   // above its table, and the scene's table leaves them to its appendix.
   f.rows = {
-      shown(metric_row("rolling.speed", "m/s",
+      shown(metric_row(Metric::rolling_speed, "m/s",
                        fixed("balls on the floor (scenes that ask for `rolling`): the velocity along x in the final "
                              "state of the ball farthest from its closed form (the largest relative error, below), "
                              "the only ball of a one-ball scene"),
                        kReal),
             "final speed (m/s)", "v.final", false),
-      shown(metric_row("rolling.expected_speed", "m/s",
+      shown(metric_row(Metric::rolling_expected_speed, "m/s",
                        fixed("the closed form that ball must end at, rolling: v_roll = (v0 - k r w0) / (1 + k) for "
                              "I = k m r^2 (its angular momentum about the contact point is kept; slide to roll: v0 / "
                              "(1 + k))"),
                        kReal),
             "closed-form speed (m/s)", "", false, MeaningfulOn::no_scene),
-      shown(metric_row("rolling.error", "",
+      shown(metric_row(Metric::rolling_error, "",
                        fixed("the largest relative error of a ball's final velocity along x against its own closed "
                              "form, |v - v_roll| / |v_roll| over the balls (the accuracy spec's `rolling`); none "
                              "when a ball's closed form is 0"),
                        kReal),
             "closed-form error", "roll.err", true),
-      shown(metric_row("rolling.expected_time_to_roll", "s",
+      shown(metric_row(Metric::rolling_expected_time_to_roll, "s",
                        fixed("the closed form of the time the balls all roll by, the latest over the balls: each "
                              "ball's slip u = v + w r after its first contact over mu g (1 + 1 / k), the rate sliding "
                              "friction takes it off (slide to roll: v0 k / ((1 + k) mu g)); a drop with restitution 0 "

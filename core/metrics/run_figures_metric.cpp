@@ -10,13 +10,13 @@ MetricFamily run_figures_metric() {
   MetricFamily f;
   f.name = "run_figures";
   f.order = 200;
-  MetricDef pos_err = metric_row("", "m", fixed("position RMS error against the reference at the last step"));
+  MetricDef pos_err = derived_row("m", fixed("position RMS error against the reference at the last step"));
   pos_err.ensemble = "pos.err";
   pos_err.meaningful = MeaningfulOn::predictable_scenes;
   pos_err.get = [](const Result& r) {
     return r.reference.reference.empty() ? nlohmann::json() : nlohmann::json(r.reference.pos_rms_final);
   };
-  MetricDef cost = metric_row("", "ns", fixed("the engine's own step time per ball per step"));
+  MetricDef cost = derived_row("ns", fixed("the engine's own step time per ball per step"));
   cost.ensemble = "ns/ball-step";
   cost.get = [](const Result& r) { return nlohmann::json(r.ns_per_ball_step); };
   f.rows = {pos_err, cost};

@@ -12,7 +12,7 @@ class RunoutMeter final : public Meter {
   explicit RunoutMeter(const Scene& scene) : scene_(scene) {}
   void final_state(const State& s) override { runout_ = runout(s, scene_.radius); }
   void write(MetricValues& out) const override {
-    out.set("runout", runout_ ? nlohmann::json(*runout_) : nlohmann::json());
+    out.set(Metric::runout, runout_ ? nlohmann::json(*runout_) : nlohmann::json());
   }
 
  private:
@@ -27,7 +27,7 @@ MetricFamily runout_metric() {
   f.name = "runout";
   f.order = 91;
   f.stage = MetricStage::final_state;
-  f.rows = {shown(metric_row("runout", "m",
+  f.rows = {shown(metric_row(Metric::runout, "m",
                              fixed(fmt::format(
                                  "the length of the final heap's deposit on the floor (scenes that ask for `runout`): "
                                  "the balls in order along the floor, a deposit is a run of them in which each ball's "

@@ -7,7 +7,7 @@ namespace {
 class SamplesMeter final : public Meter {
  public:
   void sample(SampleView&, EventLog&) override { ++samples_; }
-  void write(MetricValues& out) const override { out.set("samples", samples_); }
+  void write(MetricValues& out) const override { out.set(Metric::samples, samples_); }
 
  private:
   long samples_ = 0;
@@ -20,7 +20,7 @@ MetricFamily samples_metric() {
   f.name = "samples";
   f.order = 0;
   f.stage = MetricStage::sample;
-  f.rows = {metric_row("samples", "", fixed("the states the sampled metrics saw (every k-th step and the last)"))};
+  f.rows = {metric_row(Metric::samples, "", fixed("the states the sampled metrics saw (every k-th step and the last)"))};
   f.make = [](const Scene&, const MetricsConfig&) { return std::make_unique<SamplesMeter>(); };
   return f;
 }

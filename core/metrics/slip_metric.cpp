@@ -15,8 +15,8 @@ class SlipMeter final : public Meter {
   void sample(SampleView& v, EventLog&) override { tracker_.observe(v.state); }
   void write(MetricValues& out) const override {
     const SlipSummary s = tracker_.summary();
-    out.set("slip.final_max", s.final_max);
-    out.set("slip.time_to_roll", s.time_to_roll ? nlohmann::json(*s.time_to_roll) : nlohmann::json());
+    out.set(Metric::slip_final_max, s.final_max);
+    out.set(Metric::slip_time_to_roll, s.time_to_roll ? nlohmann::json(*s.time_to_roll) : nlohmann::json());
   }
 
  private:
@@ -31,7 +31,7 @@ MetricFamily slip_metric() {
   f.order = 30;
   f.stage = MetricStage::sample;
   f.rows = {
-      shown(metric_row("slip.final_max", "m/s",
+      shown(metric_row(Metric::slip_final_max, "m/s",
                        [](const MetricsConfig& cfg) {
                          return fmt::format(
                              "the largest slip |v . t - w r| (the speed of the contact point along the wall; t: the "
@@ -42,7 +42,7 @@ MetricFamily slip_metric() {
                        },
                        kReal),
             "slip at end (m/s)", "slip", true),
-      shown(metric_row("slip.time_to_roll", "s",
+      shown(metric_row(Metric::slip_time_to_roll, "s",
                        [](const MetricsConfig& cfg) {
                          return fmt::format("the time from which on no ball on a wall slips faster than {:g} m/s "
                                             "(never, null in the JSON: the last sample still slips)",

@@ -11,8 +11,8 @@ class SpeedDistributionMeter final : public Meter {
   explicit SpeedDistributionMeter(int n) : critical_(rayleigh_ks_critical(n)) {}
   void final_state(const State& s) override { ks_ = rayleigh_ks_statistic(s); }
   void write(MetricValues& out) const override {
-    out.set("speed_ks", ks_);
-    out.set("speed_ks_critical", critical_);
+    out.set(Metric::speed_ks, ks_);
+    out.set(Metric::speed_ks_critical, critical_);
   }
 
  private:
@@ -27,10 +27,10 @@ MetricFamily speed_distribution_metric() {
   f.order = 100;
   f.stage = MetricStage::final_state;
   f.rows = {
-      metric_row("speed_ks", "",
+      metric_row(Metric::speed_ks, "",
                  fixed("the Kolmogorov-Smirnov statistic of the final speeds against the 2D Maxwell-Boltzmann "
                        "(Rayleigh) law, for elastic, gravity-free scenes of 100+ equal balls")),
-      metric_row("speed_ks_critical", "", fixed("the statistic's 1% critical value, 1.63 / sqrt(n)")),
+      metric_row(Metric::speed_ks_critical, "", fixed("the statistic's 1% critical value, 1.63 / sqrt(n)")),
   };
   f.applies = [](const Scene& scene) {
     if (speed_distribution_applies(scene)) return Applies{};

@@ -42,8 +42,8 @@ class StickingMeter final : public Meter {
   }
 
   void write(MetricValues& out) const override {
-    out.set("sticking.wall", tracker_.wall_events());
-    out.set("sticking.pair", tracker_.pair_events());
+    out.set(Metric::sticking_wall, tracker_.wall_events());
+    out.set(Metric::sticking_pair, tracker_.pair_events());
   }
 
  private:
@@ -71,11 +71,11 @@ MetricFamily sticking_metric() {
   f.order = 50;
   f.stage = MetricStage::sample;
   f.rows = {
-      shown(metric_row("sticking.wall", "", definition("a ball", "radius (in a wall)"), kExact), "sticking wall",
+      shown(metric_row(Metric::sticking_wall, "", definition("a ball", "radius (in a wall)"), kExact), "sticking wall",
             "stk.wall", true),
-      shown(metric_row("sticking.pair", "", definition("a pair", "radius sum"), kExact), "sticking pair", "stk.pair",
+      shown(metric_row(Metric::sticking_pair, "", definition("a pair", "radius sum"), kExact), "sticking pair", "stk.pair",
             true),
-      count_sum_row("sticking", "sticking episodes, walls and pairs together", "sticking.wall", "sticking.pair"),
+      total_row("sticking", "sticking episodes, walls and pairs together", &MetricValues::stuck),
   };
   f.make = [](const Scene& scene, const MetricsConfig& config) { return std::make_unique<StickingMeter>(scene, config); };
   return f;

@@ -43,8 +43,8 @@ class TunnellingMeter final : public Meter {
   }
 
   void write(MetricValues& out) const override {
-    out.set("tunnelling.wall", wall_);
-    out.set("tunnelling.pair", pair_);
+    out.set(Metric::tunnelling_wall, wall_);
+    out.set(Metric::tunnelling_pair, pair_);
   }
 
  private:
@@ -62,10 +62,10 @@ MetricFamily tunnelling_metric() {
   f.order = 40;
   f.stage = MetricStage::motion;
   f.rows = {
-      shown(metric_row("tunnelling.wall", "",
+      shown(metric_row(Metric::tunnelling_wall, "",
                        fixed("balls whose centre went from inside the box to beyond a wall between two samples"), kExact),
             "tunnelling wall", "tun.wall", true),
-      shown(metric_row("tunnelling.pair", "",
+      shown(metric_row(Metric::tunnelling_pair, "",
                        [](const MetricsConfig& cfg) {
                          return fmt::format(
                              "pairs apart in two consecutive samples whose relative motion, taken as a straight line "
@@ -79,7 +79,7 @@ MetricFamily tunnelling_metric() {
                        },
                        kExact),
             "tunnelling pair", "tun.pair", true),
-      count_sum_row("tunnelling", "tunnelling events, walls and pairs together", "tunnelling.wall", "tunnelling.pair"),
+      total_row("tunnelling", "tunnelling events, walls and pairs together", &MetricValues::tunnelled),
   };
   f.make = [](const Scene& scene, const MetricsConfig& config) {
     return std::make_unique<TunnellingMeter>(scene, config);
