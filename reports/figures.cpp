@@ -3,20 +3,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <stdexcept>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "data_file.h"
 #include "front_figures.h"
 #include "gnuplot.h"
 #include "ordered_set.h"
 #include "palette.h"
+#include "plot.h"
 #include "viewer_page.h"
 
 namespace ballbench {
@@ -24,29 +23,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Text as a gnuplot string: single-quoted, a quote doubled. Terminals are set noenhanced, so '_'
-// and '^' are themselves.
-std::string quoted(const std::string& text) {
-  std::string q = "'";
-  for (char c : text) q += c == '\'' ? std::string("''") : std::string(1, c);
-  return q + "'";
-}
-
-// A run's colour and dash (palette.h) as gnuplot line properties.
-std::string line_style(const std::string& engine, const std::string& profile) {
+// A series in a run's colour and dash (palette.h).
+PlotSeries run_line(const std::string& engine, const std::string& profile, const std::string& data) {
   const RunStyle s = run_style(engine, profile);
-  return fmt::format("lc rgb '{}' dt {}", s.colour, s.dash);
-}
-
-// A line with the run's markers on it.
-std::string linespoints_style(const std::string& engine, const std::string& profile) {
-  return fmt::format("{} pt {}", line_style(engine, profile), run_style(engine, profile).point);
-}
-
-// Points of the same run that are not on its line (a knob set): its marker, open.
-std::string open_points_style(const std::string& engine, const std::string& profile) {
-  const RunStyle s = run_style(engine, profile);
-  return fmt::format("lc rgb '{}' pt {}", s.colour, s.open_point());
+  PlotSeries line;
+  line.data = data, line.colour = s.colour, line.dash = s.dash;
+  return line;
 }
 
 // A ball's radius in a picture: its own where the result has every ball's, else the mean.
@@ -80,13 +62,16 @@ View scene_view(const std::optional<std::array<double, 4>>& box, const std::vect
   return {x0 - margin, y0 - margin, x1 + margin, y1 + margin};
 }
 
-// The gnuplot lines that frame a picture: the view, equal scales, the container's walls.
-std::string view_lines(const View& v, const std::optional<std::array<double, 4>>& box) {
-  std::string out = fmt::format("set size ratio -1\nset xrange [{}:{}]\nset yrange [{}:{}]\nunset object\n", v.x0, v.x1, v.y0, v.y1);
-  if (box)
-    out += fmt::format("set object 1 rect from {},{} to {},{} fs empty border rgb '#c03030' lw 2 front\n", (*box)[0],
-                       (*box)[1], (*box)[2], (*box)[3]);
-  return out;
+// The panel settings that frame a picture: the view, its axes' ranges.
+void set_view(PlotPanel& p, const View& v) {
+  p.x.range.min = v.x0, p.x.range.max = v.x1;
+  p.y.range.min = v.y0, p.y.range.max = v.y1;
+}
+
+// The container's walls, red, over the balls or behind them.
+std::vector<PlotRectangle> walls(const std::optional<std::array<double, 4>>& box, bool in_front) {
+  if (!box) return {};
+  return {{(*box)[0], (*box)[1], (*box)[2], (*box)[3], "#c03030", 2, in_front}};
 }
 
 // How many of `points` lie outside `v`, as a line for the picture, or "" when none.
@@ -109,46 +94,53 @@ std::string outside_note(const View& v, const std::vector<std::array<double, 2>>
 // engine's first profile in the upper panel, the other profiles in the lower one with the
 // reference repeated for comparison, so no panel holds more lines than there are engines. None
 // when no run of the scene has an energy to plot (every engine refused it, say).
+PlotPanel energy_panel(const std::string& title, std::vector<PlotSeries> series) {
+  PlotPanel p;
+  p.title = title;
+  p.x.label = "time (s)", p.y.label = "E / E0 (log scale)";
+  p.log = LogAxes::y;
+  p.y.range.floor = 1e-4, p.y.range.ceiling = 1e4;
+  p.grid = Grid::xy;
+  p.key.place = KeyPlace::outside_right_top, p.key.font = ",9";
+  p.margins.left = 0.09, p.margins.right = 0.70;
+  p.series = std::move(series);
+  return p;
+}
+
 std::optional<Figure> energy_figure(const std::string& scene, const std::vector<const Result*>& runs,
-                                    const ReportInputs& in, const fs::path& dir) {
-  const std::string base = slug(scene) + "-energy";
-  std::string first, others, reference;
+                                    const ReportInputs& in) {
+  Plot plot;
+  plot.name = slug(scene) + "-energy";
+  std::vector<PlotSeries> first, others;
+  std::optional<PlotSeries> reference;
   for (const Result* r : runs) {
     const double e0 = r->metrics.value(Metric::energy_initial);
     if (r->series.t.empty() || e0 <= 0) continue;
-    const std::string data = base + "-" + slug(run_label(*r)) + ".dat";
-    std::ofstream f(dir / data);
-    for (size_t k = 0; k < r->series.t.size(); ++k)
-      f << r->series.t[k] << ' ' << r->series.energy[k] / e0 << '\n';
+    DataFile& f = plot.data.emplace_back(plot.name + "-" + slug(run_label(*r)) + ".dat");
+    for (size_t k = 0; k < r->series.t.size(); ++k) f.blocks[0].add({r->series.t[k], r->series.energy[k] / e0});
+    PlotSeries line = run_line(r->engine, r->profile, f.name);
+    line.line_width = 2;
     // A run that stopped says when in its key: its line ends there, or leaves the plot.
-    const std::string title = r->status == RunStatus::ok
-                                  ? run_label(*r)
-                                  : fmt::format("{} ({} at {:.3g} s)", run_label(*r), run_status_text(r->status), stop_time(*r));
-    const std::string item = fmt::format("'{}' with lines lw 2 {} title {}", data, line_style(r->engine, r->profile),
-                                         quoted(title));
-    std::string& panel = run_style(r->engine, r->profile).dash == 1 ? first : others;
-    panel += (panel.empty() ? "" : ", ") + item;
+    line.title = r->status == RunStatus::ok
+                     ? run_label(*r)
+                     : fmt::format("{} ({} at {:.3g} s)", run_label(*r), run_status_text(r->status), stop_time(*r));
+    (line.dash == 1 ? first : others).push_back(line);
     if (role_of(in, r->engine) == EngineRole::reference)
-      reference = fmt::format("'{}' with lines lw 1.5 {} title {}", data, line_style(r->engine, r->profile),
-                              quoted(run_label(*r) + " (reference)"));
+      reference = line, reference->line_width = 1.5, reference->title = run_label(*r) + " (reference)";
   }
   if (first.empty() && others.empty()) return std::nullopt;
   const bool two = !first.empty() && !others.empty();
-  if (two && !reference.empty()) others = reference + ", " + others;
+  if (two && reference) others.insert(others.begin(), *reference);
   constexpr int kPanelHeight = 360;
-  std::ofstream gp(dir / (base + ".gp"));
-  gp << "set terminal pngcairo size 900," << (two ? 2 : 1) * kPanelHeight + 20 << " font 'sans,10'\nset termoption noenhanced\n"
-     << "set output '" << base << ".png'\n"
-     << "set xlabel 'time (s)'\nset ylabel 'E / E0 (log scale)'\nset logscale y\nset yrange [1e-4<*:*<1e4]\nset grid\n"
-     << "set key outside right top font ',9'\nset lmargin at screen 0.09\nset rmargin at screen 0.70\n";
-  if (two) gp << "set multiplot layout 2,1\n";
-  gp << "set title " << quoted("Energy over time, " + scene + (two ? ": each engine's first profile" : "")) << "\n"
-     << "plot " << (first.empty() ? others : first) << '\n';
-  if (two)
-    gp << "set title " << quoted(scene + ": the other profiles (dashed)") << "\nplot " << others << "\nunset multiplot\n";
-  gp.close();
-  run_gnuplot(dir / (base + ".gp"));
-  return Figure{FigureKind::energy, scene, "figures/" + base + ".png",
+  plot.terminal.height = (two ? 2 : 1) * kPanelHeight + 20;
+  plot.panels.push_back(energy_panel("Energy over time, " + scene + (two ? ": each engine's first profile" : ""),
+                                     first.empty() ? others : first));
+  if (two) {
+    plot.layout = LayoutKind::grid, plot.rows = 2;
+    plot.panels.push_back(energy_panel(scene + ": the other profiles (dashed)", others));
+  }
+  draw_plot(plot);
+  return Figure{FigureKind::energy, scene, "figures/" + plot.output(),
                 two ? "Energy over time relative to the start (log scale): above, each engine's first profile; below, "
                       "its other profiles (dashed), with the reference for comparison. One colour per engine, as in "
                       "every figure and the viewer; a run that stopped early says when in the key."
@@ -156,13 +148,45 @@ std::optional<Figure> energy_figure(const std::string& scene, const std::vector<
                       "stopped early says when in the key."};
 }
 
+// A run's picture data: the balls at the end (x, y, radius), a block per tracked ball, the
+// centre-of-mass trail; the series that read them, named NAME-balls.dat, -tracks.dat, -com.dat.
+std::vector<PlotSeries> picture_series(const Result& r, const std::string& name, Plot& plot) {
+  DataFile balls(name + "-balls.dat", 1, 3), tracks(name + "-tracks.dat", 0), com(name + "-com.dat");
+  for (size_t b = 0; b < r.series.final_pos.size(); ++b)
+    balls.blocks[0].add({r.series.final_pos[b][0], r.series.final_pos[b][1], ball_radius(r, b)});
+  for (const auto& track : r.series.tracks) {
+    DataBlock& block = tracks.blocks.emplace_back();
+    for (const auto& p : track) block.add({p[0], p[1]});
+  }
+  for (size_t c = 0; c < r.series.com_x.size(); ++c) com.blocks[0].add({r.series.com_x[c], r.series.com_y[c]});
+  const std::string colour = run_style(r.engine, r.profile).colour;
+  // The same key under every panel, so that every panel keeps the same size.
+  std::vector<PlotSeries> series(1);
+  series[0].data = balls.name, series[0].columns = "1:2:3", series[0].style = SeriesStyle::circles;
+  series[0].colour = colour, series[0].fill_opacity = 0.45, series[0].title = "balls";
+  for (size_t b = 0; b < r.series.tracks.size(); ++b) {
+    PlotSeries& track = series.emplace_back();
+    track.data = tracks.name, track.index = static_cast<int>(b), track.columns = "1:2";
+    track.colour = track_colour(static_cast<int>(b)), track.line_width = 1.2;
+    track.title = fmt::format("track of ball {}", b);
+  }
+  PlotSeries& trail = series.emplace_back();
+  trail.data = com.name, trail.columns = "1:2", trail.title = "centre of mass";
+  trail.colour = "#303030", trail.line_width = 2;
+  plot.data.push_back(std::move(balls)), plot.data.push_back(std::move(tracks)), plot.data.push_back(std::move(com));
+  return series;
+}
+
 // One panel per run, like the thesis's figures 3 to 5: the balls at the end (each its own radius,
 // in its engine's colour), the tracks of the first balls (a colour per ball), and the
 // centre-of-mass trail; the container's walls, and every ball that left it, in view, axes in metres.
-Figure scene_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
-  const std::string base = slug(scene) + "-picture";
+Figure scene_figure(const std::string& scene, const std::vector<const Result*>& runs) {
   const size_t cols = std::min<size_t>(3, runs.size()), rows = (runs.size() + cols - 1) / cols;
-  const int panel = cols == 1 ? 560 : cols == 2 ? 450 : 310;
+  const int side = cols == 1 ? 560 : cols == 2 ? 450 : 310;
+  Plot plot;
+  plot.name = slug(scene) + "-picture";
+  plot.terminal.width = double(side * cols), plot.terminal.height = double((side + 70) * rows);
+  plot.layout = LayoutKind::grid, plot.rows = int(rows), plot.columns = int(cols);
   std::vector<std::array<double, 2>> everything;
   double reach = 0;
   for (const Result* r : runs) {
@@ -170,51 +194,21 @@ Figure scene_figure(const std::string& scene, const std::vector<const Result*>& 
     everything.insert(everything.end(), r->series.final_pos.begin(), r->series.final_pos.end());
   }
   const View view = scene_view(runs.front()->series.box, everything, reach);
-  std::ofstream gp(dir / (base + ".gp"));
-  gp << "set terminal pngcairo size " << panel * cols << "," << (panel + 70) * rows << " font 'sans,10'\n"
-     << "set termoption noenhanced\nset output '" << base << ".png'\nset multiplot layout " << rows << "," << cols << "\n"
-     << "set xlabel 'x (m)'\nset ylabel 'y (m)' offset 1,0\nset key below font ',8' samplen 2\n"
-     << view_lines(view, runs.front()->series.box);
-  for (size_t k = 0; k < runs.size(); ++k) {
-    const Result* r = runs[k];
-    const std::string name = slug(run_label(*r));
-    const RunStyle style = run_style(r->engine, r->profile);
-    {
-      std::ofstream f(dir / fmt::format("{}-{}-balls.dat", base, name));
-      for (size_t b = 0; b < r->series.final_pos.size(); ++b)
-        f << r->series.final_pos[b][0] << ' ' << r->series.final_pos[b][1] << ' ' << ball_radius(*r, b) << '\n';
-    }
-    {
-      std::ofstream f(dir / fmt::format("{}-{}-tracks.dat", base, name));
-      for (const auto& track : r->series.tracks) {
-        for (const auto& p : track) f << p[0] << ' ' << p[1] << '\n';
-        f << "\n\n";  // a new gnuplot data block per ball
-      }
-    }
-    {
-      std::ofstream f(dir / fmt::format("{}-{}-com.dat", base, name));
-      for (size_t c = 0; c < r->series.com_x.size(); ++c) f << r->series.com_x[c] << ' ' << r->series.com_y[c] << '\n';
-    }
+  for (const Result* r : runs) {
+    PlotPanel& p = plot.panels.emplace_back();
+    p.x.label = "x (m)", p.y.label = "y (m)", p.y.label_offset = 1;
+    p.key.place = KeyPlace::below, p.key.font = ",8", p.key.sample_length = 2;
+    p.equal_scales = true;
+    set_view(p, view);
+    p.rectangles = walls(runs.front()->series.box, true);
     const std::string stopped = r->status == RunStatus::ok ? "" : fmt::format(" ({})", run_status_text(r->status));
-    gp << "set title " << quoted(fmt::format("{} at t = {:.3g} s{}", run_label(*r), r->series.t.empty() ? 0.0 : r->series.t.back(), stopped))
-       << "\nunset label\n";
+    p.title = fmt::format("{} at t = {:.3g} s{}", run_label(*r), r->series.t.empty() ? 0.0 : r->series.t.back(), stopped);
     if (const std::string note = outside_note(view, r->series.final_pos); !note.empty())
-      gp << "set label 1 " << quoted(note) << " at graph 0.02, graph 0.97 left front font ',8' textcolor rgb '#b03030'\n";
-    // The same key under every panel, so that every panel keeps the same size.
-    auto t = [&](const std::string& title) { return "title " + quoted(title); };
-    std::string plot = fmt::format("'{0}-{1}-balls.dat' using 1:2:3 with circles lc rgb '{2}' fs transparent solid 0.45 "
-                                   "border lc rgb '{2}' {3}",
-                                   base, name, style.colour, t("balls"));
-    for (size_t b = 0; b < r->series.tracks.size(); ++b)
-      plot += fmt::format(", '{}-{}-tracks.dat' index {} using 1:2 with lines lw 1.2 lc rgb '{}' {}", base, name, b,
-                          track_colour(static_cast<int>(b)), t(fmt::format("track of ball {}", b)));
-    plot += fmt::format(", '{}-{}-com.dat' using 1:2 with lines lw 2 lc rgb '#303030' {}", base, name, t("centre of mass"));
-    gp << "plot " << plot << '\n';
+      p.labels.push_back({note, Coordinates::graph, 0.02, 0.97, Align::left, ",8", "#b03030"});
+    p.series = picture_series(*r, plot.name + "-" + slug(run_label(*r)), plot);
   }
-  gp << "unset multiplot\n";
-  gp.close();
-  run_gnuplot(dir / (base + ".gp"));
-  return {FigureKind::picture, scene, "figures/" + base + ".png",
+  draw_plot(plot);
+  return {FigureKind::picture, scene, "figures/" + plot.output(),
           "The scene at the end, to scale in metres: the balls in their engine's colour, the tracks of the first four "
           "balls (a colour each), the centre-of-mass trail (dark grey) and the container's walls (red), as in the "
           "thesis's figures 3 to 5."};
@@ -269,64 +263,69 @@ AnimationLayout animation_layout(const std::vector<const Result*>& runs) {
   return l;
 }
 
-// Each run's balls, a gnuplot data block per GIF frame.
-void write_animation_data(const std::vector<const Result*>& runs, const AnimationLayout& l, const std::string& base,
-                          const fs::path& dir) {
+// Each run's balls (x, y, radius), a gnuplot data block per GIF frame, in NAME-RUN.dat.
+void add_animation_data(const std::vector<const Result*>& runs, const AnimationLayout& l, Plot& plot) {
   for (const Result* r : runs) {
-    std::ofstream f(dir / fmt::format("{}-{}.dat", base, slug(run_label(*r))));
+    DataFile& f = plot.data.emplace_back(fmt::format("{}-{}.dat", plot.name, slug(run_label(*r))), 0);
     for (size_t k = 0; k < l.frames; ++k) {
       const auto& frame = r->series.frames[l.held(r, k)];
-      for (size_t b = 0; b < frame.size(); ++b) f << frame[b][0] << ' ' << frame[b][1] << ' ' << ball_radius(*r, b) << '\n';
-      f << "\n\n";
+      DataBlock& block = f.blocks.emplace_back(3);
+      for (size_t b = 0; b < frame.size(); ++b) block.add({frame[b][0], frame[b][1], ball_radius(*r, b)});
     }
   }
 }
 
-// Run i's panel of GIF frame k.
-void put_animation_panel(std::ostream& gp, const AnimationLayout& l, const Result* r, size_t i, size_t k,
-                         const std::string& base) {
+// Run i's panel of GIF frame k: `common` placed in pixels, titled, with the run's balls.
+PlotPanel animation_panel(const PlotPanel& common, const AnimationLayout& l, const Result* r, size_t i, size_t k,
+                          const std::string& base) {
   const size_t h = l.held(r, k);
   const bool stopped = h < k * l.stride;
   const double t = r->series.frame_t[h];
   const double left = kGap + (i % l.cols) * (kSide + kGap) + (kSide - l.pw) / 2,
                top = kGap + (i / l.cols) * (l.ph + kTitle + kGap) + kTitle;
-  gp << fmt::format("set lmargin at screen {}\nset rmargin at screen {}\nset tmargin at screen {}\nset bmargin at screen {}\n",
-                    left / l.width, (left + l.pw) / l.width, 1 - top / l.height, 1 - (top + l.ph) / l.height)
-     << "unset label\n";
-  if (stopped)
-    gp << "set title " << quoted(fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t)) << "\nset label 1 "
-       << quoted(fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r)))
-       << " at graph 0.5, graph 0.5 center front font ',13'\n";
-  else
-    gp << "set title " << quoted(fmt::format("{}   t = {:.1f} s", run_label(*r), t)) << "\n";
+  PlotPanel p = common;
+  p.margins = {left / l.width, (left + l.pw) / l.width, 1 - top / l.height, 1 - (top + l.ph) / l.height};
+  if (stopped) {
+    p.title = fmt::format("{}   t = {:.2f} s, its last frame", run_label(*r), t);
+    const std::string when = fmt::format("{} at t = {:.2f} s", run_status_text(r->status), stop_time(*r));
+    p.labels.push_back({when, Coordinates::graph, 0.5, 0.5, Align::centre, ",13", ""});
+  } else {
+    p.title = fmt::format("{}   t = {:.1f} s", run_label(*r), t);
+  }
   if (const std::string note = outside_note(l.view, r->series.frames[h]); !note.empty())
-    gp << "set label 2 " << quoted(note) << " at graph 0.02, graph 0.04 left front font ',9'\n";
-  gp << fmt::format("plot '{0}-{1}.dat' index {2} using 1:2:(size($3)) with points pt 7 ps variable lc rgb '{3}', "
-                    "'' index {2} using 1:2:(size($3)) with points pt 6 ps variable lc rgb '#404040'\n",
-                    base, slug(run_label(*r)), k, stopped ? std::string(kStoppedGrey) : run_style(r->engine, r->profile).colour);
+    p.labels.push_back({note, Coordinates::graph, 0.02, 0.04, Align::left, ",9", ""});
+  const std::string data = fmt::format("{}-{}.dat", base, slug(run_label(*r)));
+  // The radius in metres as a gd point size, its third column.
+  const std::string columns = fmt::format("1:2:($3 * {} / {})", l.scale, kGdPixelsPerPointSize);
+  const std::string colour = stopped ? std::string(kStoppedGrey) : run_style(r->engine, r->profile).colour;
+  p.series.assign(2, PlotSeries{});
+  for (PlotSeries& s : p.series) {
+    s.data = data, s.index = int(k), s.columns = columns, s.style = SeriesStyle::points;
+    s.point_size_from_column = true;
+  }
+  p.series[0].colour = colour, p.series[0].point = 7;     // the disc
+  p.series[1].colour = "#404040", p.series[1].point = 6;  // its outline
+  return p;
 }
 
-Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
-  const std::string base = slug(scene) + "-animation";
+Figure animation_figure(const std::string& scene, const std::vector<const Result*>& runs) {
   const AnimationLayout l = animation_layout(runs);
-  std::ofstream gp(dir / (base + ".gp"));
-  gp << fmt::format("set terminal gif animate delay 10 optimize size {},{} font 'sans,10'\n", l.width, l.height)
-     << "set termoption noenhanced\nset output '" << base << ".gif'\nunset key\nunset xtics\nunset ytics\n"
-     << "set border lc rgb '" << kStoppedGrey << "'\n"
-     << fmt::format("set xrange [{}:{}]\nset yrange [{}:{}]\n", l.view.x0, l.view.x1, l.view.y0, l.view.y1)
-     << fmt::format("size(r) = r * {} / {}  # a radius in metres as a gd point size\n", l.scale, kGdPixelsPerPointSize);
-  if (const auto& b = runs.front()->series.box)
-    gp << fmt::format("set object 1 rect from {},{} to {},{} fs empty border rgb '#c03030' lw 2 back\n", (*b)[0], (*b)[1],
-                      (*b)[2], (*b)[3]);
-  write_animation_data(runs, l, base, dir);
-  for (size_t k = 0; k < l.frames; ++k) {
-    gp << "set multiplot\n";
-    for (size_t i = 0; i < runs.size(); ++i) put_animation_panel(gp, l, runs[i], i, k, base);
-    gp << "unset multiplot\n";
-  }
-  gp.close();
-  run_gnuplot(dir / (base + ".gp"));
-  return {FigureKind::animation, scene, "figures/" + base + ".gif",
+  Plot plot;
+  plot.name = slug(scene) + "-animation";
+  plot.terminal.kind = TerminalKind::animated_gif, plot.terminal.width = l.width, plot.terminal.height = l.height;
+  plot.layout = LayoutKind::free, plot.panels_per_frame = runs.size();
+  PlotPanel common;
+  common.key.place = KeyPlace::hidden;
+  common.x.tics = common.y.tics = false;
+  common.border_colour = kStoppedGrey;
+  set_view(common, l.view);
+  common.rectangles = walls(runs.front()->series.box, false);
+  add_animation_data(runs, l, plot);
+  for (size_t k = 0; k < l.frames; ++k)
+    for (size_t i = 0; i < runs.size(); ++i)
+      plot.panels.push_back(animation_panel(common, l, runs[i], i, k, plot.name));
+  draw_plot(plot);
+  return {FigureKind::animation, scene, "figures/" + plot.output(),
           fmt::format("The scene in motion ({} frames, animated GIF): the thesis's algorithm, ours and an external "
                       "engine side by side, balls to scale in their engine's colour; a run that stopped early shows its "
                       "last frame greyed, with when and why it stopped.",
@@ -334,10 +333,10 @@ Figure animation_figure(const std::string& scene, const std::vector<const Result
 }
 
 // The trajectory viewer (viewer_page.h): every run of the scene that has frames, on one page.
-Figure viewer_figure(const std::string& scene, const std::vector<const Result*>& runs, const fs::path& dir) {
+Figure viewer_figure(const std::string& scene, const std::vector<const Result*>& runs) {
   const std::string file = slug(scene) + "-viewer.html";
   const std::string page = viewer_page(runs);
-  write_file_atomically((dir / file).string(), page, "the viewer page");
+  write_file_atomically(file, page, "the viewer page");
   size_t frames = 0;
   for (const Result* r : runs) frames = std::max(frames, r->series.frames.size());
   return {FigureKind::viewer, scene, "figures/" + file,
@@ -348,59 +347,67 @@ Figure viewer_figure(const std::string& scene, const std::vector<const Result*>&
                       frames, static_cast<double>(page.size()) / 1e6)};
 }
 
-// Error against step time, log-log: per engine and profile a line through its step-size series
-// (x error bars: the spread of the timing repeats), and its other knob settings as open points in
-// the same colour. The reference itself (error 0) cannot be drawn on a log scale.
-Figure work_precision_figure(const SweepResult& sw, const fs::path& dir) {
-  const std::string base = slug(sw.scene) + "-work-precision";
-  std::vector<std::string> order;  // engine/profile in the sweep's order
-  std::map<std::string, std::string> looks, knob_looks;  // its line style; its knobs' points
+// Per engine and profile (but the reference) its step-size line, x bars from the timing repeats'
+// spread, and its other knob settings as open points, their data files added to `plot`; `ymax`
+// the largest error among them.
+std::vector<PlotSeries> work_precision_series(const SweepResult& sw, Plot& plot, double& ymax) {
+  std::vector<std::string> order;     // engine/profile in the sweep's order
+  std::map<std::string, RunStyle> looks;  // its palette style
   for (const SweepPoint& p : sw.points) {
-    const std::string l = run_label(p.engine, p.profile);
-    if (p.engine != sw.reference)
-      add_once(order, l), looks[l] = linespoints_style(p.engine, p.profile), knob_looks[l] = open_points_style(p.engine, p.profile);
+    const std::string label = run_label(p.engine, p.profile);
+    if (p.engine != sw.reference) add_once(order, label), looks[label] = run_style(p.engine, p.profile);
   }
+  std::vector<PlotSeries> series;
+  for (const std::string& label : order) {
+    DataFile line(fmt::format("{}-{}-dt.dat", plot.name, slug(label)), 1, 4),
+        knobs(fmt::format("{}-{}-knobs.dat", plot.name, slug(label)), 1, 4);
+    for (const SweepPoint& p : sw.points) {
+      if (run_label(p.engine, p.profile) != label || p.status != RunStatus::ok || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
+      const auto [lo, hi] = std::minmax_element(p.engine_s.begin(), p.engine_s.end());
+      (p.knob == "dt" ? line : knobs).blocks[0].add({1e3 * p.engine_s_median(), p.pos_rms, 1e3 * *lo, 1e3 * *hi});
+      ymax = std::max(ymax, p.pos_rms);
+    }
+    if (line.blocks[0].rows() == 0) continue;
+    const RunStyle& s = looks[label];
+    PlotSeries& steps = series.emplace_back();
+    steps.data = line.name, steps.columns = "1:2:3:4", steps.style = SeriesStyle::xerrorlines, steps.title = label;
+    steps.colour = s.colour, steps.dash = s.dash, steps.point = s.point, steps.point_size = 0.8, steps.line_width = 2;
+    PlotSeries& knob_points = series.emplace_back();
+    knob_points.data = knobs.name, knob_points.columns = "1:2", knob_points.style = SeriesStyle::points;
+    knob_points.colour = s.colour, knob_points.point = s.open_point(), knob_points.point_size = 1.2;
+    plot.data.push_back(std::move(line)), plot.data.push_back(std::move(knobs));
+  }
+  return series;
+}
+
+// Error against step time, log-log, the lines and points of work_precision_series. The reference
+// itself (error 0) cannot be drawn on a log scale.
+Figure work_precision_figure(const SweepResult& sw) {
+  Plot plot;
+  plot.name = slug(sw.scene) + "-work-precision";
+  plot.terminal.width = 1300, plot.terminal.height = 560, plot.terminal.enhanced_text = true;
+  plot.layout = LayoutKind::grid, plot.rows = 1, plot.columns = 2;
+  double ymax = 0;  // the largest error drawn
+  PlotPanel all;
+  all.series = work_precision_series(sw, plot, ymax);
+  all.title = fmt::format("Work against precision, {}: error at t = {:g} s", sw.scene, sw.horizon);
+  all.x.label = fmt::format("engine time to t = {:g} s (ms, median of {})", sw.horizon, sw.repeats);
+  all.y.label = fmt::format("position RMS error against {} (m)", sw.reference);
+  all.log = LogAxes::xy;
+  all.grid = Grid::xy;
+  all.key.place = KeyPlace::bottom_right, all.key.font = ",8";
+  // Two panels: every point, and the top two decades of error, where engines that differ by a
+  // factor of two would otherwise share a pixel when another engine is at round-off.
+  PlotPanel top = all;
+  top.title = "The same, top two decades of error";
+  top.key.place = KeyPlace::hidden;
+  top.y.range.min = ymax > 0 ? ymax / 100 : 1e-3, top.y.range.max = ymax > 0 ? ymax * 2 : 1.0;
+  plot.panels = {all, top};
+  draw_plot(plot);
   std::vector<double> dts;
   for (const SweepPoint& p : sw.points)
     if (p.knob == "dt") add_once(dts, p.dt);
-  double ymax = 0;  // the largest error drawn
-  std::string plot;
-  for (size_t k = 0; k < order.size(); ++k) {
-    const std::string name = slug(order[k]);
-    std::ofstream line(dir / fmt::format("{}-{}-dt.dat", base, name)), knobs(dir / fmt::format("{}-{}-knobs.dat", base, name));
-    int drawn = 0;
-    for (const SweepPoint& p : sw.points) {
-      if (run_label(p.engine, p.profile) != order[k] || p.status != RunStatus::ok || p.engine_s.empty() || !(p.pos_rms > 0)) continue;
-      const auto [lo, hi] = std::minmax_element(p.engine_s.begin(), p.engine_s.end());
-      (p.knob == "dt" ? line : knobs) << 1e3 * p.engine_s_median() << ' ' << p.pos_rms << ' ' << 1e3 * *lo << ' '
-                                      << 1e3 * *hi << '\n';
-      drawn += p.knob == "dt";
-      ymax = std::max(ymax, p.pos_rms);
-    }
-    line << "\n", knobs << "\n";  // never empty: gnuplot rejects a data file without points
-    if (drawn == 0) continue;
-    plot += fmt::format("{}'{}-{}-dt.dat' using 1:2:3:4 with xerrorlines {} lw 2 ps 0.8 title '{}', "
-                        "'{}-{}-knobs.dat' using 1:2 with points {} ps 1.2 notitle",
-                        plot.empty() ? "" : ", ", base, name, looks[order[k]], order[k], base, name,
-                        knob_looks[order[k]]);
-  }
-  // Two panels: every point, and the top two decades of error, where engines that differ by a
-  // factor of two would otherwise share a pixel when another engine is at round-off.
-  std::ofstream gp(dir / (base + ".gp"));
-  gp << "set terminal pngcairo size 1300,560 font 'sans,10'\n"
-     << "set output '" << base << ".png'\nset multiplot layout 1,2\n"
-     << "set xlabel 'engine time to t = " << sw.horizon << " s (ms, median of " << sw.repeats << ")'\n"
-     << "set ylabel 'position RMS error against " << sw.reference << " (m)'\n"
-     << "set logscale xy\nset grid\nset key bottom right font ',8'\n"
-     << "set title 'Work against precision, " << sw.scene << ": error at t = " << sw.horizon << " s'\n"
-     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n'
-     << "set title 'The same, top two decades of error'\nunset key\n"
-     << fmt::format("set yrange [{}:{}]\n", ymax > 0 ? ymax / 100 : 1e-3, ymax > 0 ? ymax * 2 : 1.0)
-     << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n'
-     << "unset multiplot\n";
-  gp.close();
-  run_gnuplot(dir / (base + ".gp"));
-  return {FigureKind::work_precision, sw.scene, "figures/" + base + ".png",
+  return {FigureKind::work_precision, sw.scene, "figures/" + plot.output(),
           fmt::format("Work against precision on {}: each line is one engine and profile at the step sizes {} s "
                       "(cost grows as dt shrinks), x bars the spread of {} timing runs; open circles are the same "
                       "engine with one of its own knobs changed at the scene's dt (table below); the right panel "
@@ -443,99 +450,103 @@ std::vector<std::string> missing_lines(const std::vector<const BenchRow*>& faile
   return lines;
 }
 
-// ns per ball-step against ball count, one figure per benchmark scene, one line per engine and
-// profile in its palette style, the key beside the plot, and the points that are missing named
+// ns per ball-step against ball count on one benchmark scene, one line per engine and profile in
+// `order` in its palette style, the key beside the plot, and the points that are missing named
 // under it. Log scales: ball counts span decades, and so do costs (an asleep pile costs next to
 // nothing).
-std::vector<Figure> scaling_figures(const BenchResults& bench, const fs::path& dir) {
+Figure scaling_figure(const BenchResults& bench, const std::string& scene, const std::vector<std::string>& order,
+                      const std::map<std::string, RunStyle>& looks) {
+  Plot plot;
+  plot.name = "scaling-" + slug(scene);
+  PlotPanel& p = plot.panels.emplace_back();
+  std::vector<const BenchRow*> failed;
+  for (const std::string& label : order) {
+    DataFile f(fmt::format("{}-{}.dat", plot.name, slug(label)));
+    for (const BenchRow& r : bench.rows) {
+      if (r.scene != scene || run_label(r.engine, r.profile) != label) continue;
+      if (r.error.empty() && r.ns_per_ball_step > 0) f.blocks[0].add({double(r.n), r.ns_per_ball_step});
+      else failed.push_back(&r);
+    }
+    if (f.blocks[0].rows() == 0) continue;
+    const RunStyle& s = looks.at(label);
+    PlotSeries& line = p.series.emplace_back();
+    line.data = f.name, line.style = SeriesStyle::linespoints, line.title = label;
+    line.colour = s.colour, line.dash = s.dash, line.point = s.point, line.point_size = 0.8, line.line_width = 2;
+    plot.data.push_back(std::move(f));
+  }
+  const std::vector<std::string> missing = missing_lines(failed);
+  constexpr int kPlotHeight = 470, kLineHeight = 15;
+  plot.terminal.height = kPlotHeight + kLineHeight * static_cast<int>(missing.size());
+  p.title = "Step cost against ball count, " + scene;
+  p.x.label = "balls", p.y.label = "engine ns per ball-step";
+  p.x.format = "%.0f";
+  p.log = LogAxes::xy;
+  p.grid = Grid::xy;
+  p.key.place = KeyPlace::outside_right_top, p.key.font = ",9";
+  p.margins.bottom = (kLineHeight * (missing.size() + 1.0) + 45) / plot.terminal.height;
+  for (size_t k = 0; k < missing.size(); ++k)
+    p.labels.push_back({missing[k], Coordinates::screen, 0.01,
+                        (kLineHeight * (missing.size() - k) - 4.0) / plot.terminal.height, Align::left, ",8", "#b03030"});
+  if (p.series.empty()) {
+    p.labels.push_back({"no engine ran this scene", Coordinates::graph, 0.5, 0.5, Align::centre, "", ""});
+    p.x.range.min = p.y.range.min = 1, p.x.range.max = p.y.range.max = 10;
+  }
+  draw_plot(plot);
+  return {FigureKind::scaling, "", "figures/" + plot.output(),
+          fmt::format("Step cost against ball count on {} (bench/ballbench_step_benchmark, engine step only), one "
+                      "line per engine and profile, log-log: flat is linear scaling. Points an engine did not reach "
+                      "are named under the plot.",
+                      scene)};
+}
+
+std::vector<Figure> scaling_figures(const BenchResults& bench) {
   std::vector<std::string> scenes, order;
-  std::map<std::string, std::string> looks;  // run label -> line style
+  std::map<std::string, RunStyle> looks;  // run label -> its palette style
   for (const BenchRow& r : bench.rows) {
     add_once(scenes, r.scene);
-    const std::string l = run_label(r.engine, r.profile);
-    add_once(order, l);
-    looks[l] = linespoints_style(r.engine, r.profile);
+    add_once(order, run_label(r.engine, r.profile));
+    looks[run_label(r.engine, r.profile)] = run_style(r.engine, r.profile);
   }
   std::vector<Figure> figures;
-  for (const std::string& scene : scenes) {
-    const std::string base = "scaling-" + slug(scene);
-    std::string plot;
-    std::vector<const BenchRow*> failed;
-    for (const std::string& label : order) {
-      const std::string data = fmt::format("{}-{}.dat", base, slug(label));
-      std::ofstream f(dir / data);
-      int points = 0;
-      for (const BenchRow& r : bench.rows) {
-        if (r.scene != scene || run_label(r.engine, r.profile) != label) continue;
-        if (r.error.empty() && r.ns_per_ball_step > 0) f << r.n << ' ' << r.ns_per_ball_step << '\n', ++points;
-        else failed.push_back(&r);
-      }
-      if (points)
-        plot += fmt::format("{}'{}' with linespoints {} lw 2 ps 0.8 title {}", plot.empty() ? "" : ", ", data,
-                            looks[label], quoted(label));
-    }
-    const std::vector<std::string> missing = missing_lines(failed);
-    constexpr int kPlotHeight = 470, kLineHeight = 15;
-    const int height = kPlotHeight + kLineHeight * static_cast<int>(missing.size());
-    std::ofstream gp(dir / (base + ".gp"));
-    gp << "set terminal pngcairo size 900," << height << " font 'sans,10'\nset termoption noenhanced\n"
-       << "set output '" << base << ".png'\nset logscale xy\nset grid\nset key outside right top font ',9'\n"
-       << "set format x '%.0f'\n"
-       << "set xlabel 'balls'\nset ylabel 'engine ns per ball-step'\n"
-       << fmt::format("set bmargin at screen {}\n", (kLineHeight * (missing.size() + 1.0) + 45) / height)
-       << "set title " << quoted("Step cost against ball count, " + scene) << "\n";
-    for (size_t k = 0; k < missing.size(); ++k)
-      gp << "set label " << k + 1 << ' ' << quoted(missing[k]) << " at screen 0.01, screen "
-         << (kLineHeight * (missing.size() - k) - 4.0) / height << " left font ',8' textcolor rgb '#b03030'\n";
-    if (plot.empty()) gp << "set label 100 'no engine ran this scene' at graph 0.5, graph 0.5 center\nset xrange [1:10]\nset yrange [1:10]\n";
-    gp << "plot " << (plot.empty() ? "1/0 notitle" : plot) << '\n';
-    gp.close();
-    run_gnuplot(dir / (base + ".gp"));
-    figures.push_back({FigureKind::scaling, "", "figures/" + base + ".png",
-                       fmt::format("Step cost against ball count on {} (bench/ballbench_step_benchmark, engine step "
-                                   "only), one line per engine and profile, log-log: flat is linear scaling. Points "
-                                   "an engine did not reach are named under the plot.",
-                                   scene)});
-  }
+  for (const std::string& scene : scenes) figures.push_back(scaling_figure(bench, scene, order, looks));
   return figures;
 }
 
 // Doublings each engine survived per knob, as clustered bars (engines along x, one bar per knob).
-Figure frontier_figure(const FrontierResult& f, const fs::path& dir) {
-  const std::string base = slug(f.scene) + "-frontier";
+Figure frontier_figure(const FrontierResult& f) {
+  Plot plot;
+  plot.name = slug(f.scene) + "-frontier";
+  plot.terminal.width = 1000, plot.terminal.height = 480, plot.terminal.enhanced_text = true;
   std::vector<std::string> knobs, engines;
-  for (const FrontierRow& r : f.rows) {
-    add_once(knobs, r.knob);
-    const std::string l = run_label(r.engine, r.profile);
-    add_once(engines, l);
-  }
-  {
-    std::ofstream d(dir / (base + ".dat"));
-    d << "engine";
-    for (const auto& k : knobs) d << ' ' << k;
-    d << '\n';
-    for (const auto& e : engines) {
-      d << e;
-      for (const auto& k : knobs) {
-        int passed = 0;
-        for (const FrontierRow& r : f.rows)
-          if (run_label(r.engine, r.profile) == e && r.knob == k) passed = r.levels_passed;
-        d << ' ' << passed;
-      }
-      d << '\n';
+  for (const FrontierRow& r : f.rows) add_once(knobs, r.knob), add_once(engines, run_label(r.engine, r.profile));
+  DataFile& d = plot.data.emplace_back(plot.name + ".dat", 1, knobs.size());
+  d.column_names = {"engine"};
+  d.column_names.insert(d.column_names.end(), knobs.begin(), knobs.end());
+  for (const auto& e : engines) {
+    d.blocks[0].row_names.push_back(e);
+    for (const auto& k : knobs) {
+      int passed = 0;
+      for (const FrontierRow& r : f.rows)
+        if (run_label(r.engine, r.profile) == e && r.knob == k) passed = r.levels_passed;
+      d.blocks[0].values.push_back(passed);
     }
   }
-  std::ofstream gp(dir / (base + ".gp"));
-  gp << "set terminal pngcairo size 1000,480 font 'sans,10'\n"
-     << "set output '" << base << ".png'\n"
-     << "set title 'Stability frontier, " << f.scene << ": levels passed of " << f.levels << " (level k: knob x 2^(k-1))'\n"
-     << "set style data histogram\nset style histogram cluster gap 1\nset style fill solid 0.8 border -1\n"
-     << "set boxwidth 0.9\nset yrange [0:" << f.levels + 0.5 << "]\nset ytics 1\nset grid y\nset key outside right\n"
-     << "set xtics rotate by -30\nset ylabel 'levels passed'\n"
-     << "plot for [k=2:" << knobs.size() + 1 << "] '" << base << ".dat' using k:xtic(1) title columnheader\n";
-  gp.close();
-  run_gnuplot(dir / (base + ".gp"));
-  return {FigureKind::frontier, f.scene, "figures/" + base + ".png",
+  PlotPanel& p = plot.panels.emplace_back();
+  p.title = fmt::format("Stability frontier, {}: levels passed of {} (level k: knob x 2^(k-1))", f.scene, f.levels);
+  p.extra_commands = {"set style histogram cluster gap 1", "set style fill solid 0.8 border -1", "set boxwidth 0.9"};
+  p.y.range.min = 0, p.y.range.max = f.levels + 0.5;
+  p.y.tic_step = 1;
+  p.grid = Grid::y;
+  p.key.place = KeyPlace::outside_right;
+  p.x.tic_rotation = -30;
+  p.y.label = "levels passed";
+  for (size_t k = 0; k < knobs.size(); ++k) {
+    PlotSeries& bars = p.series.emplace_back();
+    bars.data = d.name, bars.columns = fmt::format("{}:xtic(1)", k + 2), bars.style = SeriesStyle::histograms;
+    bars.title_from_column_header = true;
+  }
+  draw_plot(plot);
+  return {FigureKind::frontier, f.scene, "figures/" + plot.output(),
           fmt::format("Stability frontier on {}: for each engine, how many doublings of each knob it survived ({} "
                       "steps per run; a run fails on tunnelling, a non-finite state, or energy off the reference by "
                       "more than {:.0f}%). 0: the scene itself already failed.",
@@ -548,7 +559,7 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
   const fs::path dir = fs::path(out_dir) / "figures";
   fs::create_directories(dir);
   const fs::path here = fs::current_path();
-  fs::current_path(dir);  // gnuplot scripts name their data files relative to the figures folder
+  fs::current_path(dir);  // the plots and the viewer page are written into the working folder (plot.h)
   std::vector<Figure> figures;
   try {
     std::vector<std::string> order;
@@ -558,12 +569,12 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
       by_scene[r.scene].push_back(&r);
     }
     for (const auto& scene : order) {
-      if (auto energy = energy_figure(scene, by_scene[scene], in, ".")) figures.push_back(std::move(*energy));
+      if (auto energy = energy_figure(scene, by_scene[scene], in)) figures.push_back(std::move(*energy));
       std::vector<const Result*> pictured;  // the thesis's algorithm beside ours
       for (const Result* r : by_scene[scene])
         if ((role_of(in, r->engine) == EngineRole::thesis || role_of(in, r->engine) == EngineRole::ours) &&
             !r->series.final_pos.empty()) pictured.push_back(r);
-      if (!pictured.empty()) figures.push_back(scene_figure(scene, pictured, "."));
+      if (!pictured.empty()) figures.push_back(scene_figure(scene, pictured));
       // Animated: the thesis's port and ours, with the first external engine that ran to the end.
       std::vector<const Result*> animated;
       for (const Result* r : pictured)
@@ -573,15 +584,15 @@ std::vector<Figure> draw_figures(const ReportInputs& in, const std::string& out_
           animated.push_back(r);
           break;
         }
-      if (animated.size() >= 2) figures.push_back(animation_figure(scene, animated, "."));
+      if (animated.size() >= 2) figures.push_back(animation_figure(scene, animated));
       if (std::any_of(by_scene[scene].begin(), by_scene[scene].end(), [](const Result* r) { return !r->series.frames.empty(); }))
-        figures.push_back(viewer_figure(scene, by_scene[scene], "."));
+        figures.push_back(viewer_figure(scene, by_scene[scene]));
     }
-    for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw, "."));
+    for (const SweepResult& sw : in.sweeps) figures.push_back(work_precision_figure(sw));
     for (Figure& f : front_figures(in)) figures.push_back(std::move(f));
-    for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f, "."));
+    for (const FrontierResult& f : in.frontiers) figures.push_back(frontier_figure(f));
     if (in.bench && !in.bench->rows.empty())
-      for (Figure& f : scaling_figures(*in.bench, ".")) figures.push_back(std::move(f));
+      for (Figure& f : scaling_figures(*in.bench)) figures.push_back(std::move(f));
   } catch (...) {
     fs::current_path(here);
     throw;

@@ -1,6 +1,6 @@
 #pragma once
-// Running gnuplot (Debian's gnuplot-nox, pngcairo) on a script the figures write, and naming their
-// files.
+// Running gnuplot (Debian's gnuplot-nox, pngcairo) on a script draw_plot (plot.h) writes, and naming
+// the figures' files.
 #include <filesystem>
 #include <string>
 
