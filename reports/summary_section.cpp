@@ -30,25 +30,30 @@ std::string term_words(SpecTerm t, double bound) {
   return "";
 }
 
-// "chipmunk as shipped, step dt/64, iterations = 5": a configuration found.
-std::string configuration_words(const ReportInputs& in, const MatchResult& m, const MatchOutcome& oc) {
-  const MatchTry& t = m.tries[oc.found];
+// "**chipmunk** as shipped": an engine and its profile.
+std::string engine_words(const MatchOutcome& oc) {
   const std::string profile = oc.profile == "stock"   ? " as shipped"
                               : oc.profile == "tuned" ? " tuned"
                               : oc.profile == "default" ? ""
                                                         : fmt::format(" ({})", oc.profile);
-  const std::string knob = t.knob.empty() ? "" : fmt::format(", {} = {}", t.knob, json_text(t.value));
-  return fmt::format("**{}**{}, {}{}{}", oc.engine, profile, step_text(t.halvings), knob,
-                     refuted_mark(in, oc.engine, oc.profile));
+  return fmt::format("**{}**{}", oc.engine, profile);
 }
 
-// The pick's cells: configuration and cost, or the nearest miss.
+// "**chipmunk** as shipped, dt/64, iterations = 5": a configuration found.
+std::string configuration_words(const ReportInputs& in, const MatchResult& m, const MatchOutcome& oc) {
+  const MatchTry& t = m.tries[oc.found];
+  const std::string knob = t.knob.empty() ? "" : fmt::format(", {} = {}", t.knob, json_text(t.value));
+  return fmt::format("{}, {}{}{}", engine_words(oc), step_text(t.halvings), knob, refuted_mark(in, oc.engine, oc.profile));
+}
+
+// The pick's cells: configuration and cost, or the nearest miss. Those tied with the pick are named;
+// their configurations and costs are on the scene's page.
 std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const MatchResult& m, EngineRole role) {
   if (const MatchOutcome* oc = cheapest_reached(m, role_name(role))) {
     std::string words = configuration_words(in, m, *oc);
     const char* joint = "; [tied](pages/terms.md#cost-step-and-search) with ";
     for (const MatchOutcome* tie : tied_with(m, *oc)) {
-      words += fmt::format("{}{} ({})", joint, configuration_words(in, m, *tie), cost_spread_text(*tie));
+      words += joint + engine_words(*tie);
       joint = " and ";
     }
     return {words, cost_spread_text(*oc)};
@@ -105,14 +110,21 @@ std::string provenance(const ReportInputs& in) {
   return md;
 }
 
-// A search carried in rather than run by this report: when, by which build and within what.
-std::string measured_text(const MatchResult& m) {
-  return fmt::format("The row of `{}` is a search too costly for this suite, measured on its own (`ballbench match`) "
-                     "and carried into this report as it was: measured {} by build {}, each search's budget {:g} runs "
-                     "of the scene at dt{}.",
-                     m.scene, json_string_field(m.context, "date", "(not recorded)").substr(0, 10),
-                     json_string_field(m.context, "build", "(not recorded)"), m.budget_runs,
-                     m.ceiling_ns > 0 ? fmt::format(", ceiling {:g}x our cost", m.ceiling) : "");
+// The searches carried in rather than run by this report: when, by which build and within what.
+std::string measured_text(const ReportInputs& in) {
+  std::vector<std::string> each;
+  for (const MatchResult& m : in.matches)
+    if (in.measured.contains(m.scene))
+      each.push_back(fmt::format("`{}` (measured {} by build {}, each search's budget {:g} runs of the scene at dt{})",
+                                 m.scene, json_string_field(m.context, "date", "(not recorded)").substr(0, 10),
+                                 json_string_field(m.context, "build", "(not recorded)"), m.budget_runs,
+                                 m.ceiling_ns > 0 ? fmt::format(", ceiling {:g}x our cost", m.ceiling) : ""));
+  if (each.empty()) return "";
+  const bool one = each.size() == 1;
+  return fmt::format("{} {} {} too costly for this suite, measured on {} own (`ballbench match`) and carried into "
+                     "this report as {}. ",
+                     one ? "The row of" : "The rows of", fmt::join(each, " and "), one ? "is a search" : "are searches",
+                     one ? "its" : "their", one ? "it was" : "they were");
 }
 
 }  // namespace
@@ -148,14 +160,11 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
                        [&](const MatchResult& m) { return m.n >= kAtScale && in.measured.contains(m.scene) == measured; });
   };
   md += "\n";
-  for (const MatchResult& m : in.matches)
-    if (in.measured.contains(m.scene)) md += measured_text(m) + " ";
+  md += measured_text(in);
   if (!at_scale(false))  // this report ran none: the full suite's
-    md += fmt::format("At 10^4 balls and more: {} (`scripts/report --full`){}.",
-                    at_scale(true) ? "the other equal-accuracy searches (the thesis's fluid at 10^4, a 10^4 gas) are the full suite's"
-                             : "the equal-accuracy searches (a settled 10^4 pile, the thesis's fluid at 10^4, a 10^4 gas) "
-                               "are the full suite's",
-                    in.bench ? "; how each engine's step cost grows is on [scaling](pages/scaling.md)" : "");
+    md += fmt::format("The {}equal-accuracy searches at 10^4 balls are the full suite's (`scripts/report --full`){}.",
+                      at_scale(true) ? "other " : "",
+                      in.bench ? "; how each engine's step cost grows is on [scaling](pages/scaling.md)" : "");
   md += "\n\n" + provenance(in);
   for (const Figure& f : figures)
     if (f.kind == FigureKind::fronts) md += fmt::format("![every scene's work-precision front]({})\n\n*{}*\n\n", f.file, f.caption);
