@@ -57,12 +57,12 @@ void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vecto
       "after the closed form; `never`: still slipping at the end.\n\n",
       one ? "the ball rolls" : "every ball rolls");
   // Of several balls, each run's farthest may be another ball: its closed form beside its speed.
-  put("| engine | profile | status | {} | vs closed form | time to roll (s) | vs closed form | slip at end "
-      "(m/s) |\n|---|---|---|---:|{}---:|---:|---:|---:|\n",
+  put("| engine | status | {} | vs closed form | time to roll (s) | vs closed form | slip at end "
+      "(m/s) |\n|---|---|---:|{}---:|---:|---:|---:|\n",
       one ? "final speed (m/s)" : "farthest ball's final speed (m/s) | its closed form (m/s)", one ? "" : "---:|");
   for (const Result* r : rows) {
     if (!ran(*r)) {
-      put("| {0} | {1} | {2} | {3} |{4} {3} | {3} | {3} | {3} |\n", r->engine, r->profile, status_text(*r), kNoData,
+      put("| {0} | {1} | {2} |{3} {2} | {2} | {2} | {2} |\n", run_label(*r), status_text(*r), kNoData,
           one ? "" : fmt::format(" {} |", kNoData));
       continue;
     }
@@ -76,7 +76,7 @@ void put_rolling(MarkdownBuffer& put, const std::string& scene, const std::vecto
     }
     if (t && expected_time) time_error = fmt::format("{:+.3f} s", *t - *expected_time);
     const auto slip = m.number(Metric::slip_final_max);
-    put("| {} | {} | {} | {} |{} {} | {} | {} | {} |\n", r->engine, r->profile, status_text(*r),
+    put("| {} | {} | {} |{} {} | {} | {} | {} |\n", run_label(*r), status_text(*r),
         or_none(speed, "{:.4f}"), one ? "" : fmt::format(" {} |", or_none(expected, "{:.4f}")), speed_error,
         t ? fmt::format("{:.2f}", *t) : "never", time_error, slip ? fmt::format("{:.2g}", *slip) : kNoData);
   }

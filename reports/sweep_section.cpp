@@ -44,8 +44,8 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
       "below the other's fastest). Two settings whose repeats overlap are equally fast: a ranking inside the "
       "run-to-run noise is no claim, so a front may hold settings whose medians alone would put one behind "
       "another.\n\n");
-  put("| engine | profile | setting | dt (s) | engine time (ms): median [min, max] | ns/ball-step | pos error (m) | "
-      "energy error | tunnelling | sticking |\n|---|---|---|---|---|---|---|---|---|---|\n");
+  put("| engine | setting | dt (s) | engine time (ms): median [min, max] | ns/ball-step | pos error (m) | "
+      "energy error | tunnelled, stuck |\n|---|---|---|---|---|---|---|---|\n");
   std::vector<const SweepPoint*> front;
   for (const SweepPoint& p : sw.points)
     if (p.pareto) front.push_back(&p);
@@ -57,7 +57,7 @@ void put_sweep(MarkdownBuffer& put, const SweepResult& sw, const std::vector<Fig
   });
   for (const SweepPoint* p : front) {
     const auto [lo, hi] = std::minmax_element(p->engine_s.begin(), p->engine_s.end());
-    put("| {} | {} | {} | {} | {:.3g} [{:.3g}, {:.3g}] | {:.0f} | {:.3g} | {:.3g} | {} | {} |\n", p->engine, p->profile,
+    put("| {} | {} | {} | {:.3g} [{:.3g}, {:.3g}] | {:.0f} | {:.3g} | {:.3g} | {}, {} |\n", run_label(p->engine, p->profile),
         markdown_cell(setting_text(*p)), p->dt, 1e3 * p->engine_s_median(), 1e3 * *lo, 1e3 * *hi, p->ns_median(),
         p->pos_rms, p->energy_rel, p->tunnelling, p->sticking);
   }

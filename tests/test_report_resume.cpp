@@ -241,7 +241,7 @@ TEST_F(ReportResume, ReusesCompleteResultsAndRunsTheRest) {
                            // refusing with the reason, and both heaps' angles side by side
                            "# Friction", "### `slide-to-roll`: rolling against the closed form",
                            "### `spin-drop`: rolling against the closed form",
-                           "| home-seed | default | unsupported: home-seed cannot run scene 'spin-drop'",
+                           "| home-seed | unsupported: home-seed cannot run scene 'spin-drop'",
                            "| engine | `rough-pile` (deg) | `smooth-pile` (deg) |"})
     EXPECT_NE(md.find(want), std::string::npos) << want;
   EXPECT_TRUE(fs::exists(out() / "figures" / "seed-box-work-precision.png"));
