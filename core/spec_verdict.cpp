@@ -11,21 +11,6 @@
 namespace ballbench {
 namespace {
 
-// A term's figure from the run's metric values alone (none for the terms against the reference).
-std::optional<double> metric_figure(SpecTerm t, const MetricValues& v) {
-  switch (t) {
-    case SpecTerm::overlap: return v.number(Metric::penetration_after_start);
-    case SpecTerm::tunnelling: return static_cast<double>(v.tunnelled());
-    case SpecTerm::sticking: return static_cast<double>(v.stuck());
-    case SpecTerm::rest_speed: return v.number(Metric::jitter);
-    case SpecTerm::energy_drift: return v.number(Metric::energy_max_rel_drift);
-    case SpecTerm::energy_error:
-    case SpecTerm::horizon: return std::nullopt;
-    case SpecTerm::rolling: return v.number(Metric::rolling_error);
-  }
-  return std::nullopt;
-}
-
 // The metric whose meter measures a term, none for the terms against the reference.
 std::optional<Metric> term_metric(SpecTerm t) {
   switch (t) {
@@ -39,6 +24,15 @@ std::optional<Metric> term_metric(SpecTerm t) {
     case SpecTerm::rolling: return Metric::rolling_error;
   }
   return std::nullopt;
+}
+
+// A term's figure from the run's metric values alone (none for the terms against the reference):
+// the counts of walls and pairs together, the others their metric's value.
+std::optional<double> metric_figure(SpecTerm t, const MetricValues& v) {
+  if (t == SpecTerm::tunnelling) return static_cast<double>(v.tunnelled());
+  if (t == SpecTerm::sticking) return static_cast<double>(v.stuck());
+  const auto m = term_metric(t);
+  return m ? v.number(*m) : std::nullopt;
 }
 
 }  // namespace
