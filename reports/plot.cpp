@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "enum_words.h"
 #include "gnuplot.h"
 
 namespace ballbench {
@@ -63,25 +64,29 @@ std::string terminal_lines(const Plot& plot) {
   return out + "set output " + quoted(plot.output()) + "\n";
 }
 
-const char* key_place_words(KeyPlace p) {
-  switch (p) {
-    case KeyPlace::hidden: return "";
-    case KeyPlace::inside_top_right: return "inside right top";
-    case KeyPlace::outside_right_top: return "outside right top";
-    case KeyPlace::outside_right: return "outside right";
-    case KeyPlace::below: return "below";
-    case KeyPlace::bottom_right: return "bottom right";
-    case KeyPlace::centre: return "center center";
-  }
-  return "";
-}
+// Gnuplot's words for each key place and series style.
+constexpr EnumWords<KeyPlace, 7> kKeyPlaceWords{"key place",
+                                               {{{KeyPlace::hidden, ""},
+                                                 {KeyPlace::inside_top_right, "inside right top"},
+                                                 {KeyPlace::outside_right_top, "outside right top"},
+                                                 {KeyPlace::outside_right, "outside right"},
+                                                 {KeyPlace::below, "below"},
+                                                 {KeyPlace::bottom_right, "bottom right"},
+                                                 {KeyPlace::centre, "center center"}}}};
+constexpr EnumWords<SeriesStyle, 6> kSeriesStyleWords{"series style",
+                                                     {{{SeriesStyle::lines, "lines"},
+                                                       {SeriesStyle::linespoints, "linespoints"},
+                                                       {SeriesStyle::points, "points"},
+                                                       {SeriesStyle::circles, "circles"},
+                                                       {SeriesStyle::xerrorlines, "xerrorlines"},
+                                                       {SeriesStyle::histograms, "histograms"}}}};
 
 // The key as declared: `set key` changes only the options it names, so a key after another one
 // starts from the default.
 std::string key_line(const PlotKey& k, const PlotKey& was) {
   if (k.place == KeyPlace::hidden) return "unset key\n";
   std::string out = was == PlotKey{} ? "" : "set key default\n";
-  out += fmt::format("set key {}", key_place_words(k.place));
+  out += fmt::format("set key {}", kKeyPlaceWords.word(k.place));
   if (k.horizontal_rows) out += fmt::format(" horizontal maxrows {}", k.horizontal_rows);
   if (k.width) out += fmt::format(" width {}", k.width);
   if (!k.font.empty()) out += " font " + quoted(k.font);
@@ -187,23 +192,11 @@ std::string overlay_lines(const PlotPanel& p, const PlotPanel& was) {
   return out;
 }
 
-const char* style_word(SeriesStyle s) {
-  switch (s) {
-    case SeriesStyle::lines: return "lines";
-    case SeriesStyle::linespoints: return "linespoints";
-    case SeriesStyle::points: return "points";
-    case SeriesStyle::circles: return "circles";
-    case SeriesStyle::xerrorlines: return "xerrorlines";
-    case SeriesStyle::histograms: return "histograms";
-  }
-  return "lines";
-}
-
 std::string series_text(const PlotSeries& s) {
   std::string out = s.data.empty() ? s.expression : quoted(s.data);
   if (s.index) out += fmt::format(" index {}", *s.index);
   if (!s.columns.empty()) out += " using " + s.columns;
-  out += fmt::format(" with {}", style_word(s.style));
+  out += fmt::format(" with {}", kSeriesStyleWords.word(s.style));
   if (s.line_width) out += fmt::format(" lw {}", s.line_width);
   if (s.dash) out += fmt::format(" dt {}", s.dash);
   if (s.point) out += fmt::format(" pt {}", s.point);
