@@ -19,12 +19,13 @@ namespace ballbench {
 namespace {
 
 // "" for none: an outcome that met the spec has no stop.
-constexpr EnumWords<SearchStop, 5> kStopWords{"search stop",
+constexpr EnumWords<SearchStop, 6> kStopWords{"search stop",
                                               {{
                                                   {SearchStop::none, ""},
                                                   {SearchStop::finest_step, "finest step"},
                                                   {SearchStop::budget, "budget"},
                                                   {SearchStop::ceiling, "ceiling"},
+                                                  {SearchStop::outpaced, "outpaced"},
                                                   {SearchStop::interrupt, "interrupt"},
                                               }}};
 
@@ -124,12 +125,34 @@ std::optional<double> ratio_at_least(const MatchResult& m, const MatchOutcome& o
   return ceiling ? std::optional(m.ceiling_ns / ours.cost_ns) : std::nullopt;
 }
 
+std::optional<double> outpace_ns(const MatchResult& m, const std::string& role) {
+  if (!(m.within > 0)) return std::nullopt;
+  std::optional<double> cheapest;
+  for (const MatchOutcome& oc : m.outcomes)
+    if (oc.reached && oc.role == role && oc.cost_ns > 0) cheapest = std::min(cheapest.value_or(oc.cost_ns), oc.cost_ns);
+  return cheapest ? std::optional(m.within * *cheapest) : std::nullopt;
+}
+
+void mark_outpaced(MatchResult& m) {
+  for (MatchOutcome& oc : m.outcomes) {
+    const auto bound = outpace_ns(m, oc.role);
+    if (!bound) continue;
+    const std::string what = fmt::format("{:g}x the cheapest {} engine's cost ({} ns)", m.within, oc.role,
+                                         cost_text(*bound / m.within));
+    if (oc.ranked() && oc.cost_ns > *bound)
+      oc.stop = SearchStop::outpaced, oc.stopped = fmt::format("{}, met at {} ns", what, cost_text(oc.cost_ns));
+    else if (!oc.reached && oc.stop == SearchStop::outpaced)
+      oc.stopped = what;
+  }
+}
+
 const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role) {
   const MatchOutcome* nearest = nullptr;
   double nearest_miss = 0;
   for (const MatchOutcome& oc : m.outcomes) {
-    const int shown = oc.over_ceiling() ? oc.found : oc.best;
-    if ((oc.reached && !oc.over_ceiling()) || oc.role != role || shown < 0) continue;
+    const bool met_unranked = oc.over_ceiling() || oc.outpaced();
+    const int shown = met_unranked ? oc.found : oc.best;
+    if ((oc.reached && !met_unranked) || oc.role != role || shown < 0) continue;
     const double d = miss(m.tries[shown], m.spec);
     if (std::isfinite(d) && (!nearest || d < nearest_miss)) nearest = &oc, nearest_miss = d;
   }
@@ -191,7 +214,7 @@ nlohmann::json to_json(const MatchResult& m) {
           {"scene_class", m.scene_class}, {"use_case", m.use_case}, {"scene_digest", m.scene_digest},
           {"searches", m.searches},  {"n", m.n},        {"dt", m.dt},
           {"spec", m.spec.to_json()}, {"budget_runs", m.budget_runs}, {"run_ball_steps", m.run_ball_steps},
-          {"ceiling", m.ceiling}, {"ceiling_ns", m.ceiling_ns}, {"context", m.context}, {"interrupted", m.interrupted},
+          {"ceiling", m.ceiling}, {"ceiling_ns", m.ceiling_ns}, {"within", m.within}, {"context", m.context}, {"interrupted", m.interrupted},
           {"shard", {{"index", m.shard_index}, {"count", m.shard_count}}},
           {"tries", tries},          {"outcomes", outcomes}};
 }
@@ -215,6 +238,7 @@ MatchResult match_from_json(const nlohmann::json& j) {
   m.budget_runs = j.value("budget_runs", 0.0);
   m.run_ball_steps = j.value("run_ball_steps", 0L);
   m.ceiling = j.value("ceiling", 0.0), m.ceiling_ns = j.value("ceiling_ns", 0.0);
+  m.within = j.value("within", 0.0);  // files written before it was recorded: none
   m.context = j.at("context");
   m.interrupted = j.at("interrupted").get<std::string>();
   m.shard_index = j.at("shard").at("index").get<int>();
@@ -298,9 +322,10 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
     const MatchResult& s = shards[k];
     if (s.scene != first.scene || s.scene_source != first.scene_source || s.scene_digest != first.scene_digest ||
         s.spec.to_json() != first.spec.to_json() || s.searches != first.searches || s.shard_count != first.shard_count ||
-        s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs || s.ceiling != first.ceiling)
+        s.n != first.n || s.dt != first.dt || s.budget_runs != first.budget_runs || s.ceiling != first.ceiling ||
+        s.within != first.within)
       throw InputError(fmt::format("merge: {} is a shard of another match than {} (its scene's content, spec, "
-                                   "searches, budget, ceiling or shard count differs)",
+                                   "searches, budget, ceiling, within or shard count differs)",
                                    names[k], names.front()));
     roll.take(k, s.shard_index, s.interrupted, json_string_field(s.context, "build"));
     out.context["shards"].push_back(s.context);
@@ -315,6 +340,7 @@ MatchResult merge_match_shards(const std::vector<MatchResult>& shards, const std
   std::vector<std::string> searched;
   for (const MatchOutcome& o : out.outcomes) searched.push_back(o.engine + "/" + o.profile);
   check_plan_covered(first.searches, searched, "search");
+  mark_outpaced(out);  // against the cheapest of every shard
   return out;
 }
 

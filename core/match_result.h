@@ -59,8 +59,9 @@ inline constexpr double kKnobCostMargin = 0.85;
 
 // Why a search ended without a ranked result: it tried its finest step, it spent its budget, its
 // tries (or the configuration it met, timed alone) passed the match's ceiling
-// (MatchResult::ceiling_ns), or the user interrupted it.
-enum class SearchStop { none, finest_step, budget, ceiling, interrupt };
+// (MatchResult::ceiling_ns) or `within` times the cheapest configuration an engine of its role met
+// (outpace_ns: outpaced), or the user interrupted it.
+enum class SearchStop { none, finest_step, budget, ceiling, outpaced, interrupt };
 
 // Its word in results files ("finest step", "budget", ...); search_stop_from_text reads it back
 // and throws InputError for any other.
@@ -104,6 +105,9 @@ struct MatchOutcome {
   // It met the spec, but its cost timed alone is past the match's ceiling: reported beside the
   // engines whose tries stopped there, not ranked.
   bool over_ceiling() const { return reached && stop == SearchStop::ceiling; }
+  // It met the spec, but its cost timed alone is past `within` times the cheapest of its role's
+  // (outpace_ns): it cannot be the cheapest, and is reported beside those whose tries stopped there.
+  bool outpaced() const { return reached && stop == SearchStop::outpaced; }
   // Met, its search complete and its cost under any ceiling: ranked against the others.
   bool ranked() const { return reached && stop == SearchStop::none; }
   // Its try indices moved by `offset`: its tries placed after `offset` others in one list.
@@ -125,6 +129,10 @@ struct MatchResult {
   // solver's default profile (0: no ceiling); ceiling_ns is that cost (ns per ball per scene step).
   double ceiling = 0;
   double ceiling_ns = 0;
+  // A try stops once its CPU time passes kClearlyCostlier times `within` times the cheapest
+  // configuration that met so far for an engine of its role (0: none); outpace_ns is the bound it
+  // is reported against.
+  double within = 0;
   long run_ball_steps = 0;  // ball steps in one such run: n x the scene's steps
   nlohmann::json context;
   std::string interrupted;
@@ -171,6 +179,16 @@ std::vector<const MatchOutcome*> tied_with(const MatchResult& m, const MatchOutc
 // ceiling), the one whose nearest try came closest (the smallest miss; a configuration met past the
 // ceiling, its own), or none: the engine to name where none is ranked.
 const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& role);
+
+// `within` times the cheapest cost timed alone of the outcomes of `role` that met the spec (ranked
+// or not: each met at its cost), or none (no such bound, or none met).
+std::optional<double> outpace_ns(const MatchResult& m, const std::string& role);
+
+// Each outcome that met the spec, under the ceiling and past its role's outpace_ns, marked
+// outpaced; each search stopped there given the bound's final figure. Run on a whole match (and on
+// merged shards): which engines are outpaced depends on the costs found, not on the order in
+// which the searches ran.
+void mark_outpaced(MatchResult& m);
 
 // Where no external engine met the spec, at least one stopped at the match's ceiling and none ran
 // out of budget: the ratio ours is cheaper by at least (the ceiling's cost over ours); none

@@ -62,7 +62,8 @@ void put_match_table(std::string& md, const ReportInputs& in, const MatchResult&
     md += fmt::format("| {} | {} | ", label,
                       v == MatchVerdict::met         ? "yes"
                       : v == MatchVerdict::cut_short ? markdown_cell("cut short: " + miss_text(m, *oc))
-                      : v == MatchVerdict::over_ceiling ? markdown_cell("yes, " + miss_text(m, *oc))
+                      : v == MatchVerdict::over_ceiling || v == MatchVerdict::outpaced
+                          ? markdown_cell("yes, " + miss_text(m, *oc))
                                                      : markdown_cell("no: " + miss_text(m, *oc)));
     if (shown < 0) {
       md += "n/a | n/a |";
@@ -92,6 +93,11 @@ void put_match_method(std::string& md, const MatchResult& m, bool measured) {
     md += fmt::format(" Ceiling: {:g}x our solver's cost ({} ns), searched first; a try stopped once its CPU time passed "
                       "{:g}x the ceiling, and a configuration met past the ceiling is over it.",
                       m.ceiling, cost_text(m.ceiling_ns), kClearlyCostlier);
+  if (m.within > 0)
+    md += fmt::format(" An engine is searched while it can be within {:g}x the cheapest of its kind: a try stopped "
+                      "once its CPU time passed {:g}x that many times the cheapest configuration met so far, and one "
+                      "met past it, timed alone, is outpaced.",
+                      m.within, kClearlyCostlier);
   md += fmt::format(" Measured {} by build {}{}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
                     json_string_field(m.context, "build", "(not recorded)"),
                     measured ? ": a search measured on its own (`ballbench match`) and carried into this report as it was"
@@ -146,6 +152,7 @@ void section_for(std::string& md, const ReportInputs& in, const MatchResult& m, 
 MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
   if (oc.cut_short()) return MatchVerdict::cut_short;
   if (oc.over_ceiling()) return MatchVerdict::over_ceiling;
+  if (oc.outpaced()) return MatchVerdict::outpaced;
   if (oc.reached) return MatchVerdict::met;
   bool any_ok = false, all_unsupported = true;
   for (const MatchTry& t : m.tries)
@@ -157,6 +164,17 @@ MatchVerdict verdict_of(const MatchResult& m, const MatchOutcome& oc) {
   return any_ok ? MatchVerdict::not_reached : MatchVerdict::failed;
 }
 
+namespace {
+
+// "past 2x the cheapest external engine (20 908 ns)": the bound an outpaced search is past.
+std::string outpaced_text(const MatchResult& m, const MatchOutcome& oc) {
+  const auto bound = outpace_ns(m, oc.role);
+  return fmt::format("past {:g}x the cheapest {} engine{}", m.within, oc.role,
+                     bound ? fmt::format(" ({} ns)", cost_text(*bound)) : "");
+}
+
+}  // namespace
+
 std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   const MatchVerdict v = verdict_of(m, oc);
   // What met is said by its search's stop, not by a try that missed.
@@ -167,6 +185,7 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
                          "not ranked",
                          oc.stopped);
     case MatchVerdict::over_ceiling: return fmt::format("past the ceiling ({} ns): not ranked", cost_text(m.ceiling_ns));
+    case MatchVerdict::outpaced: return outpaced_text(m, oc) + ": not ranked";
     default: break;
   }
   if (oc.best < 0) return "no configuration ran";
@@ -174,6 +193,7 @@ std::string miss_text(const MatchResult& m, const MatchOutcome& oc) {
   const std::string finest = oc.finest_dt > 0 ? fmt::format("dt/{:.0f}", std::round(m.dt / oc.finest_dt)) : "dt";
   const std::string stop = oc.stop == SearchStop::budget    ? ", out of budget"
                            : oc.stop == SearchStop::ceiling ? fmt::format(", over the ceiling ({} ns)", cost_text(m.ceiling_ns))
+                           : oc.stop == SearchStop::outpaced ? ", " + outpaced_text(m, oc)
                                                             : "";
   // A try stopped where it missed: when it passed its bound.
   const double duration = m.n > 0 ? double(m.run_ball_steps) / m.n * m.dt : 0;

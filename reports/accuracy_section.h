@@ -17,6 +17,7 @@ enum class MatchVerdict {
   met,          // a configuration met the spec
   cut_short,    // one met, but the search stopped (budget, interrupt) before trying every configuration
   over_ceiling, // one met, at a cost timed alone past the match's ceiling
+  outpaced,     // one met, at a cost timed alone past `within` times the cheapest of its role's (outpace_ns)
   not_reached,  // it ran, but no configuration tried met the spec
   unsupported,  // the engine refused the scene at every configuration
   failed,       // no configuration ran to its end (crashed, timed out, diverged at every step size)

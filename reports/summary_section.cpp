@@ -61,9 +61,11 @@ std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const Mat
   const MatchOutcome* near = nearest_unreached(m, role_name(role));
   if (!near) return {"none ran", "n/a"};
   const std::string why = near->stop == SearchStop::ceiling ? fmt::format("within {:g}x our cost", m.ceiling)
-                          : near->stop == SearchStop::budget ? "within the budget"
-                                                             : "at any step tried";
-  const std::string met = near->over_ceiling() ? fmt::format(", met at {} ns", cost_text(near->cost_ns)) : "";
+                          : near->stop == SearchStop::budget   ? "within the budget"
+                          : near->stop == SearchStop::outpaced ? "ranked"
+                                                               : "at any step tried";
+  const std::string met = near->over_ceiling() || near->outpaced() ? fmt::format(", met at {} ns", cost_text(near->cost_ns))
+                                                                   : "";
   return {fmt::format("none {} (nearest: {}{})", why, run_label(near->engine, near->profile), met), "n/a"};
 }
 

@@ -44,11 +44,15 @@ void put_cost_terms(MarkdownBuffer& put) {
       "try stops once its CPU time passes {:g} times the ceiling (so far past it that the machine's load cannot carry "
       "a try under the ceiling over it), and a configuration that met at a cost past the ceiling is \"over the "
       "ceiling\", not ranked. Where every external engine is over it, our ratio reads \"over Nx\".\n"
+      "- **outpaced**: an engine whose configurations cost more than a multiple (each scene's section states it) "
+      "of the cheapest configuration any engine of its kind (ours, external) met: it cannot be the cheapest, so "
+      "its tries stop once their CPU time passes {:g} times that, and one that met past it is \"outpaced\", not "
+      "ranked.\n"
       "- **not reached**: no configuration tried met the spec; the nearest miss is named with its figure and step; "
-      "\"out of budget\" and \"over the ceiling\" say why the search stopped.\n"
+      "\"out of budget\", \"over the ceiling\" and \"outpaced\" say why the search stopped.\n"
       "- **cut short**: a configuration met the spec, but the search stopped (its budget, an interrupt) before "
       "trying every configuration, so a cheaper one may exist: its cost is an upper bound and it is not ranked.\n\n",
-      timing_method_text(), kClearlyCostlier, kKnobCostMargin, kClearlyCostlier);
+      timing_method_text(), kClearlyCostlier, kKnobCostMargin, kClearlyCostlier, kClearlyCostlier);
 }
 
 void put_profiles(MarkdownBuffer& put) {

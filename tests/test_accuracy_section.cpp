@@ -10,6 +10,8 @@
 #include <iterator>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "accuracy_section.h"
 #include "front_figures.h"
 #include "summary_section.h"
@@ -151,6 +153,63 @@ TEST(AccuracySection, AConfigurationMetPastTheCeilingIsOverItNotRanked) {
   EXPECT_NE(summary.find("none within 40x our cost (nearest: chipmunk/stock, met at 45000 ns)"), std::string::npos)
       << summary;
   EXPECT_NE(summary.find("over 40x"), std::string::npos) << summary;
+}
+
+// An engine past `within` times the cheapest of its role is outpaced: decided from the costs found
+// (not from which search ran first), not ranked, its row saying past what; the pick and the ratio
+// are the same as without the bound. Merged shards are judged against the cheapest of them all.
+TEST(AccuracySection, AnEnginePastAMultipleOfItsRolesCheapestIsOutpacedNotRanked) {
+  MatchResult m = pile();
+  m.tries.push_back(try_of("box2d3", "stock", 3, true, 0.008, 12000));
+  m.outcomes.push_back(outcome("box2d3", "stock", "external", 5, -1, 4, 12000));
+  m.outcomes[2].stop = SearchStop::outpaced;  // box2d's tries stopped in the race
+  m.within = 2;
+  ASSERT_TRUE(outpace_ns(m, "external"));
+  EXPECT_DOUBLE_EQ(*outpace_ns(m, "external"), 24000);
+  EXPECT_DOUBLE_EQ(*outpace_ns(m, "ours"), 1800);
+  EXPECT_FALSE(outpace_ns(m, "reference"));  // none of that role met
+  mark_outpaced(m);
+  EXPECT_TRUE(m.outcomes[1].outpaced());  // chipmunk's 45 000 ns is past 2 x 12 000
+  EXPECT_FALSE(m.outcomes[1].ranked());
+  EXPECT_EQ(m.outcomes[1].stopped, "2x the cheapest external engine's cost (12000 ns), met at 45000 ns");
+  EXPECT_EQ(m.outcomes[2].stopped, "2x the cheapest external engine's cost (12000 ns)");
+  EXPECT_TRUE(m.outcomes[0].ranked());
+  EXPECT_TRUE(m.outcomes[4].ranked());
+  EXPECT_EQ(cheapest_reached(m, "external"), &m.outcomes[4]);
+  EXPECT_EQ(verdict_of(m, m.outcomes[1]), MatchVerdict::outpaced);
+  const std::string md = accuracy_section(ReportInputs{}, m, {});
+  EXPECT_NE(md.find("| chipmunk/stock | yes, past 2x the cheapest external engine (24000 ns): not ranked | dt/64 | "
+                    "45000 |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| box2d/stock | no: overlap 0.034 at dt/64, past 2x the cheapest external engine (24000 ns) |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("within 2x the cheapest of its kind"), std::string::npos) << md;
+  // Without the bound, every engine that met is ranked.
+  MatchResult none = pile();
+  none.within = 0;
+  mark_outpaced(none);
+  EXPECT_TRUE(none.outcomes[1].ranked());
+  // Through the results file, and merged: the other shard's cheaper engine outpaces this one's.
+  const auto json = std::filesystem::temp_directory_path() / fmt::format("ballbench-outpaced-{}.json", getpid());
+  write_match_files(m, json.string(), json.string() + ".csv");
+  const MatchResult back = read_match_file(json.string());
+  std::filesystem::remove(json), std::filesystem::remove(json.string() + ".csv");
+  EXPECT_EQ(back.within, 2);
+  EXPECT_EQ(back.outcomes[1].stop, SearchStop::outpaced);
+  MatchResult a = pile(), b = pile();
+  a.within = b.within = 2, a.shard_count = b.shard_count = 2, b.shard_index = 2;
+  a.searches = b.searches = {"home/default", "chipmunk/stock", "box2d/stock", "home-seed/default", "box2d3/stock"};
+  a.outcomes.erase(a.outcomes.begin() + 2, a.outcomes.end());  // home, chipmunk
+  b.outcomes.erase(b.outcomes.begin(), b.outcomes.begin() + 2);  // box2d, home-seed, and box2d3:
+  b.tries.push_back(try_of("box2d3", "stock", 3, true, 0.008, 12000));
+  b.outcomes.push_back(outcome("box2d3", "stock", "external", 5, -1, 4, 12000));
+  mark_outpaced(a), mark_outpaced(b);
+  EXPECT_TRUE(a.outcomes[1].ranked());  // alone in its shard
+  const MatchResult merged = merge_match_shards({a, b}, {"a.json", "b.json"});
+  ASSERT_EQ(merged.outcomes.size(), 5u);
+  EXPECT_TRUE(merged.outcomes[1].outpaced()) << merged.outcomes[1].stopped;
 }
 
 // The x of each point a front's data file holds (its blocks: the profile's line, the tries that met,

@@ -82,6 +82,9 @@ TEST(MatchWork, SideBySideSearchesTryWhatOneAtATimeTries) {
   const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
   cli::MatchOptions o = small_search(scene);
   o.knobs = false;
+  // The race (MatchOptions::within) is left out: which tries an outpaced engine runs before it
+  // stops depends on when the cheaper one met; what is found does not (below).
+  o.within = 0;
   const std::vector<const EngineEntry*> engines{&find_engine("home"), &find_engine("home-seed"), &find_engine("box2d")};
   o.jobs = 1;
   const MatchResult one = cli::run_match(scene, engines, o, {});
@@ -269,6 +272,43 @@ TEST(MatchWork, TheCeilingStopsTriesPastAMultipleOfOurCost) {
   EXPECT_THROW(cli::run_match(scene, {&find_engine("box2d")}, o, {}), InputError);
 }
 
+// The race: searched after our default profile met, another of our profiles that costs more than
+// `within` times it stops there (its tries over cost, the row outpaced), and what is found for the
+// cheapest is what a search without the bound finds.
+TEST(MatchWork, AnEngineOutpacedInTheRaceStopsThereAndTheCheapestIsFoundAsWithoutIt) {
+  const Scene scene = parse_scene(kSmallPile, "small-pile.toml");
+  cli::MatchOptions o = small_search(scene);
+  o.isolation.enabled = false;  // one search at a time, in plan order: the default profile first
+  o.knobs = false;
+  o.profile = "default,events";
+  const std::vector<const EngineEntry*> engines{&find_engine("home")};
+  o.within = 0;
+  const MatchResult free = cli::run_match(scene, engines, o, {});
+  ASSERT_EQ(free.outcomes.size(), 2u);
+  ASSERT_TRUE(free.outcomes[0].ranked());
+  ASSERT_TRUE(free.outcomes[1].ranked());
+  // The event-driven path steps every contact: on a pile, far costlier than the default's.
+  ASSERT_GT(free.tries[free.outcomes[1].found].cost_ns, 3 * free.tries[free.outcomes[0].found].cost_ns);
+  o.within = 1;
+  const MatchResult raced = cli::run_match(scene, engines, o, {});
+  EXPECT_EQ(raced.within, 1);
+  ASSERT_TRUE(raced.outcomes[0].ranked());
+  EXPECT_EQ(configuration_text(raced.tries[raced.outcomes[0].found]),
+            configuration_text(free.tries[free.outcomes[0].found]));
+  const MatchOutcome& events = raced.outcomes[1];
+  EXPECT_EQ(events.stop, SearchStop::outpaced);
+  EXPECT_FALSE(events.reached);
+  EXPECT_NE(events.stopped.find("1x the cheapest ours engine's cost"), std::string::npos) << events.stopped;
+  bool stopped = false;
+  for (const MatchTry& t : raced.tries)
+    if (t.profile == "events" && t.status == RunStatus::over_cost) {
+      stopped = true;
+      EXPECT_NE(t.why_not.find("times the cheapest ours configuration met so far"), std::string::npos) << t.why_not;
+      EXPECT_EQ(t.work, 0);
+    }
+  EXPECT_TRUE(stopped);
+}
+
 // The command's ceiling: 100 by default where our solver's default profile is searched, none where
 // it is not (nothing to be a multiple of), `none` asked for by name, and 0 refused.
 TEST(MatchWork, TheCommandHasACeilingByDefaultWhereOurSolverIsSearched) {
@@ -296,6 +336,22 @@ TEST(MatchWork, TheCommandHasACeilingByDefaultWhereOurSolverIsSearched) {
   const auto zero = testing::run_cli("match --quiet --scene " + scene + " --engine home --ceiling 0");
   EXPECT_EQ(zero.status, 2);
   EXPECT_NE(zero.err.find("--ceiling: must be > 0, got '0'"), std::string::npos) << zero.err;
+  // The race's multiple: recorded, `none` for none, and below 1 (the cheapest outpaced by itself) refused.
+  const auto within = [&](const std::string& args) -> std::optional<double> {
+    const std::string json = (dir / "w.json").string();
+    std::filesystem::remove(json);
+    const auto r = testing::run_cli("match --quiet --scene " + scene + " --engine home --profile default " +
+                                    "--max-halvings 0 --no-knobs --repeats 0 --store '' --json " + json + " " + args);
+    if (r.status != 0) return std::nullopt;
+    std::ifstream in(json);
+    return nlohmann::json::parse(in).at("within").get<double>();
+  };
+  EXPECT_EQ(within(""), cli::MatchOptions::kDefaultWithin);
+  EXPECT_EQ(within("--within none"), 0);
+  EXPECT_EQ(within("--within 3"), 3);
+  const auto half = testing::run_cli("match --quiet --scene " + scene + " --engine home --within 0.5");
+  EXPECT_EQ(half.status, 2);
+  EXPECT_NE(half.err.find("--within: must be at least 1, got '0.5'"), std::string::npos) << half.err;
 }
 
 // The results store: a search run again reads every try and timing it kept and finds the same; a

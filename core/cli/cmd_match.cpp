@@ -106,6 +106,13 @@ void add_match(CLI::App& app) {
                               "search to its end)",
                               kClearlyCostlier, MatchOptions::kDefaultCeiling))
       ->transform(kPositiveNumberOrNone);
+  cmd->add_option("--within", a->options.within,
+                  fmt::format("a multiple of the cheapest configuration that met so far for an engine of the same "
+                              "role (ours, external): a try stops once its CPU time passes {:g} times it, and an engine "
+                              "whose cost timed alone is past it is reported as outpaced instead of searched to its "
+                              "finest step (default {:g}; none: no such bound)",
+                              kClearlyCostlier, MatchOptions::kDefaultWithin))
+      ->transform(kMultipleOrNone);
   cmd->add_option("--repeats", a->options.repeats,
                   "timing runs alone of each found configuration, over a tenth of its run (or the first part of it "
                   "that held 0.2 s of its time) from the state it saved at its middle, or over its whole run where "

@@ -116,6 +116,35 @@ Result run_at(const Scene& scene, const EngineEntry& e, int k, const Isolation& 
 
 // One configuration's steps: the range the search may try (dt / 2^first .. dt / 2^last) and the
 // tries it made.
+// The cheapest configuration met so far by an engine of each role (its CPU time while searching),
+// shared by the searches running side by side: each try stops past MatchOptions::within times its
+// role's.
+class Race {
+ public:
+  void met(const std::string& role, double ns) {
+    std::lock_guard lock(mutex_);
+    const auto [it, fresh] = cheapest_.emplace(role, ns);
+    if (!fresh) it->second = std::min(it->second, ns);
+  }
+  std::optional<double> cheapest(const std::string& role) const {
+    std::lock_guard lock(mutex_);
+    const auto it = cheapest_.find(role);
+    return it == cheapest_.end() ? std::nullopt : std::optional(it->second);
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, double> cheapest_;
+};
+
+// What a try's cost limit is: the cheapest configuration of its own search that met (a knob's), the
+// match's ceiling, or its role's cheapest in the race.
+enum class Bound { knob, ceiling, race };
+struct CostBound {
+  double ns = 0;  // per ball per scene step
+  Bound by = Bound::knob;
+};
+
 struct Ladder {
   int first = 0, last = 0;
   std::map<int, int> tried;  // halvings -> try index
@@ -124,8 +153,8 @@ struct Ladder {
 class Search {
  public:
   Search(const Scene& scene, const EngineEntry& e, std::string profile, std::vector<Config> configs,
-         const MatchOptions& o)
-      : scene_(scene), e_(e), profile_(std::move(profile)), configs_(std::move(configs)), o_(o) {}
+         const MatchOptions& o, Race& race)
+      : scene_(scene), e_(e), profile_(std::move(profile)), configs_(std::move(configs)), o_(o), race_(race) {}
 
   // First the profile as it is, coarse to fine until it meets the spec; then each knob setting from
   // two halvings coarser than that, or than the coarsest step a knob met at where the profile never
@@ -152,6 +181,8 @@ class Search {
     } else if (oc.stop == SearchStop::none && hit_ceiling_) {
       oc.stop = SearchStop::ceiling;
       oc.stopped = ceiling_text(o_.ceiling, *ceiling_ns_);
+    } else if (oc.stop == SearchStop::none && hit_race_) {
+      oc.stop = SearchStop::outpaced;  // its text from the race's final figure (mark_outpaced)
     } else if (oc.stop == SearchStop::none) {
       oc.stop = SearchStop::finest_step, oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
@@ -200,12 +231,13 @@ class Search {
     while (k >= l.first && k <= l.last && oc.stop == SearchStop::none) {
       // A step its coarser try's cost already puts well past where it would stop (the ceiling's, or
       // clearly costlier than a configuration that met), is not run.
-      if (const auto projected = projected_cost_ns(l, k); projected && limit_ns(configs_[c]) &&
-                                                          *projected > kCeilingProjectionMargin * *limit_ns(configs_[c])) {
+      const auto bound = limit(configs_[c]);
+      if (const auto projected = projected_cost_ns(l, k);
+          projected && bound && *projected > kCeilingProjectionMargin * bound->ns) {
         l.tried[k] = int(tries.size());
-        tries.push_back(projected_over_limit(configs_[c], k, *projected));
+        tries.push_back(projected_over_limit(configs_[c], k, *projected, *bound));
         ++oc.tries;
-        if (ceiling_binds(configs_[c])) hit_ceiling_ = true;
+        note_stop(*bound);
         break;
       }
       if (const double need = double(1L << k); used_ + need > o_.budget_runs) {
@@ -214,14 +246,14 @@ class Search {
                                  o_.budget_runs * double(scene_.n()) * double(scene_.steps()));
         break;
       }
-      const int t = try_config(configs_[c], l, k);
+      const int t = try_config(configs_[c], l, k, bound);
       l.tried[k] = t;
       const MatchTry& tr = tries[t];
       ++oc.tries;
       oc.stored += tr.stored;
       oc.finest_dt = oc.finest_dt > 0 ? std::min(oc.finest_dt, tr.dt) : tr.dt;
       if (interrupt_signal()) oc.stop = SearchStop::interrupt, oc.stopped = "an interrupt";
-      if (tr.status == RunStatus::over_cost && ceiling_binds(configs_[c])) hit_ceiling_ = true;
+      if (tr.status == RunStatus::over_cost && bound) note_stop(*bound);
       // A knob whose run is the profile's own, bit for bit, changes nothing here (a stiffness on
       // a path that has none): it is never a finding, at any step.
       // (Whole runs only: two runs stopped where they missed are equal only up to that step.)
@@ -231,6 +263,7 @@ class Search {
                                                        as_is->second == last_trajectory_)
         return -1;
       if (tr.met) {
+        race_.met(role_name(e_.info.role), tr.cost_ns);
         met = t;
         if (k - 1 >= l.first && !l.tried.count(k - 1)) {  // a jump passed over it: confirm coarser
           --k;
@@ -268,7 +301,7 @@ class Search {
   }
 
   // A try not run: its projected cost is past its limit.
-  MatchTry projected_over_limit(const Config& c, int k, double projected_ns) const {
+  MatchTry projected_over_limit(const Config& c, int k, double projected_ns, const CostBound& bound) const {
     MatchTry t;
     t.engine = e_.info.name, t.profile = profile_, t.knob = c.knob, t.value = c.value;
     t.halvings = k, t.dt = scene_.dt / double(1 << k);
@@ -276,7 +309,7 @@ class Search {
     t.why_not = t.error =
         fmt::format("over cost: not run, its coarser try projects {} ns, past {:g}x where its run would stop ({} ns, "
                     "{})",
-                    cost_text(projected_ns), kCeilingProjectionMargin, cost_text(*limit_ns(c)), limit_what(c));
+                    cost_text(projected_ns), kCeilingProjectionMargin, cost_text(bound.ns), bound_text(bound));
     return t;
   }
 
@@ -305,7 +338,7 @@ class Search {
     return nearest_pace(l.tried, as_is_.tried, paces_, k, pace_ ? &*pace_ : nullptr);
   }
 
-  RunOptions options(const Config& c, const Ladder& l, int k, int index) const {
+  RunOptions options(const Config& c, const Ladder& l, int k, int index, const std::optional<CostBound>& bound) const {
     RunOptions r;
     r.profile = profile_;
     r.overrides = c.overrides;
@@ -318,7 +351,7 @@ class Search {
     const bool pace_run = c.knob.empty() && k == 0;
     r.stop_on_miss = pace_run ? nullptr : &o_.spec;
     r.record_pace = true;  // every try's, for the tries after it (pace_for)
-    r.cost_limit = cost_limit(c, pace_run ? nullptr : pace_for(l, k));
+    r.cost_limit = cost_limit(bound, pace_run ? nullptr : pace_for(l, k));
     if (o_.spec.needs_reference()) r.reference = o_.reference, r.converged_reference = o_.converged_reference;
     // The window a found configuration is timed over: from the middle of its run, at a scene step.
     const long steps = scene_.steps() << k;
@@ -332,34 +365,42 @@ class Search {
   // A knob's run stops once it costs as much as the cheapest configuration that met so far: a knob,
   // later in search order, is found over it only below kKnobCostMargin of its cost, and CPU time's
   // noise between two tries stays short of the 18% between. Any run stops at kClearlyCostlier times
-  // the search's ceiling. Both are costs per ball per scene step, over the whole run here.
-  std::optional<double> knob_limit_ns(const Config& c) const {
-    const int cheapest = cheapest_met();
-    if (c.knob.empty() || cheapest < 0) return std::nullopt;
-    return tries[cheapest].cost_ns;
+  // the search's ceiling, and at kClearlyCostlier times `within` times the cheapest configuration
+  // that met for an engine of its role so far. All are costs per ball per scene step, over the whole
+  // run here; the lowest binds (a knob's, where two are equal).
+  std::optional<CostBound> limit(const Config& c) const {
+    std::optional<CostBound> b;
+    const auto take = [&](std::optional<double> ns, Bound by) {
+      if (ns && (!b || *ns < b->ns)) b = CostBound{*ns, by};
+    };
+    if (const int cheapest = cheapest_met(); !c.knob.empty() && cheapest >= 0)
+      take(tries[cheapest].cost_ns, Bound::knob);
+    if (ceiling_ns_) take(kClearlyCostlier * *ceiling_ns_, Bound::ceiling);
+    if (const auto rival = race_.cheapest(role_name(e_.info.role)); rival && o_.within > 0)
+      take(kClearlyCostlier * o_.within * *rival, Bound::race);
+    return b;
   }
-  std::optional<double> ceiling_limit_ns() const {
-    return ceiling_ns_ ? std::optional(kClearlyCostlier * *ceiling_ns_) : std::nullopt;
+  std::string bound_text(const CostBound& b) const {
+    switch (b.by) {
+      case Bound::knob: return "the cost of the cheapest configuration that met";
+      case Bound::ceiling:
+        return fmt::format("{:g}x the match's ceiling of {:g}x our solver's cost", kClearlyCostlier, o_.ceiling);
+      case Bound::race:
+        return fmt::format("{:g}x {:g} times the cheapest {} configuration met so far", kClearlyCostlier, o_.within,
+                           role_name(e_.info.role));
+    }
+    return "";
   }
-  bool ceiling_binds(const Config& c) const {
-    const auto knob = knob_limit_ns(c);
-    return ceiling_ns_ && (!knob || *ceiling_limit_ns() < *knob);
+  // A try stopped at the ceiling or in the race: the search's outcome says which, where it met nothing.
+  void note_stop(const CostBound& b) {
+    if (b.by == Bound::ceiling) hit_ceiling_ = true;
+    if (b.by == Bound::race) hit_race_ = true;
   }
-  // The cost a run of configuration c stops at (ns per ball per scene step), if any, and what it is.
-  std::optional<double> limit_ns(const Config& c) const {
-    return ceiling_binds(c) ? ceiling_limit_ns() : knob_limit_ns(c);
-  }
-  std::string limit_what(const Config& c) const {
-    return ceiling_binds(c) ? fmt::format("{:g}x the match's ceiling of {:g}x our solver's cost", kClearlyCostlier,
-                                          o_.ceiling)
-                            : "the cost of the cheapest configuration that met";
-  }
-  std::optional<RunOptions::CostLimit> cost_limit(const Config& c, const CostPace* pace) const {
-    const auto ns = limit_ns(c);
-    if (!ns) return std::nullopt;
-    RunOptions::CostLimit l{*ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
-                            limit_what(c), pace ? std::optional(*pace) : std::nullopt};
-    if (ceiling_binds(c)) l.linear_margin = kPaceRunLinearMargin;
+  std::optional<RunOptions::CostLimit> cost_limit(const std::optional<CostBound>& b, const CostPace* pace) const {
+    if (!b) return std::nullopt;
+    RunOptions::CostLimit l{b->ns * 1e-9 * double(std::max(1, scene_.n())) * double(std::max(1L, scene_.steps())),
+                            bound_text(*b), pace ? std::optional(*pace) : std::nullopt};
+    if (b->by != Bound::knob) l.linear_margin = kPaceRunLinearMargin;
     return l;
   }
   // The candidate cheapest while searching (its CPU time beside the other searches), or -1.
@@ -381,9 +422,9 @@ class Search {
 
   // A try of configuration c at dt / 2^k: read from the store where an earlier search measured it
   // (an over-cost stop only under a limit no higher than the one it stopped at), else run.
-  int try_config(const Config& c, const Ladder& l, int k) {
+  int try_config(const Config& c, const Ladder& l, int k, const std::optional<CostBound>& bound) {
     const int index = int(tries.size());
-    const RunOptions r = options(c, l, k, index);
+    const RunOptions r = options(c, l, k, index, bound);
     const nlohmann::json key = store_key(c, k);
     const auto kept = o_.store ? o_.store->find(key) : std::nullopt;
     const bool reusable =
@@ -481,12 +522,14 @@ class Search {
   std::string profile_;
   std::vector<Config> configs_;
   const MatchOptions& o_;
+  Race& race_;
   double used_ = 0;                              // work so far, in runs of the scene at dt
   std::optional<double> ceiling_ns_;             // MatchOptions::ceiling times our solver's cost
   std::optional<CostPace> pace_;                 // the engine's pace on the scene (cost_pace.h)
   std::map<int, CostPace> paces_;                // each try's, by try index
   Ladder as_is_;                                 // the profile as it is: its tries
   bool hit_ceiling_ = false;                     // a try stopped at the ceiling
+  bool hit_race_ = false;                        // a try stopped past its role's cheapest (MatchOptions::within)
   std::string last_trajectory_;                  // the last try's trajectory checksum
   std::map<int, std::string> as_is_trajectory_;  // the profile as it is: halvings -> its checksum
 };
@@ -662,12 +705,14 @@ MatchResult match_header(const Scene& scene, const MatchOptions& o, const nlohma
   m.scene_digest = o.scene_digest;
   m.n = scene.n(), m.dt = scene.dt, m.spec = o.spec, m.context = context;
   m.budget_runs = o.budget_runs, m.run_ball_steps = long(scene.n()) * scene.steps();
+  m.within = o.within;
   m.shard_index = o.shard.index, m.shard_count = o.shard.count;
   return m;
 }
 
 // The searches of one match, with what became of each.
 struct SearchPlan {
+  std::unique_ptr<Race> race = std::make_unique<Race>();  // shared by the searches (they hold it)
   std::vector<std::unique_ptr<Search>> searches;
   std::vector<bool> taken;  // this shard's own (the others only search to set the ceiling)
   std::vector<bool> first;  // sets the ceiling: searched before the rest
@@ -688,7 +733,8 @@ SearchPlan plan_searches(const Scene& scene, const std::vector<const EngineEntry
       const bool takes = o.shard.takes(item++);
       const bool sets_ceiling = o.ceiling > 0 && e->info.role == EngineRole::ours && profile == e->info.profiles.front();
       if (!takes && !sets_ceiling) continue;
-      plan.searches.push_back(std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o));
+      plan.searches.push_back(
+          std::make_unique<Search>(scene, *e, profile, configs_for(scene, *e, profile, o.knobs), o, *plan.race));
       plan.taken.push_back(takes), plan.first.push_back(sets_ceiling);
     }
   if (o.ceiling > 0 && std::find(plan.first.begin(), plan.first.end(), true) == plan.first.end())
@@ -704,7 +750,8 @@ void run_phase(SearchPlan& plan, bool setting_ceiling, const MatchOptions& o, Pr
   for (size_t i = 0; i < plan.searches.size(); ++i)
     if (plan.first[i] == setting_ceiling) items.push_back(i);
   // The costliest first, so that the last to finish is a short one and no core waits at the end
-  // (longest processing time first). What a search finds never depends on when it ran.
+  // (longest processing time first). What a search finds never depends on when it ran; which tries
+  // an outpaced engine runs does (Race), what is found for it does not (mark_outpaced).
   std::stable_sort(items.begin(), items.end(), [&](size_t a, size_t b) {
     return plan.searches[a]->expected_work() > plan.searches[b]->expected_work();
   });
@@ -806,6 +853,7 @@ void gather(SearchPlan& plan, const Scene& scene, const MatchOptions& o, MatchRe
     m.tries.insert(m.tries.end(), s.tries.begin(), s.tries.end());
     m.outcomes.push_back(std::move(oc));
   }
+  mark_outpaced(m);
 }
 
 }  // namespace
@@ -854,6 +902,7 @@ void print_match_rows(const MatchResult& m) {
     fmt::print("{:<18} {:<12} {:<28} {:>14} {:>10}", label,
                oc.cut_short()                    ? "cut short"
                : oc.stop == SearchStop::ceiling ? "over ceiling"
+               : oc.stop == SearchStop::outpaced ? "outpaced"
                : oc.reached                     ? "met"
                                                 : "not reached",
                (oc.reached ? "" : "best: ") + configuration_text(t), oc.reached ? cost_spread_text(oc) : "-",
@@ -869,6 +918,9 @@ void print_match_rows(const MatchResult& m) {
     if (oc.over_ceiling())
       fmt::print("{}: over the ceiling: it met the spec, but its cost timed alone is past {}; not ranked\n",
                  run_label(oc.engine, oc.profile), oc.stopped);
+    if (oc.stop == SearchStop::outpaced)
+      fmt::print("{}: outpaced: {} past {}; not ranked\n", run_label(oc.engine, oc.profile),
+                 oc.reached ? "it met the spec, but its cost timed alone is" : "its tries stopped", oc.stopped);
     if (!oc.also_met.empty()) {
       std::vector<std::string> others;
       for (const MatchAlternative& a : oc.also_met)
@@ -894,6 +946,8 @@ void print_our_ratios(const MatchResult& m, std::optional<double> target) {
     const std::string label = run_label(oc.engine, oc.profile);
     if (oc.cut_short())
       fmt::print("{}: not compared: its search was cut short{}\n", label, against_target(std::nullopt));
+    else if (oc.outpaced())
+      fmt::print("{}: not compared: outpaced by another of ours{}\n", label, against_target(std::nullopt));
     else if (!oc.reached)
       fmt::print("{}: did not meet the spec{}{}\n", label,
                  oc.stopped.empty() ? "" : fmt::format(" (its search stopped at {})", oc.stopped),

@@ -14,7 +14,8 @@
 // timed alone, their repeats interleaved, over a window of its own run started from the state it
 // saved there, and the first in search order within the timing's noise of the cheapest is the one
 // found; a knob's run stops once it costs as much as the cheapest that met (it could be found only
-// below kKnobCostMargin of it). Under a ceiling (a multiple of our solver's cost) a try stops once it
+// below kKnobCostMargin of it), and any try once it costs clearly more than `within` times the
+// cheapest that any engine of its role met so far (MatchOptions::within). Under a ceiling (a multiple of our solver's cost) a try stops once it
 // costs kClearlyCostlier times more, and a configuration met past the ceiling is reported over it,
 // as one stopped there is: the question a
 // comparison asks is which engine is cheapest, and an engine at 100x the cheapest need not be
@@ -110,6 +111,17 @@ struct MatchOptions {
   // for minutes (bullet tuned at dt/64 on a settled pile of 3000: over 8 min), and a search of
   // every engine for hours.
   static constexpr double kDefaultCeiling = 60;
+  // This many times the cheapest configuration that met so far for an engine of the same role (ours,
+  // external; CPU time while searching), shared by the searches side by side (0: none): every try
+  // stops once its CPU time passes kClearlyCostlier times it, and a configuration met past this many
+  // times its role's cheapest, timed alone, is reported outpaced, not ranked (mark_outpaced). The
+  // question a comparison asks is which engine is cheapest: an engine at several times the cheapest
+  // external one's cost need not be searched to its finest step to say that it is not. At 2, the
+  // tries of the engine that is cheapest alone stop only where its ratio of CPU time while searching
+  // to its cost alone reads kClearlyCostlier x 2 = 3 times another's (it ranged 0.8 - 1.7 over the
+  // engines on a pile, the 10^4 gas and a settled 10^4 pile).
+  double within = kDefaultWithin;
+  static constexpr double kDefaultWithin = 2;
   int repeats = 3;              // timing runs alone of each found configuration's window
   int jobs = 1;                 // searches at once (tries in child processes; needs isolation)
   const TryStore* store = nullptr;  // tries and timings measured before (null: none)
