@@ -94,10 +94,10 @@ void put_match_method(std::string& md, const MatchResult& m, bool measured) {
                       "{:g}x the ceiling, and a configuration met past the ceiling is over it.",
                       m.ceiling, cost_text(m.ceiling_ns), kClearlyCostlier);
   if (m.within > 0)
-    md += fmt::format(" An engine is searched while it can be within {:g}x the cheapest of its kind: a try stopped "
-                      "once its CPU time passed {:g}x that many times the cheapest configuration met so far, and one "
-                      "met past it, timed alone, is outpaced.",
-                      m.within, kClearlyCostlier);
+    md += fmt::format(" An engine is searched while it can be within {:g}x the cheapest of its kind (ours, external): "
+                      "a try stopped once its CPU time passed {:g}x the cheapest configuration met so far, and one met "
+                      "past {:g}x, timed alone, is outpaced.",
+                      m.within, kClearlyCostlier * m.within, m.within);
   md += fmt::format(" Measured {} by build {}{}.\n\n", json_string_field(m.context, "date", "(not recorded)"),
                     json_string_field(m.context, "build", "(not recorded)"),
                     measured ? ": a search measured on its own (`ballbench match`) and carried into this report as it was"

@@ -52,7 +52,9 @@ std::pair<std::string, std::string> pick_cells(const ReportInputs& in, const Mat
   if (const MatchOutcome* oc = cheapest_reached(m, role_name(role))) {
     std::string words = configuration_words(in, m, *oc);
     const char* joint = "; [tied](pages/terms.md#cost-step-and-search) with ";
+    std::set<std::string> named{oc->engine};  // an engine once, whichever of its profiles tie
     for (const MatchOutcome* tie : tied_with(m, *oc)) {
+      if (!named.insert(tie->engine).second) continue;
       words += joint + engine_words(*tie);
       joint = " and ";
     }
@@ -123,9 +125,12 @@ std::string measured_text(const ReportInputs& in) {
                                  m.ceiling_ns > 0 ? fmt::format(", ceiling {:g}x our cost", m.ceiling) : ""));
   if (each.empty()) return "";
   const bool one = each.size() == 1;
-  return fmt::format("{} {} {} too costly for this suite, measured on {} own (`ballbench match`) and carried into "
+  const std::string last = each.back();
+  each.pop_back();
+  const std::string listed = each.empty() ? last : fmt::format("{} and {}", fmt::join(each, ", "), last);
+  return fmt::format("{}, {}, {} too costly for this suite, measured on {} own (`ballbench match`) and carried into "
                      "this report as {}. ",
-                     one ? "The row of" : "The rows of", fmt::join(each, " and "), one ? "is a search" : "are searches",
+                     one ? "The carried row" : "The carried rows", listed, one ? "is a search" : "are searches",
                      one ? "its" : "their", one ? "it was" : "they were");
 }
 
@@ -151,7 +156,7 @@ std::string summary_section(const ReportInputs& in, const std::vector<Figure>& f
     const auto [ours, our_cost] = pick_cells(in, m, EngineRole::ours);
     md += fmt::format("| [{}](#{}), {}{} | {} | {} | {} | {} | {} | {} |\n",
                       m.use_case.empty() ? m.scene : m.use_case, accuracy_anchor(m.scene), balls_text(m.n),
-                      in.measured.contains(m.scene) ? " (measured on its own, below)" : "",
+                      in.measured.contains(m.scene) ? ", carried (below)" : "",
                       spec_words(m.spec), markdown_cell(ext), ext_cost, markdown_cell(ours), our_cost, ratio_cell(m));
   }
   // At scale: a search at 10^4 balls takes an hour, the full suite's or measured on its own; the step

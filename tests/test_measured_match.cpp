@@ -110,12 +110,11 @@ TEST_F(MeasuredMatch, IsShownWithItsOwnDateAndBuildApartFromTheReports) {
   ASSERT_EQ(in.matches.size(), 2u);
   EXPECT_TRUE(in.measured.contains("pile-10k-settled"));
   const std::string md = summary_section(in, {});
-  EXPECT_NE(md.find("| [a pile of 10^4 balls at rest](#equal-accuracy-pile-10k-settled), 10000 balls (measured on its "
-                    "own, below) |"),
+  EXPECT_NE(md.find("| [a pile of 10^4 balls at rest](#equal-accuracy-pile-10k-settled), 10000 balls, carried (below) |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("The row of `pile-10k-settled` (measured 2026-12-07 by build earlier, each search's budget 2000 "
-                    "runs of the scene at dt, ceiling 60x our cost) is a search too costly for this suite"),
+  EXPECT_NE(md.find("The carried row, `pile-10k-settled` (measured 2026-12-07 by build earlier, each search's budget 2000 "
+                    "runs of the scene at dt, ceiling 60x our cost), is a search too costly for this suite"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("by build this."), std::string::npos) << md;  // the report's own, alone

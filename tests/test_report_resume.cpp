@@ -370,7 +370,7 @@ measured_matches = ["measured/match-rough-box.json"]
   ASSERT_EQ(report(args), 0) << err_;
   EXPECT_EQ(slurp(out() / "results" / "measured-rough-box.json"), slurp(measured));
   EXPECT_EQ(broken_links(out()), std::vector<std::string>{});
-  EXPECT_NE(slurp(out() / "REPORT.md").find("(scenes/rough-box.md#equal-accuracy-rough-box), 3 balls (measured on its own, below)"),
+  EXPECT_NE(slurp(out() / "REPORT.md").find("(scenes/rough-box.md#equal-accuracy-rough-box), 3 balls, carried (below)"),
             std::string::npos)
       << slurp(out() / "REPORT.md");
   EXPECT_NE(slurp(out() / "scenes" / "rough-box.md").find("carried into this report as it was"), std::string::npos);

@@ -114,8 +114,6 @@ Result run_at(const Scene& scene, const EngineEntry& e, int k, const Isolation& 
   return isolation.enabled ? run_engine_isolated(s, e, r, {timeout_s, ""}) : run_engine(s, e, r);
 }
 
-// One configuration's steps: the range the search may try (dt / 2^first .. dt / 2^last) and the
-// tries it made.
 // The cheapest configuration met so far by an engine of each role (its CPU time while searching),
 // shared by the searches running side by side: each try stops past MatchOptions::within times its
 // role's.
@@ -145,6 +143,8 @@ struct CostBound {
   Bound by = Bound::knob;
 };
 
+// One configuration's steps: the range the search may try (dt / 2^first .. dt / 2^last) and the
+// tries it made.
 struct Ladder {
   int first = 0, last = 0;
   std::map<int, int> tried;  // halvings -> try index
@@ -182,7 +182,8 @@ class Search {
       oc.stop = SearchStop::ceiling;
       oc.stopped = ceiling_text(o_.ceiling, *ceiling_ns_);
     } else if (oc.stop == SearchStop::none && hit_race_) {
-      oc.stop = SearchStop::outpaced;  // its text from the race's final figure (mark_outpaced)
+      oc.stop = SearchStop::outpaced;  // mark_outpaced gives it the race's final figure
+      oc.stopped = fmt::format("{:g}x the cheapest {} engine's cost", o_.within, role_name(e_.info.role));
     } else if (oc.stop == SearchStop::none) {
       oc.stop = SearchStop::finest_step, oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
@@ -229,8 +230,8 @@ class Search {
   int climb(size_t c, Ladder& l, MatchOutcome& oc) {
     int k = l.first, met = -1;
     while (k >= l.first && k <= l.last && oc.stop == SearchStop::none) {
-      // A step its coarser try's cost already puts well past where it would stop (the ceiling's, or
-      // clearly costlier than a configuration that met), is not run.
+      // A step its coarser try's cost already puts well past where it would stop (the ceiling's, the
+      // race's, or clearly costlier than a configuration that met), is not run.
       const auto bound = limit(configs_[c]);
       if (const auto projected = projected_cost_ns(l, k);
           projected && bound && *projected > kCeilingProjectionMargin * bound->ns) {
@@ -386,8 +387,8 @@ class Search {
       case Bound::ceiling:
         return fmt::format("{:g}x the match's ceiling of {:g}x our solver's cost", kClearlyCostlier, o_.ceiling);
       case Bound::race:
-        return fmt::format("{:g}x {:g} times the cheapest {} configuration met so far", kClearlyCostlier, o_.within,
-                           role_name(e_.info.role));
+        return fmt::format("{:g}x the cheapest {} configuration met so far ({:g} x --within {:g})",
+                           kClearlyCostlier * o_.within, role_name(e_.info.role), kClearlyCostlier, o_.within);
     }
     return "";
   }
