@@ -15,9 +15,9 @@
 // saved there, and the first in search order within the timing's noise of the cheapest is the one
 // found; a knob's run stops once it costs as much as the cheapest that met (it could be found only
 // below kKnobCostMargin of it), and any try once it costs clearly more than `within` times the
-// cheapest that any engine of its role met so far (MatchOptions::within). Under a ceiling (a multiple of our solver's cost) a try stops once it
-// costs kClearlyCostlier times more, and a configuration met past the ceiling is reported over it,
-// as one stopped there is: the question a
+// cheapest that any engine of its role met so far (MatchOptions::within). Under a ceiling (a
+// multiple of our solver's cost) a try stops once it costs kClearlyCostlier times more, and a
+// configuration met past the ceiling is reported over it, as one stopped there is: the question a
 // comparison asks is which engine is cheapest, and an engine at 100x the cheapest need not be
 // searched to its end. A try past a limit is known long before its time reaches it: the search's
 // first try (the profile as it is at the scene's own step) runs to its end, whatever it misses, and
