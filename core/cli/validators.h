@@ -24,20 +24,6 @@ inline const CLI::Validator kPositiveNumber(
     },
     "POSITIVE", "positive number");
 
-// A finite number >= 1, or "none", which it turns into 0 (no limit): a multiple of a cost that must
-// not fall below the cost itself.
-inline const CLI::Validator kMultipleOrNone(
-    [](std::string& text) -> std::string {
-      if (text == "none") {
-        text = "0";
-        return {};
-      }
-      if (std::string bad = kPositiveNumber(text); !bad.empty()) return bad;
-      if (std::strtod(text.c_str(), nullptr) < 1) return "must be at least 1, got '" + text + "'";
-      return {};
-    },
-    "MULTIPLE|none", "number at least 1, or none");
-
 // A finite number > 0, or "none", which it turns into 0 (no limit).
 inline const CLI::Validator kPositiveNumberOrNone(
     [](std::string& text) -> std::string {
@@ -48,6 +34,16 @@ inline const CLI::Validator kPositiveNumberOrNone(
       return kPositiveNumber(text);
     },
     "POSITIVE|none", "positive number or none");
+
+// A finite number >= 1, or "none", which it turns into 0 (no limit): a multiple of a cost that must
+// not fall below the cost itself.
+inline const CLI::Validator kMultipleOrNone(
+    [](std::string& text) -> std::string {
+      if (std::string bad = kPositiveNumberOrNone(text); !bad.empty()) return bad;
+      if (text != "0" && std::strtod(text.c_str(), nullptr) < 1) return "must be at least 1, got '" + text + "'";
+      return {};
+    },
+    "MULTIPLE|none", "number at least 1, or none");
 
 // A whole number from `least` to `most` (CLI11's Range says "not in range" of 1.5 or 0x10).
 inline CLI::Validator whole_in_range(long long least, long long most) {
