@@ -303,7 +303,8 @@ TEST(MatchWork, AnEngineOutpacedInTheRaceStopsThereAndTheCheapestIsFoundAsWithou
   for (const MatchTry& t : raced.tries)
     if (t.profile == "events" && t.status == RunStatus::over_cost) {
       stopped = true;
-      EXPECT_NE(t.why_not.find("1.5x the cheapest ours configuration met so far (1.5 x --within 1)"), std::string::npos) << t.why_not;
+      EXPECT_NE(t.why_not.find("1.5x the cheapest ours configuration met so far (1.5 x --within 1)"), std::string::npos)
+          << t.why_not;
       EXPECT_EQ(t.work, 0);
     }
   EXPECT_TRUE(stopped);
