@@ -133,12 +133,16 @@ std::optional<double> outpace_ns(const MatchResult& m, const std::string& role) 
   return cheapest ? std::optional(m.within * *cheapest) : std::nullopt;
 }
 
+std::string outpace_text(double within, const std::string& role, std::optional<double> cheapest_ns) {
+  return fmt::format("{:g}x the cheapest {} engine's cost{}", within, role,
+                     cheapest_ns ? fmt::format(" ({} ns)", cost_text(*cheapest_ns)) : "");
+}
+
 void mark_outpaced(MatchResult& m) {
   for (MatchOutcome& oc : m.outcomes) {
     const auto bound = outpace_ns(m, oc.role);
     if (!bound) continue;
-    const std::string what = fmt::format("{:g}x the cheapest {} engine's cost ({} ns)", m.within, oc.role,
-                                         cost_text(*bound / m.within));
+    const std::string what = outpace_text(m.within, oc.role, *bound / m.within);
     if (oc.ranked() && oc.cost_ns > *bound)
       oc.stop = SearchStop::outpaced, oc.stopped = fmt::format("{}, met at {} ns", what, cost_text(oc.cost_ns));
     else if (!oc.reached && oc.stop == SearchStop::outpaced)

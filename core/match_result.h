@@ -184,6 +184,10 @@ const MatchOutcome* nearest_unreached(const MatchResult& m, const std::string& r
 // or not: each met at its cost), or none (no such bound, or none met).
 std::optional<double> outpace_ns(const MatchResult& m, const std::string& role);
 
+// "2x the cheapest external engine's cost (10439 ns)": what an outpaced search is past, the
+// cheapest's cost timed alone where it is known.
+std::string outpace_text(double within, const std::string& role, std::optional<double> cheapest_ns);
+
 // Each outcome that met the spec, under the ceiling and past its role's outpace_ns, marked
 // outpaced; each search stopped there given the bound's final figure. Run on a whole match (and on
 // merged shards): which engines are outpaced depends on the costs found, not on the order in

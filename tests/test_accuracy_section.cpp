@@ -186,11 +186,12 @@ TEST(AccuracySection, AnEnginePastAMultipleOfItsRolesCheapestIsOutpacedNotRanked
   EXPECT_EQ(cheapest_reached(m, "external"), &m.outcomes[4]);
   EXPECT_EQ(verdict_of(m, m.outcomes[1]), MatchVerdict::outpaced);
   const std::string md = accuracy_section(ReportInputs{}, m, {});
-  EXPECT_NE(md.find("| chipmunk/stock | yes, past 2x the cheapest external engine (24000 ns): not ranked | dt/64 | "
-                    "45000 |"),
+  EXPECT_NE(md.find("| chipmunk/stock | yes, past 2x the cheapest external engine's cost (12000 ns): not ranked | "
+                    "dt/64 | 45000 |"),
             std::string::npos)
       << md;
-  EXPECT_NE(md.find("| box2d/stock | no: overlap 0.034 at dt/64, past 2x the cheapest external engine (24000 ns) |"),
+  EXPECT_NE(md.find("| box2d/stock | no: overlap 0.034 at dt/64, past 2x the cheapest external engine's cost (12000 "
+                    "ns) |"),
             std::string::npos)
       << md;
   EXPECT_NE(md.find("within 2x the cheapest of its kind (ours, external): a try stopped once its CPU time passed 3x"),

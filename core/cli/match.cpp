@@ -119,12 +119,12 @@ Result run_at(const Scene& scene, const EngineEntry& e, int k, const Isolation& 
 // role's.
 class Race {
  public:
-  void met(const std::string& role, double ns) {
+  void met(EngineRole role, double ns) {
     std::lock_guard lock(mutex_);
     const auto [it, fresh] = cheapest_.emplace(role, ns);
     if (!fresh) it->second = std::min(it->second, ns);
   }
-  std::optional<double> cheapest(const std::string& role) const {
+  std::optional<double> cheapest(EngineRole role) const {
     std::lock_guard lock(mutex_);
     const auto it = cheapest_.find(role);
     return it == cheapest_.end() ? std::nullopt : std::optional(it->second);
@@ -132,7 +132,7 @@ class Race {
 
  private:
   mutable std::mutex mutex_;
-  std::map<std::string, double> cheapest_;
+  std::map<EngineRole, double> cheapest_;
 };
 
 // What a try's cost limit is: the cheapest configuration of its own search that met (a knob's), the
@@ -183,7 +183,7 @@ class Search {
       oc.stopped = ceiling_text(o_.ceiling, *ceiling_ns_);
     } else if (oc.stop == SearchStop::none && hit_race_) {
       oc.stop = SearchStop::outpaced;  // mark_outpaced gives it the race's final figure
-      oc.stopped = fmt::format("{:g}x the cheapest {} engine's cost", o_.within, role_name(e_.info.role));
+      oc.stopped = outpace_text(o_.within, role_name(e_.info.role), std::nullopt);
     } else if (oc.stop == SearchStop::none) {
       oc.stop = SearchStop::finest_step, oc.stopped = fmt::format("dt / 2^{}", o_.max_halvings);
     }
@@ -264,7 +264,7 @@ class Search {
                                                        as_is->second == last_trajectory_)
         return -1;
       if (tr.met) {
-        race_.met(role_name(e_.info.role), tr.cost_ns);
+        race_.met(e_.info.role, tr.cost_ns);
         met = t;
         if (k - 1 >= l.first && !l.tried.count(k - 1)) {  // a jump passed over it: confirm coarser
           --k;
@@ -377,7 +377,7 @@ class Search {
     if (const int cheapest = cheapest_met(); !c.knob.empty() && cheapest >= 0)
       take(tries[cheapest].cost_ns, Bound::knob);
     if (ceiling_ns_) take(kClearlyCostlier * *ceiling_ns_, Bound::ceiling);
-    if (const auto rival = race_.cheapest(role_name(e_.info.role)); rival && o_.within > 0)
+    if (const auto rival = race_.cheapest(e_.info.role); rival && o_.within > 0)
       take(kClearlyCostlier * o_.within * *rival, Bound::race);
     return b;
   }
